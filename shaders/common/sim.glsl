@@ -1,0 +1,73 @@
+// Per-step constants and MAC-grid helpers shared by every simulation kernel.
+// Conventions: docs/design.md §2-3 (face lattices stored u, v, w back to back; clamped
+// trilinear stencil shared by P2G and G2P).
+#include "common/slots.h"
+#include "common/dispatch.glsl"
+
+layout(std140, binding = PF_UBO_SIM) uniform SimUniforms {
+    ivec4 grid;         // nx, ny, nz, cell count
+    ivec4 face_count;   // NU, NV, NW, NU+NV+NW
+    vec4 origin_dx;     // grid minimum corner (xyz), cell size (w)
+    vec4 gravity_dt;    // body acceleration (xyz), substep length (w)
+    vec4 fixed_scale;   // S_m, S_w, 1/S_m, 1/S_w (fixed-point P2G)
+    vec4 solve;         // density, jacobi omega, flip ratio, max speed
+    uvec4 counts;       // particle count, -, -, -
+} sim;
+
+int cell_index(ivec3 c) { return c.x + sim.grid.x * (c.y + sim.grid.y * c.z); }
+
+bool cell_inside(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, sim.grid.xyz)); }
+
+// Sample counts of the lattice of face component `axis`.
+ivec3 face_dims(int axis) {
+    ivec3 d = sim.grid.xyz;
+    d[axis] += 1;
+    return d;
+}
+
+int face_offset(int axis) {
+    return axis == 0 ? 0 : (axis == 1 ? sim.face_count.x : sim.face_count.x + sim.face_count.y);
+}
+
+int face_index(int axis, ivec3 f) {
+    ivec3 d = face_dims(axis);
+    return face_offset(axis) + f.x + d.x * (f.y + d.y * f.z);
+}
+
+// Inverse of face_index over the concatenated lattices.
+void decode_face(int id, out int axis, out ivec3 f) {
+    axis = id < sim.face_count.x ? 0 : (id < sim.face_count.x + sim.face_count.y ? 1 : 2);
+    int local = id - face_offset(axis);
+    ivec3 d = face_dims(axis);
+    f.x = local % d.x;
+    f.y = (local / d.x) % d.y;
+    f.z = local / (d.x * d.y);
+}
+
+// Domain walls are the boundary faces of each lattice (free-slip: normal velocity 0).
+bool face_is_wall(int axis, ivec3 f) { return f[axis] == 0 || f[axis] == sim.grid[axis]; }
+
+vec3 grid_coord(vec3 world) { return (world - sim.origin_dx.xyz) / sim.origin_dx.w; }
+
+// Clamped trilinear stencil of lattice `axis` at grid coordinate g.
+struct Stencil {
+    ivec3 base;
+    vec3 frac;
+};
+
+Stencil face_stencil(int axis, vec3 g) {
+    vec3 offset = vec3(0.5);
+    offset[axis] = 0.0;
+    vec3 n = vec3(face_dims(axis));
+    vec3 s = clamp(g - offset, vec3(0.0), n - 1.0);
+    vec3 b = min(floor(s), n - 2.0);
+    return Stencil(ivec3(b), s - b);
+}
+
+// Weight of stencil node base + d, d in {0,1}^3.
+float stencil_weight(vec3 frac, ivec3 d) {
+    vec3 w = mix(1.0 - frac, frac, vec3(d));
+    return w.x * w.y * w.z;
+}
+
+ivec3 stencil_offset(int n) { return ivec3(n & 1, (n >> 1) & 1, (n >> 2) & 1); }

@@ -1,0 +1,52 @@
+/* Binding slots and constants shared by the C++ host code and the GLSL kernels.
+ * Valid C and GLSL: only #define lines. Every kernel uses at most 8 storage blocks with
+ * indices 0..7 (the GL 4.3 minimum), so kernels that never share a buffer reuse slots:
+ * the particle/face group (0-7) and the pressure/extrapolation group (0, 1, 3 reused). */
+#ifndef PF_SLOTS_H
+#define PF_SLOTS_H
+
+#define PF_WORKGROUP_SIZE 256
+
+/* storage blocks: particle and face kernels */
+#define PF_SLOT_PARTICLE_POS 0
+#define PF_SLOT_PARTICLE_VEL 1
+#define PF_SLOT_FACE_VEL 2
+#define PF_SLOT_FACE_VEL_OLD 3
+#define PF_SLOT_FACE_ACCUM 4
+#define PF_SLOT_CELL_COUNT 5
+#define PF_SLOT_CELL_TYPE 6
+#define PF_SLOT_STATUS 7
+/* storage blocks: pressure and extrapolation kernels (no particle buffers bound there) */
+#define PF_SLOT_PRESSURE 0
+#define PF_SLOT_PRESSURE_OUT 1
+#define PF_SLOT_RHS 3
+#define PF_SLOT_FACE_VALID 0
+#define PF_SLOT_FACE_VALID_OUT 1
+/* storage block of the generic fill kernel */
+#define PF_SLOT_FILL 0
+/* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
+#define PF_SLOT_COUNT 8
+
+/* explicit uniform locations of the fill kernel */
+#define PF_LOC_FILL_COUNT 0
+#define PF_LOC_FILL_VALUE 1
+
+/* uniform block with the per-step constants (common/sim.glsl, src/sim/sim_uniforms.h) */
+#define PF_UBO_SIM 0
+
+/* cell types */
+#define PF_CELL_AIR 0
+#define PF_CELL_FLUID 1
+#define PF_CELL_SOLID 2
+
+/* status buffer words, read back a frame late */
+#define PF_STATUS_FLAGS 0
+#define PF_STATUS_MAX_SPEED 1
+#define PF_STATUS_WORDS 4
+
+/* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */
+#define PF_GPU_FLAG_P2G_OVERFLOW 1u
+#define PF_GPU_FLAG_NONFINITE 2u
+#define PF_GPU_FLAG_SPEED_CLAMPED 4u
+
+#endif

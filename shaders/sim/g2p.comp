@@ -1,0 +1,56 @@
+// Grid-to-particle: PIC/FLIP blend v = (1-r) I(u) + r (v_p + I(u - u_old)) with the same
+// clamped trilinear stencil as P2G. Non-finite results are zeroed and speeds above
+// max_speed clamped (both flagged); the largest speed goes to the status buffer for the
+// next frame's CFL estimate. Permutation PF_PIC_ONLY (flip ratio 0) skips u_old.
+#include "common/sim.glsl"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
+layout(std430, binding = PF_SLOT_PARTICLE_VEL) buffer Vel { vec4 vel[]; };
+layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_vel[]; };
+#if !PF_PIC_ONLY
+layout(std430, binding = PF_SLOT_FACE_VEL_OLD) readonly buffer FaceVelOld { float face_vel_old[]; };
+#endif
+layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
+
+void main() {
+    uint i = flat_id();
+    if (i >= sim.counts.x) return;
+    vec3 g = grid_coord(pos[i].xyz);
+    vec3 v_pic = vec3(0.0);
+    vec3 delta = vec3(0.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        Stencil st = face_stencil(axis, g);
+        for (int n = 0; n < 8; ++n) {
+            ivec3 d = stencil_offset(n);
+            float w = stencil_weight(st.frac, d);
+            int face = face_index(axis, st.base + d);
+            float u = face_vel[face];
+            v_pic[axis] += w * u;
+#if !PF_PIC_ONLY
+            delta[axis] += w * (u - face_vel_old[face]);
+#endif
+        }
+    }
+#if PF_PIC_ONLY
+    vec3 v = v_pic;
+#else
+    float r = sim.solve.z;
+    vec3 v = (1.0 - r) * v_pic + r * (vel[i].xyz + delta);
+#endif
+    uint flags = 0u;
+    if (any(isnan(v)) || any(isinf(v))) {
+        v = vec3(0.0);
+        flags |= PF_GPU_FLAG_NONFINITE;
+    }
+    float speed = length(v);
+    float max_speed = sim.solve.w;
+    if (speed > max_speed) {
+        v *= max_speed / speed;
+        speed = max_speed;
+        flags |= PF_GPU_FLAG_SPEED_CLAMPED;
+    }
+    if (flags != 0u) atomicOr(status[PF_STATUS_FLAGS], flags);
+    // Non-negative floats order like their bit patterns.
+    atomicMax(status[PF_STATUS_MAX_SPEED], floatBitsToUint(speed));
+    vel[i] = vec4(v, 0.0);
+}

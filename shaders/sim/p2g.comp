@@ -1,0 +1,41 @@
+// Particle-to-grid: splats each particle's velocity onto the 8 nearest samples of every MAC
+// face lattice with 32-bit fixed-point integer atomics (momentum and weight), and counts
+// particles per cell. Integer sums are order independent, so the result is bit-identical
+// run to run. Overflow of an accumulator is detected and flagged, never silent.
+#include "common/sim.glsl"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
+layout(std430, binding = PF_SLOT_PARTICLE_VEL) readonly buffer Vel { vec4 vel[]; };
+layout(std430, binding = PF_SLOT_FACE_ACCUM) buffer Accum { int accum[]; };  // 2 words per face
+layout(std430, binding = PF_SLOT_CELL_COUNT) buffer Count { uint cell_count[]; };
+layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
+
+void accumulate(int word, int value) {
+    if (value == 0) return;  // zero weights (clamped stencil edges) cost no atomic
+    int old = atomicAdd(accum[word], value);
+    int sum = int(uint(old) + uint(value));  // wrapping add, as the atomic did
+    if ((old >= 0) == (value >= 0) && (sum >= 0) != (old >= 0))
+        atomicOr(status[PF_STATUS_FLAGS], PF_GPU_FLAG_P2G_OVERFLOW);
+}
+
+void main() {
+    uint i = flat_id();
+    if (i >= sim.counts.x) return;
+    vec3 g = grid_coord(pos[i].xyz);
+    vec3 v = vel[i].xyz;
+
+    ivec3 cell = clamp(ivec3(floor(g)), ivec3(0), sim.grid.xyz - 1);
+    atomicAdd(cell_count[cell_index(cell)], 1u);
+
+    for (int axis = 0; axis < 3; ++axis) {
+        Stencil st = face_stencil(axis, g);
+        for (int n = 0; n < 8; ++n) {
+            ivec3 d = stencil_offset(n);
+            float w = stencil_weight(st.frac, d);
+            int face = face_index(axis, st.base + d);
+            // roundEven is odd-symmetric: mirrored inputs give mirrored integers.
+            accumulate(2 * face, int(roundEven(w * v[axis] * sim.fixed_scale.x)));
+            accumulate(2 * face + 1, int(roundEven(w * sim.fixed_scale.y)));
+        }
+    }
+}

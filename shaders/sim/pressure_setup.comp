@@ -1,0 +1,27 @@
+// Pressure setup: right-hand side b = -div(u) * density * dx / dt for FLUID cells; AIR
+// cells get b = 0 and p = 0 (free surface). FLUID cells keep last substep's pressure as the
+// solver's starting guess (pascals do not depend on dt).
+#include "common/sim.glsl"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_vel[]; };
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+layout(std430, binding = PF_SLOT_RHS) writeonly buffer Rhs { float rhs[]; };
+layout(std430, binding = PF_SLOT_PRESSURE) buffer Pressure { float pressure[]; };
+
+void main() {
+    int c = int(flat_id());
+    if (c >= sim.grid.w) return;
+    if (cell_type[c] != PF_CELL_FLUID) {
+        rhs[c] = 0.0;
+        pressure[c] = 0.0;
+        return;
+    }
+    ivec3 ijk = ivec3(c % sim.grid.x, (c / sim.grid.x) % sim.grid.y, c / (sim.grid.x * sim.grid.y));
+    float div = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        ivec3 hi = ijk;
+        hi[axis] += 1;
+        div += face_vel[face_index(axis, hi)] - face_vel[face_index(axis, ijk)];
+    }
+    rhs[c] = -div * sim.solve.x * sim.origin_dx.w / sim.gravity_dt.w;
+}

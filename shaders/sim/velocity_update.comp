@@ -1,0 +1,38 @@
+// Velocity update: subtracts the pressure gradient on faces next to FLUID cells (p = 0 in
+// AIR) and marks them valid; wall faces are 0 (free-slip) and valid; faces between two AIR
+// cells are reset to 0 and left invalid for extrapolation.
+#include "common/sim.glsl"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_FACE_VEL) buffer FaceVel { float face_vel[]; };
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+layout(std430, binding = PF_SLOT_PRESSURE) readonly buffer Pressure { float pressure[]; };
+layout(std430, binding = PF_SLOT_FACE_VALID_OUT) writeonly buffer Valid { uint valid[]; };
+
+void main() {
+    int id = int(flat_id());
+    if (id >= sim.face_count.w) return;
+    int axis;
+    ivec3 f;
+    decode_face(id, axis, f);
+    if (face_is_wall(axis, f)) {
+        face_vel[id] = 0.0;
+        valid[id] = 1u;
+        return;
+    }
+    ivec3 lo = f;
+    lo[axis] -= 1;
+    int a = cell_index(lo);
+    int b = cell_index(f);
+    uint ta = cell_type[a];
+    uint tb = cell_type[b];
+    if (ta == PF_CELL_FLUID || tb == PF_CELL_FLUID) {
+        float pa = ta == PF_CELL_FLUID ? pressure[a] : 0.0;
+        float pb = tb == PF_CELL_FLUID ? pressure[b] : 0.0;
+        float scale = sim.gravity_dt.w / (sim.solve.x * sim.origin_dx.w);
+        face_vel[id] -= scale * (pb - pa);
+        valid[id] = 1u;
+    } else {
+        face_vel[id] = 0.0;
+        valid[id] = 0u;
+    }
+}

@@ -1,0 +1,207 @@
+// The C boundary: checks every argument, then forwards to pf::Simulation. Nothing here
+// throws across the boundary; host allocation failures become PF_ERROR_OUT_OF_MEMORY.
+#include <cmath>
+#include <memory>
+#include <new>
+#include <string>
+
+#include "api/handle.h"
+#include "api/validate.h"
+#include "pf/pf.h"
+#include "sim/particle_fill.h"
+
+namespace {
+const pf::Log kSilent{};
+
+bool live(const pf_sim* sim) { return sim && sim->magic == pf::kLiveMagic && sim->impl; }
+
+template <typename Fn>
+pf_result guarded(const pf::Log& log, const char* fn, Fn&& body) {
+    try {
+        return body();
+    } catch (const std::bad_alloc&) {
+        return log.error(PF_ERROR_OUT_OF_MEMORY, std::string(fn) + ": out of host memory");
+    } catch (const std::exception& e) {
+        return log.error(PF_ERROR_INVALID_STATE, std::string(fn) + ": " + e.what());
+    }
+}
+
+#define PF_CHECK_SIM(sim, fn)                                                                  \
+    do {                                                                                       \
+        if (!live(sim)) return kSilent.error(PF_ERROR_INVALID_ARGUMENT, fn ": invalid pf_sim"); \
+    } while (0)
+}  // namespace
+
+extern "C" {
+
+uint32_t pf_version(void) { return PF_VERSION; }
+
+const char* pf_result_string(pf_result r) {
+    switch (r) {
+        case PF_OK: return "ok";
+        case PF_ERROR_INVALID_ARGUMENT: return "invalid argument";
+        case PF_ERROR_GL_UNSUPPORTED: return "OpenGL 4.3 core not available";
+        case PF_ERROR_SHADER_COMPILE: return "shader compilation failed";
+        case PF_ERROR_OUT_OF_MEMORY: return "out of memory";
+        case PF_ERROR_CAPACITY: return "capacity exceeded";
+        case PF_ERROR_INVALID_STATE: return "invalid state";
+        case PF_ERROR_GL: return "OpenGL error";
+        default: return "unknown result";
+    }
+}
+
+const char* pf_pass_name(pf_pass pass) {
+    static const char* const kNames[PF_PASS_COUNT] = {"clear",          "p2g",           "grid_forces",
+                                                      "classify",       "pressure_setup", "pressure_solve",
+                                                      "velocity_update", "extrapolate",   "g2p",
+                                                      "advect"};
+    return (pass >= 0 && pass < PF_PASS_COUNT) ? kNames[pass] : "unknown";
+}
+
+pf_sim_params pf_default_sim_params(void) {
+    pf_sim_params p{};
+    p.gravity[1] = -9.81f;
+    p.flip_ratio = 0.95f;
+    p.pressure_iterations = 40;
+    p.jacobi_omega = 1.0f;
+    p.cfl = 1.0f;
+    p.max_substeps = 8;
+    p.extrapolation_layers = 2;
+    return p;
+}
+
+pf_sim_desc pf_default_sim_desc(void) {
+    pf_sim_desc d{};
+    d.grid_size[0] = d.grid_size[1] = d.grid_size[2] = 32;
+    d.cell_size = 0.05f;
+    d.max_particles = 262144;
+    d.max_speed = 100.0f;
+    d.density = 1000.0f;
+    d.fill_particles_per_cell = 8;
+    d.fill_jitter = 0.8f;
+    d.seed = 1;
+    d.params = pf_default_sim_params();
+    return d;
+}
+
+pf_result pf_create(const pf_sim_desc* desc, pf_sim** out) {
+    if (!desc || !out) {
+        const pf::Log log = desc ? pf::Log(desc->logger) : kSilent;
+        return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
+    }
+    const pf::Log log(desc->logger);
+    return guarded(log, "pf_create", [&] {
+        const pf_sim_desc resolved = pf::resolve_desc(*desc);
+        if (pf_result r = pf::validate_desc(resolved, log); r != PF_OK) return r;
+        auto sim = std::make_unique<pf_sim>();
+        if (pf_result r = pf::Simulation::create(resolved, sim->impl); r != PF_OK) return r;
+        *out = sim.release();
+        return PF_OK;
+    });
+}
+
+void pf_destroy(pf_sim* sim) {
+    if (!live(sim)) return;
+    sim->magic = 0;
+    delete sim;
+}
+
+pf_result pf_add_particles(pf_sim* sim, const float* xyz, const float* vel, uint32_t n) {
+    PF_CHECK_SIM(sim, "pf_add_particles");
+    pf::Simulation& s = *sim->impl;
+    return guarded(s.log(), "pf_add_particles", [&] {
+        if (n == 0) return PF_OK;
+        if (!xyz) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_particles: xyz must not be NULL");
+        if (uint64_t(s.particle_count()) + n > s.desc().max_particles) {
+            return s.log().error(PF_ERROR_CAPACITY, "pf_add_particles: " + std::to_string(n) + " particles do not fit (" +
+                                                        std::to_string(s.particle_count()) + " of " +
+                                                        std::to_string(s.desc().max_particles) + " in use)");
+        }
+        if (pf_result r = pf::validate_particles(s.desc(), xyz, vel, n, s.log()); r != PF_OK) return r;
+        return s.add_particles(xyz, vel, n);
+    });
+}
+
+pf_result pf_fill_box(pf_sim* sim, const float lo[3], const float hi[3], const float vel[3]) {
+    PF_CHECK_SIM(sim, "pf_fill_box");
+    pf::Simulation& s = *sim->impl;
+    return guarded(s.log(), "pf_fill_box", [&] {
+        if (!lo || !hi) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_fill_box: lo and hi must not be NULL");
+        for (int a = 0; a < 3; ++a) {
+            if (!std::isfinite(lo[a]) || !std::isfinite(hi[a]) || (vel && !std::isfinite(vel[a])))
+                return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_fill_box: lo, hi and vel must be finite");
+        }
+        if (vel && std::sqrt(double(vel[0]) * vel[0] + double(vel[1]) * vel[1] + double(vel[2]) * vel[2]) > s.desc().max_speed)
+            return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_fill_box: vel exceeds desc.max_speed");
+        if (pf::FillLattice(s.desc(), lo, hi).count() == 0)
+            return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_fill_box: the box is empty or does not overlap the domain");
+        return s.fill_box(lo, hi, vel);
+    });
+}
+
+pf_result pf_clear_particles(pf_sim* sim) {
+    PF_CHECK_SIM(sim, "pf_clear_particles");
+    return sim->impl->clear_particles();
+}
+
+pf_result pf_step(pf_sim* sim, float frame_dt) {
+    PF_CHECK_SIM(sim, "pf_step");
+    pf::Simulation& s = *sim->impl;
+    if (!(std::isfinite(frame_dt) && frame_dt > 0.0f && frame_dt <= 1.0f)) {
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT,
+                             "pf_step: frame_dt must be in (0, 1] seconds, got " + std::to_string(frame_dt));
+    }
+    return guarded(s.log(), "pf_step", [&] { return s.step(frame_dt); });
+}
+
+pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out) {
+    PF_CHECK_SIM(sim, "pf_get_params");
+    if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_params: out must not be NULL");
+    *out = sim->impl->params();
+    return PF_OK;
+}
+
+pf_result pf_set_params(pf_sim* sim, const pf_sim_params* params) {
+    PF_CHECK_SIM(sim, "pf_set_params");
+    pf::Simulation& s = *sim->impl;
+    if (!params) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_params: params must not be NULL");
+    return guarded(s.log(), "pf_set_params", [&] {
+        const pf_sim_params resolved = pf::resolve_params(*params);
+        if (pf_result r = pf::validate_params(resolved, s.log(), "pf_set_params"); r != PF_OK) return r;
+        return s.set_params(resolved);
+    });
+}
+
+pf_result pf_read_particles(pf_sim* sim, uint32_t first, uint32_t count, float* xyz, float* vel) {
+    PF_CHECK_SIM(sim, "pf_read_particles");
+    pf::Simulation& s = *sim->impl;
+    if (uint64_t(first) + count > s.particle_count()) {
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_read_particles: range [" + std::to_string(first) + ", " +
+                                                            std::to_string(uint64_t(first) + count) + ") exceeds the " +
+                                                            std::to_string(s.particle_count()) + " live particles");
+    }
+    if (count == 0 || (!xyz && !vel)) return PF_OK;
+    return guarded(s.log(), "pf_read_particles", [&] { return s.read_particles(first, count, xyz, vel); });
+}
+
+pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out) {
+    PF_CHECK_SIM(sim, "pf_get_gl_buffers");
+    if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_gl_buffers: out must not be NULL");
+    sim->impl->gl_buffers(*out);
+    return PF_OK;
+}
+
+pf_result pf_get_stats(const pf_sim* sim, pf_stats* out) {
+    PF_CHECK_SIM(sim, "pf_get_stats");
+    if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_stats: out must not be NULL");
+    sim->impl->stats(*out);
+    return PF_OK;
+}
+
+pf_result pf_clear_flags(pf_sim* sim) {
+    PF_CHECK_SIM(sim, "pf_clear_flags");
+    sim->impl->clear_flags();
+    return PF_OK;
+}
+
+}  // extern "C"

@@ -1,0 +1,103 @@
+#include "api/validate.h"
+
+#include <cmath>
+#include <string>
+
+namespace pf {
+
+namespace {
+bool finite3(const float v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
+
+std::string str(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof(buf), "%g", v);
+    return buf;
+}
+}  // namespace
+
+pf_sim_params resolve_params(const pf_sim_params& in) {
+    const pf_sim_params d = pf_default_sim_params();
+    pf_sim_params p = in;
+    if (p.pressure_iterations == 0) p.pressure_iterations = d.pressure_iterations;
+    if (p.jacobi_omega == 0.0f) p.jacobi_omega = d.jacobi_omega;
+    if (p.cfl == 0.0f) p.cfl = d.cfl;
+    if (p.max_substeps == 0) p.max_substeps = d.max_substeps;
+    if (p.extrapolation_layers == 0) p.extrapolation_layers = d.extrapolation_layers;
+    return p;
+}
+
+pf_sim_desc resolve_desc(const pf_sim_desc& in) {
+    const pf_sim_desc d = pf_default_sim_desc();
+    pf_sim_desc r = in;
+    if (r.max_speed == 0.0f) r.max_speed = d.max_speed;
+    if (r.density == 0.0f) r.density = d.density;
+    if (r.fill_particles_per_cell == 0) r.fill_particles_per_cell = d.fill_particles_per_cell;
+    r.params = resolve_params(in.params);
+    return r;
+}
+
+pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn) {
+    auto bad = [&](const std::string& what) {
+        return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what);
+    };
+    if (!finite3(p.gravity)) return bad("params.gravity must be finite");
+    if (!(p.flip_ratio >= 0.0f && p.flip_ratio <= 1.0f)) return bad("params.flip_ratio must be in [0, 1], got " + str(p.flip_ratio));
+    if (p.pressure_iterations < 1 || p.pressure_iterations > 10000)
+        return bad("params.pressure_iterations must be in [1, 10000], got " + std::to_string(p.pressure_iterations));
+    if (!(p.jacobi_omega > 0.0f && p.jacobi_omega <= 1.0f)) return bad("params.jacobi_omega must be in (0, 1], got " + str(p.jacobi_omega));
+    if (!(p.cfl > 0.0f && p.cfl <= 16.0f)) return bad("params.cfl must be in (0, 16], got " + str(p.cfl));
+    if (p.max_substeps < 1 || p.max_substeps > 64)
+        return bad("params.max_substeps must be in [1, 64], got " + std::to_string(p.max_substeps));
+    if (p.extrapolation_layers < 1 || p.extrapolation_layers > 16)
+        return bad("params.extrapolation_layers must be in [1, 16], got " + std::to_string(p.extrapolation_layers));
+    return PF_OK;
+}
+
+pf_result validate_desc(const pf_sim_desc& d, const Log& log) {
+    auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_create: " + what); };
+    if (!d.gl_get_proc_address) return bad("desc.gl_get_proc_address is required (the engine's GL loader)");
+    uint64_t cells = 1;
+    for (int a = 0; a < 3; ++a) {
+        if (d.grid_size[a] < 2 || d.grid_size[a] > 1024)
+            return bad("desc.grid_size[" + std::to_string(a) + "] must be in [2, 1024], got " + std::to_string(d.grid_size[a]));
+        cells *= d.grid_size[a];
+    }
+    if (cells > (uint64_t(1) << 26)) return bad("desc.grid_size has " + std::to_string(cells) + " cells; at most 2^26 are supported");
+    if (!(std::isfinite(d.cell_size) && d.cell_size > 0.0f)) return bad("desc.cell_size must be finite and > 0, got " + str(d.cell_size));
+    if (!finite3(d.origin)) return bad("desc.origin must be finite");
+    if (d.max_particles < 1 || d.max_particles > (1u << 28))
+        return bad("desc.max_particles must be in [1, 2^28], got " + std::to_string(d.max_particles));
+    if (!(std::isfinite(d.max_speed) && d.max_speed > 0.0f)) return bad("desc.max_speed must be finite and > 0, got " + str(d.max_speed));
+    if (!(std::isfinite(d.density) && d.density > 0.0f)) return bad("desc.density must be finite and > 0, got " + str(d.density));
+    const uint32_t ppc = d.fill_particles_per_cell;
+    if (ppc != 1 && ppc != 8 && ppc != 27 && ppc != 64)
+        return bad("desc.fill_particles_per_cell must be 1, 8, 27 or 64, got " + std::to_string(ppc));
+    if (!(d.fill_jitter >= 0.0f && d.fill_jitter <= 1.0f)) return bad("desc.fill_jitter must be in [0, 1], got " + str(d.fill_jitter));
+    return validate_params(d.params, log, "pf_create");
+}
+
+pf_result validate_particles(const pf_sim_desc& d, const float* xyz, const float* vel, uint32_t n, const Log& log) {
+    const double max_speed2 = double(d.max_speed) * d.max_speed;
+    for (uint32_t i = 0; i < n; ++i) {
+        const float* p = xyz + size_t(i) * 3;
+        if (!finite3(p)) return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_add_particles: position " + std::to_string(i) + " is not finite");
+        for (int a = 0; a < 3; ++a) {
+            const double lo = d.origin[a], hi = d.origin[a] + double(d.cell_size) * d.grid_size[a];
+            if (!(p[a] >= lo && p[a] <= hi)) {
+                return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_add_particles: particle " + std::to_string(i) +
+                                                                " lies outside the domain on axis " + std::to_string(a) +
+                                                                " (" + str(p[a]) + " not in [" + str(lo) + ", " + str(hi) + "])");
+            }
+        }
+        if (!vel) continue;
+        const float* v = vel + size_t(i) * 3;
+        if (!finite3(v)) return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_add_particles: velocity " + std::to_string(i) + " is not finite");
+        if (double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2] > max_speed2) {
+            return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_add_particles: velocity " + std::to_string(i) +
+                                                            " exceeds desc.max_speed (" + str(d.max_speed) + " m/s)");
+        }
+    }
+    return PF_OK;
+}
+
+}  // namespace pf

@@ -1,0 +1,19 @@
+// Argument checks of the C API: every rule in one place, each failure a logged message.
+#pragma once
+#include "api/log.h"
+#include "pf/pf.h"
+
+namespace pf {
+
+// Replaces zero tuning knobs by their defaults (pf.h documents which fields take 0 = default).
+pf_sim_desc resolve_desc(const pf_sim_desc& desc);
+pf_sim_params resolve_params(const pf_sim_params& params);
+
+// PF_OK or PF_ERROR_INVALID_ARGUMENT with a message naming the field; `fn` prefixes messages.
+pf_result validate_desc(const pf_sim_desc& desc, const Log& log);
+pf_result validate_params(const pf_sim_params& params, const Log& log, const char* fn);
+// Positions finite and inside the domain, velocities finite and at most max_speed.
+pf_result validate_particles(const pf_sim_desc& desc, const float* xyz, const float* vel, uint32_t n,
+                             const Log& log);
+
+}  // namespace pf

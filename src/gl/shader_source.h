@@ -1,0 +1,48 @@
+// Shader sources embedded at build time and the small preprocessor that resolves
+// `#include "path"` (each file once) and prepends the #version and permutation #defines.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace pf::gl {
+
+struct EmbeddedShaderFile {
+    const char* path;  // relative to shaders/, e.g. "sim/p2g.comp"
+    const char* text;
+};
+extern const EmbeddedShaderFile kEmbeddedShaderFiles[];
+extern const unsigned kEmbeddedShaderFileCount;
+
+// One line of shaders/permutations.inc.
+struct ProgramInfo {
+    const char* id;
+    const char* file;
+    const char* defines;
+};
+
+enum class ProgramId {
+#define PF_PROGRAM(id, file, defines) id,
+#include "permutations.inc"
+#undef PF_PROGRAM
+    count
+};
+
+const ProgramInfo& program_info(ProgramId id);
+const std::vector<ProgramInfo>& all_programs();
+
+// Text of an embedded file, or nullptr.
+const char* find_shader_file(const std::string& path);
+
+struct ExpandedSource {
+    std::string text;                 // complete source, ready for glShaderSource
+    std::vector<std::string> files;   // source-string numbers used in #line: index -> path
+    std::string error;                // non-empty if expansion failed (missing include, cycle)
+};
+
+// Expands `file` with the given extra #define lines (may be empty).
+ExpandedSource expand_shader(const std::string& file, const std::string& defines);
+
+// Rewrites "0(12)"-style GL log locations into "sim/p2g.comp:12" using the #line table.
+std::string annotate_log(const std::string& log, const std::vector<std::string>& files);
+
+}  // namespace pf::gl

@@ -1,0 +1,43 @@
+// Saves the GL state pflip's calls touch and restores it on scope exit, so an engine's
+// bindings survive every pf_* call: current program, indexed storage/uniform bindings the
+// kernels use, and the generic buffer bindings used for uploads and readbacks.
+#pragma once
+#include <array>
+
+#include "common/slots.h"
+#include "gl/gl.h"
+
+namespace pf::gl {
+
+class StateGuard {
+public:
+    explicit StateGuard(const Api& gl);
+    ~StateGuard();
+    StateGuard(const StateGuard&) = delete;
+    StateGuard& operator=(const StateGuard&) = delete;
+
+private:
+    struct Indexed {
+        GLint buffer = 0;
+        GLint64 start = 0;
+        GLint64 size = 0;
+    };
+    static constexpr GLenum kGeneric[] = {GL_SHADER_STORAGE_BUFFER, GL_UNIFORM_BUFFER,
+                                          GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER,
+                                          GL_DISPATCH_INDIRECT_BUFFER};
+    static constexpr GLenum kGenericBinding[] = {
+        GL_SHADER_STORAGE_BUFFER_BINDING, GL_UNIFORM_BUFFER_BINDING, GL_COPY_READ_BUFFER_BINDING,
+        GL_COPY_WRITE_BUFFER_BINDING, GL_DISPATCH_INDIRECT_BUFFER_BINDING};
+    static constexpr int kGenericCount = 5;
+
+    void save_indexed(GLenum binding, GLenum start, GLenum size, GLuint index, Indexed& out);
+    void restore_indexed(GLenum target, GLuint index, const Indexed& s);
+
+    const Api& gl_;
+    GLint program_ = 0;
+    std::array<Indexed, PF_SLOT_COUNT> storage_{};
+    Indexed uniform_{};
+    std::array<GLint, kGenericCount> generic_{};
+};
+
+}  // namespace pf::gl

@@ -1,0 +1,107 @@
+// Per-pass GPU timing without stalls: each step records GL_TIMESTAMP queries around every
+// pass into one slot of a small ring; results are read only once the GPU reports them
+// available, a few steps later. glQueryCounter is used (not GL_TIME_ELAPSED) so an engine's
+// own elapsed-time query may stay active across pf_step.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "gl/gl.h"
+
+namespace pf::gl {
+
+template <int PassCount>
+class TimerRing {
+public:
+    static constexpr int kSlots = 4;
+
+    struct Result {
+        uint64_t step = 0;  // 0: nothing measured yet
+        std::array<float, PassCount> ms{};
+    };
+
+    explicit TimerRing(const Api& gl) : gl_(gl) {
+        GLint bits = 0;
+        gl_.GetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &bits);
+        supported_ = bits > 0;
+    }
+    ~TimerRing() {
+        for (Slot& s : slots_) {
+            if (!s.queries.empty()) gl_.DeleteQueries(static_cast<GLsizei>(s.queries.size()), s.queries.data());
+        }
+    }
+    TimerRing(const TimerRing&) = delete;
+    TimerRing& operator=(const TimerRing&) = delete;
+
+    // Starts recording step `step`. If the slot's previous step is still in flight, that
+    // step's timing is dropped rather than waited for.
+    void begin_step(uint64_t step) {
+        poll();
+        current_ = nullptr;
+        if (!supported_) return;
+        Slot& s = slots_[step % kSlots];
+        s.step = step;
+        s.used = 0;
+        s.passes.clear();
+        s.pending = true;
+        current_ = &s;
+    }
+    // Brackets one pass; begin/end pairs may repeat (substeps): they are summed.
+    void begin_pass(int pass) {
+        if (!current_) return;
+        current_->passes.push_back(pass);
+        stamp();
+    }
+    void end_pass() {
+        if (current_) stamp();
+    }
+    // Reads every finished slot without blocking; the newest finished step wins.
+    void poll() {
+        for (Slot& s : slots_) {
+            if (!s.pending || s.used == 0) continue;
+            GLuint available = 0;
+            gl_.GetQueryObjectuiv(s.queries[s.used - 1], GL_QUERY_RESULT_AVAILABLE, &available);
+            if (!available) continue;
+            s.pending = false;
+            if (s.step < latest_.step) continue;
+            Result r;
+            r.step = s.step;
+            for (size_t p = 0; p < s.passes.size(); ++p) {
+                GLuint64 t0 = 0, t1 = 0;
+                gl_.GetQueryObjectui64v(s.queries[2 * p], GL_QUERY_RESULT, &t0);
+                gl_.GetQueryObjectui64v(s.queries[2 * p + 1], GL_QUERY_RESULT, &t1);
+                r.ms[s.passes[p]] += static_cast<float>(static_cast<double>(t1 - t0) * 1e-6);
+            }
+            latest_ = r;
+        }
+    }
+    const Result& latest() const { return latest_; }
+    bool supported() const { return supported_; }
+
+private:
+    struct Slot {
+        uint64_t step = 0;
+        bool pending = false;
+        size_t used = 0;
+        std::vector<GLuint> queries;
+        std::vector<int> passes;
+    };
+    void stamp() {
+        Slot& s = *current_;
+        if (s.used == s.queries.size()) {
+            const size_t grow = s.queries.empty() ? 64 : s.queries.size();
+            s.queries.resize(s.queries.size() + grow);
+            gl_.GenQueries(static_cast<GLsizei>(grow), s.queries.data() + s.used);
+        }
+        gl_.QueryCounter(s.queries[s.used++], GL_TIMESTAMP);
+    }
+
+    const Api& gl_;
+    bool supported_ = false;
+    std::array<Slot, kSlots> slots_{};
+    Slot* current_ = nullptr;
+    Result latest_{};
+};
+
+}  // namespace pf::gl

@@ -1,0 +1,455 @@
+#include "sim/simulation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "common/slots.h"
+#include "gl/state_guard.h"
+#include "sim/particle_fill.h"
+
+namespace pf {
+
+static_assert(PF_GPU_FLAG_P2G_OVERFLOW == PF_FLAG_P2G_OVERFLOW, "flag bits shared with GLSL");
+static_assert(PF_GPU_FLAG_NONFINITE == PF_FLAG_NONFINITE, "flag bits shared with GLSL");
+static_assert(PF_GPU_FLAG_SPEED_CLAMPED == PF_FLAG_SPEED_CLAMPED, "flag bits shared with GLSL");
+
+namespace {
+using gl::ProgramId;
+
+// Fixed-point weight scale S_w = 2^20: 2047 full-weight particles fit a 31-bit sum.
+constexpr float kWeightScale = 1048576.0f;
+
+struct GlFunctionLoader {
+    pf_gl_get_proc_address_fn fn;
+};
+
+GLADapiproc load_gl(void* user, const char* name) {
+    return reinterpret_cast<GLADapiproc>(static_cast<GlFunctionLoader*>(user)->fn(name));
+}
+
+int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
+}  // namespace
+
+Simulation::Simulation(const pf_sim_desc& desc) : desc_(desc), log_(desc.logger) {}
+
+Simulation::~Simulation() {
+    if (!gl_.DeleteSync) return;  // GL never loaded: nothing was created
+    for (GLsync& f : fences_) {
+        if (f) gl_.DeleteSync(f);
+    }
+}
+
+pf_result Simulation::create(const pf_sim_desc& desc, std::unique_ptr<Simulation>& out) {
+    std::unique_ptr<Simulation> sim(new Simulation(desc));
+    const pf_result r = sim->init();
+    if (r == PF_OK) out = std::move(sim);
+    return r;
+}
+
+pf_result Simulation::init() {
+    GlFunctionLoader loader{desc_.gl_get_proc_address};
+    const int version = gladLoadGLContextUserPtr(&gl_, load_gl, &loader);
+    if (version == 0) {
+        gl_ = gl::Api{};
+        return log_.error(PF_ERROR_GL_UNSUPPORTED,
+                          "pf_create: could not load OpenGL through gl_get_proc_address (is a GL context current?)");
+    }
+    const int major = GLAD_VERSION_MAJOR(version), minor = GLAD_VERSION_MINOR(version);
+    if (major < 4 || (major == 4 && minor < 3)) {
+        gl_ = gl::Api{};
+        return log_.error(PF_ERROR_GL_UNSUPPORTED, "pf_create: OpenGL 4.3 core is required, the current context is " +
+                                                       std::to_string(major) + "." + std::to_string(minor));
+    }
+    // A GL error the engine left pending would be mistaken for ours below.
+    if (GLenum pending = gl_.GetError(); pending != GL_NO_ERROR) {
+        log_.warning("pf_create: a GL error (0x" + std::to_string(pending) + ") was pending before the call; it was consumed");
+    }
+
+    const auto& n = desc_.grid_size;
+    cells_ = static_cast<int32_t>(n[0] * n[1] * n[2]);
+    face_counts_ = {static_cast<int32_t>((n[0] + 1) * n[1] * n[2]), static_cast<int32_t>(n[0] * (n[1] + 1) * n[2]),
+                    static_cast<int32_t>(n[0] * n[1] * (n[2] + 1))};
+    faces_ = face_counts_[0] + face_counts_[1] + face_counts_[2];
+
+    GLint64 max_block = 0;
+    gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+    GLint max_blocks = 0;
+    gl_.GetIntegerv(GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS, &max_blocks);
+    gl_.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups_x_);
+    if (max_blocks < PF_SLOT_COUNT) {
+        return log_.error(PF_ERROR_GL_UNSUPPORTED, "pf_create: the GL offers " + std::to_string(max_blocks) +
+                                                       " compute storage blocks, 8 are needed");
+    }
+    const uint64_t largest = std::max<uint64_t>(uint64_t(desc_.max_particles) * 16u, uint64_t(faces_) * 8u);
+    if (largest > uint64_t(max_block)) {
+        return log_.error(PF_ERROR_CAPACITY, "pf_create: a buffer of " + std::to_string(largest) +
+                                                 " bytes exceeds this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" +
+                                                 std::to_string(max_block) + "); lower max_particles or the grid size");
+    }
+
+    gl::StateGuard guard(gl_);
+    const size_t np = desc_.max_particles;
+    pos_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW);
+    vel_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW);
+    face_accum_ = gl::Buffer(gl_, size_t(faces_) * 8, GL_DYNAMIC_COPY);
+    face_vel_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY);
+    face_vel_old_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY);
+    for (auto& b : face_valid_) b = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY);
+    cell_count_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
+    cell_type_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
+    for (auto& b : pressure_) b = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
+    rhs_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
+    uniforms_ = gl::Buffer(gl_, sizeof(SimUniforms), GL_DYNAMIC_DRAW);
+    status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY);
+    for (auto& b : readback_) b = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_STREAM_READ);
+    if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
+        return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
+                          "pf_create: allocating " + std::to_string((np * 32 + size_t(faces_) * 28 + size_t(cells_) * 20) >> 20) +
+                              " MiB of GPU buffers failed (GL error 0x" + std::to_string(err) + ")");
+    }
+
+    programs_ = std::make_unique<gl::ProgramCache>(gl_);
+    timers_ = std::make_unique<gl::TimerRing<PF_PASS_COUNT>>(gl_);
+    const ProgramId needed[] = {ProgramId::fill, ProgramId::p2g, ProgramId::grid_forces, ProgramId::classify,
+                                ProgramId::pressure_setup, ProgramId::jacobi, ProgramId::velocity_update,
+                                ProgramId::extrapolate, ProgramId::advect,
+                                desc_.params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic};
+    for (ProgramId id : needed) {
+        std::string error;
+        if (!programs_->get(id, error)) return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
+    }
+    // Pressure starts at zero (warm start of the first solve); everything else is written
+    // before it is read.
+    fill(pressure_[0], uint32_t(cells_), 0u, PF_PASS_CLEAR);
+    fill(status_, PF_STATUS_WORDS, 0u, PF_PASS_CLEAR);
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    dispatches_ = {};
+    return PF_OK;
+}
+
+void Simulation::bind(GLuint slot, const gl::Buffer& buffer) const {
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, slot, buffer.id());
+}
+
+void Simulation::dispatch(ProgramId program, uint64_t invocations, pf_pass pass) {
+    if (invocations == 0) return;
+    const int64_t groups = ceil_div(int64_t(invocations), PF_WORKGROUP_SIZE);
+    const int64_t gx = std::min<int64_t>(groups, max_groups_x_);
+    const int64_t gy = ceil_div(groups, gx);
+    gl_.UseProgram(programs_->built(program));
+    gl_.DispatchCompute(GLuint(gx), GLuint(gy), 1);
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    ++dispatches_[pass];
+}
+
+void Simulation::fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, pf_pass pass) {
+    const GLuint p = programs_->built(ProgramId::fill);
+    gl_.ProgramUniform1ui(p, PF_LOC_FILL_COUNT, words);
+    gl_.ProgramUniform1ui(p, PF_LOC_FILL_VALUE, value);
+    bind(PF_SLOT_FILL, buffer);
+    dispatch(ProgramId::fill, words, pass);
+}
+
+void Simulation::upload_uniforms(float dt) {
+    SimUniforms& u = uniform_data_;
+    for (int a = 0; a < 3; ++a) {
+        u.grid[a] = int32_t(desc_.grid_size[a]);
+        u.face_count[a] = face_counts_[a];
+        u.origin_dx[a] = desc_.origin[a];
+        u.gravity_dt[a] = desc_.params.gravity[a];
+    }
+    u.grid[3] = cells_;
+    u.face_count[3] = faces_;
+    u.origin_dx[3] = desc_.cell_size;
+    u.gravity_dt[3] = dt;
+    const float momentum_scale = kWeightScale / desc_.max_speed;  // design.md §4.2
+    u.fixed_scale[0] = momentum_scale;
+    u.fixed_scale[1] = kWeightScale;
+    u.fixed_scale[2] = 1.0f / momentum_scale;
+    u.fixed_scale[3] = 1.0f / kWeightScale;
+    u.solve[0] = desc_.density;
+    u.solve[1] = desc_.params.jacobi_omega;
+    u.solve[2] = desc_.params.flip_ratio;
+    u.solve[3] = desc_.max_speed;
+    u.counts[0] = particle_count_;
+    uniforms_.upload(0, sizeof(SimUniforms), &u);
+    gl_.BindBufferBase(GL_UNIFORM_BUFFER, PF_UBO_SIM, uniforms_.id());
+}
+
+void Simulation::run_substep() {
+    gl::TimerRing<PF_PASS_COUNT>& t = *timers_;
+    const uint32_t np = particle_count_;
+
+    t.begin_pass(PF_PASS_CLEAR);
+    fill(face_accum_, uint32_t(faces_) * 2, 0u, PF_PASS_CLEAR);
+    fill(cell_count_, uint32_t(cells_), 0u, PF_PASS_CLEAR);
+    t.end_pass();
+
+    t.begin_pass(PF_PASS_P2G);
+    bind(PF_SLOT_PARTICLE_POS, pos_);
+    bind(PF_SLOT_PARTICLE_VEL, vel_);
+    bind(PF_SLOT_FACE_ACCUM, face_accum_);
+    bind(PF_SLOT_CELL_COUNT, cell_count_);
+    bind(PF_SLOT_STATUS, status_);
+    dispatch(ProgramId::p2g, np, PF_PASS_P2G);
+    t.end_pass();
+
+    t.begin_pass(PF_PASS_GRID_FORCES);
+    bind(PF_SLOT_FACE_VEL, face_vel_);
+    bind(PF_SLOT_FACE_VEL_OLD, face_vel_old_);
+    dispatch(ProgramId::grid_forces, uint64_t(faces_), PF_PASS_GRID_FORCES);
+    t.end_pass();
+
+    t.begin_pass(PF_PASS_CLASSIFY);
+    bind(PF_SLOT_CELL_TYPE, cell_type_);
+    dispatch(ProgramId::classify, uint64_t(cells_), PF_PASS_CLASSIFY);
+    t.end_pass();
+
+    // Pressure kernels reuse slots 0, 1 and 3 (see shaders/common/slots.h).
+    t.begin_pass(PF_PASS_PRESSURE_SETUP);
+    bind(PF_SLOT_RHS, rhs_);
+    bind(PF_SLOT_PRESSURE, pressure_[pressure_current_]);
+    dispatch(ProgramId::pressure_setup, uint64_t(cells_), PF_PASS_PRESSURE_SETUP);
+    t.end_pass();
+
+    t.begin_pass(PF_PASS_PRESSURE_SOLVE);
+    for (uint32_t k = 0; k < desc_.params.pressure_iterations; ++k) {
+        bind(PF_SLOT_PRESSURE, pressure_[pressure_current_]);
+        bind(PF_SLOT_PRESSURE_OUT, pressure_[1 - pressure_current_]);
+        dispatch(ProgramId::jacobi, uint64_t(cells_), PF_PASS_PRESSURE_SOLVE);
+        pressure_current_ = 1 - pressure_current_;
+    }
+    t.end_pass();
+
+    t.begin_pass(PF_PASS_VELOCITY_UPDATE);
+    bind(PF_SLOT_PRESSURE, pressure_[pressure_current_]);
+    bind(PF_SLOT_FACE_VALID_OUT, face_valid_[0]);
+    dispatch(ProgramId::velocity_update, uint64_t(faces_), PF_PASS_VELOCITY_UPDATE);
+    valid_current_ = 0;
+    t.end_pass();
+
+    t.begin_pass(PF_PASS_EXTRAPOLATE);
+    for (uint32_t layer = 0; layer < desc_.params.extrapolation_layers; ++layer) {
+        bind(PF_SLOT_FACE_VALID, face_valid_[valid_current_]);
+        bind(PF_SLOT_FACE_VALID_OUT, face_valid_[1 - valid_current_]);
+        dispatch(ProgramId::extrapolate, uint64_t(faces_), PF_PASS_EXTRAPOLATE);
+        valid_current_ = 1 - valid_current_;
+    }
+    t.end_pass();
+
+    t.begin_pass(PF_PASS_G2P);
+    bind(PF_SLOT_PARTICLE_POS, pos_);
+    bind(PF_SLOT_PARTICLE_VEL, vel_);
+    bind(PF_SLOT_FACE_VEL_OLD, face_vel_old_);
+    dispatch(desc_.params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic, np, PF_PASS_G2P);
+    t.end_pass();
+
+    t.begin_pass(PF_PASS_ADVECT);
+    dispatch(ProgramId::advect, np, PF_PASS_ADVECT);
+    t.end_pass();
+}
+
+uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
+    poll_status();
+    float v_max = gpu_max_speed_;
+    if (added_at_step_ > status_step_) v_max = std::max(v_max, added_speed_);
+    const float* g = desc_.params.gravity;
+    const float v_est = v_max + std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) * frame_dt;
+    const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
+    const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
+    if (clamped) *clamped = wanted > double(desc_.params.max_substeps);
+    return k;
+}
+
+pf_result Simulation::step(float frame_dt) {
+    const auto t0 = std::chrono::steady_clock::now();
+    gl::StateGuard guard(gl_);
+    bool clamped = false;
+    const uint32_t substeps = substeps_for(frame_dt, &clamped);
+    if (clamped) flags_ |= PF_FLAG_SUBSTEPS_CLAMPED;
+    ++steps_;
+    dispatches_ = {};
+    timers_->begin_step(steps_);
+
+    const uint32_t zero[PF_STATUS_WORDS] = {};
+    status_.upload(0, sizeof(zero), zero);
+    upload_uniforms(frame_dt / float(substeps));
+    for (uint32_t s = 0; s < substeps; ++s) run_substep();
+
+    // Status readback ring: copy now, read once the fence has passed (never wait).
+    const int slot = int(steps_ % kReadbackSlots);
+    if (fences_[slot]) gl_.DeleteSync(fences_[slot]);  // too old to matter: dropped
+    gl_.BindBuffer(GL_COPY_READ_BUFFER, status_.id());
+    gl_.BindBuffer(GL_COPY_WRITE_BUFFER, readback_[slot].id());
+    gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, PF_STATUS_WORDS * 4);
+    fences_[slot] = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    fence_step_[slot] = steps_;
+
+    // Engines may read the particle buffers as vertex data, SSBOs or by copying.
+    gl_.MemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                      GL_BUFFER_UPDATE_BARRIER_BIT);
+    last_substeps_ = substeps;
+    last_cpu_ms_ = std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return PF_OK;
+}
+
+pf_result Simulation::run_substep_for_test(float dt) {
+    gl::StateGuard guard(gl_);
+    ++steps_;
+    timers_->begin_step(steps_);
+    upload_uniforms(dt);
+    run_substep();
+    gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
+    return PF_OK;
+}
+
+void Simulation::poll_status() const {
+    for (int s = 0; s < kReadbackSlots; ++s) {
+        if (!fences_[s]) continue;
+        const GLenum r = gl_.ClientWaitSync(fences_[s], 0, 0);
+        if (r != GL_ALREADY_SIGNALED && r != GL_CONDITION_SATISFIED) continue;
+        gl_.DeleteSync(fences_[s]);
+        fences_[s] = nullptr;
+        uint32_t words[PF_STATUS_WORDS] = {};
+        {
+            gl::StateGuard guard(gl_);
+            readback_[s].download(0, sizeof(words), words);
+        }
+        flags_ |= words[PF_STATUS_FLAGS];
+        if (fence_step_[s] > status_step_) {
+            status_step_ = fence_step_[s];
+            std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
+        }
+    }
+}
+
+pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t n) {
+    if (n == 0) return PF_OK;
+    std::vector<float> pos4(size_t(n) * 4, 0.0f), vel4(size_t(n) * 4, 0.0f);
+    float fastest = 0.0f;
+    for (uint32_t i = 0; i < n; ++i) {
+        for (int a = 0; a < 3; ++a) {
+            pos4[size_t(i) * 4 + a] = xyz[size_t(i) * 3 + a];
+            vel4[size_t(i) * 4 + a] = vel ? vel[size_t(i) * 3 + a] : 0.0f;
+        }
+        const float* v = &vel4[size_t(i) * 4];
+        fastest = std::max(fastest, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    }
+    {
+        gl::StateGuard guard(gl_);
+        pos_.upload(size_t(particle_count_) * 16, size_t(n) * 16, pos4.data());
+        vel_.upload(size_t(particle_count_) * 16, size_t(n) * 16, vel4.data());
+    }
+    particle_count_ += n;
+    added_speed_ = (added_at_step_ > status_step_) ? std::max(added_speed_, fastest) : fastest;
+    added_at_step_ = steps_ + 1;
+    return PF_OK;
+}
+
+pf_result Simulation::fill_box(const float lo[3], const float hi[3], const float vel[3]) {
+    FillLattice lattice{desc_, lo, hi};
+    const uint64_t n = lattice.count();
+    if (uint64_t(particle_count_) + n > desc_.max_particles) {
+        return log_.error(PF_ERROR_CAPACITY, "pf_fill_box: the box holds " + std::to_string(n) +
+                                                 " particles but only " +
+                                                 std::to_string(desc_.max_particles - particle_count_) +
+                                                 " slots are free (max_particles = " +
+                                                 std::to_string(desc_.max_particles) + ")");
+    }
+    std::vector<float> xyz;
+    lattice.generate(desc_.seed, fill_calls_++, xyz);
+    std::vector<float> v;
+    if (vel) {
+        v.resize(xyz.size());
+        for (size_t i = 0; i < v.size(); ++i) v[i] = vel[i % 3];
+    }
+    return add_particles(xyz.data(), vel ? v.data() : nullptr, uint32_t(xyz.size() / 3));
+}
+
+pf_result Simulation::clear_particles() {
+    gl::StateGuard guard(gl_);
+    particle_count_ = 0;
+    fill(pressure_[0], uint32_t(cells_), 0u, PF_PASS_CLEAR);
+    pressure_current_ = 0;
+    added_speed_ = 0.0f;
+    gpu_max_speed_ = 0.0f;
+    return PF_OK;
+}
+
+pf_result Simulation::set_params(const pf_sim_params& params) {
+    if (params.flip_ratio > 0.0f || desc_.params.flip_ratio > 0.0f) {
+        const gl::ProgramId g2p = params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
+        std::string error;
+        gl::StateGuard guard(gl_);
+        if (!programs_->get(g2p, error)) return log_.error(PF_ERROR_SHADER_COMPILE, "pf_set_params: " + error);
+    }
+    desc_.params = params;
+    return PF_OK;
+}
+
+pf_result Simulation::read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const {
+    std::vector<float> tmp(size_t(count) * 4);
+    gl::StateGuard guard(gl_);
+    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    const std::pair<const gl::Buffer*, float*> outs[] = {{&pos_, xyz}, {&vel_, vel}};
+    for (const auto& [buffer, out] : outs) {
+        if (!out) continue;
+        buffer->download(size_t(first) * 16, tmp.size() * 4, tmp.data());
+        for (uint32_t i = 0; i < count; ++i) {
+            for (int a = 0; a < 3; ++a) out[size_t(i) * 3 + a] = tmp[size_t(i) * 4 + a];
+        }
+    }
+    return PF_OK;
+}
+
+void Simulation::gl_buffers(pf_gl_buffers& out) const {
+    out.positions = pos_.id();
+    out.velocities = vel_.id();
+    out.count = particle_count_;
+    out.stride = 16;
+}
+
+void Simulation::stats(pf_stats& out) const {
+    poll_status();
+    timers_->poll();
+    out = pf_stats{};
+    out.particle_count = particle_count_;
+    out.max_particles = desc_.max_particles;
+    out.steps = steps_;
+    out.substeps = last_substeps_;
+    out.flags = flags_;
+    out.max_speed = gpu_max_speed_;
+    out.cpu_ms = last_cpu_ms_;
+    const auto& r = timers_->latest();
+    out.gpu_step = r.step;
+    for (int p = 0; p < PF_PASS_COUNT; ++p) {
+        out.gpu_ms[p] = r.ms[p];
+        out.gpu_total_ms += r.ms[p];
+        out.dispatches[p] = dispatches_[p];
+    }
+}
+
+std::vector<uint32_t> Simulation::read_grid(GridBuffer which) const {
+    const gl::Buffer* b = nullptr;
+    switch (which) {
+        case GridBuffer::face_accum: b = &face_accum_; break;
+        case GridBuffer::face_vel: b = &face_vel_; break;
+        case GridBuffer::face_vel_old: b = &face_vel_old_; break;
+        case GridBuffer::face_valid: b = &face_valid_[valid_current_]; break;
+        case GridBuffer::cell_count: b = &cell_count_; break;
+        case GridBuffer::cell_type: b = &cell_type_; break;
+        case GridBuffer::pressure: b = &pressure_[pressure_current_]; break;
+        case GridBuffer::rhs: b = &rhs_; break;
+        case GridBuffer::status: b = &status_; break;
+    }
+    std::vector<uint32_t> words(b->bytes() / 4);
+    gl::StateGuard guard(gl_);
+    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    b->download(0, b->bytes(), words.data());
+    return words;
+}
+
+}  // namespace pf

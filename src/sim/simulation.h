@@ -1,0 +1,104 @@
+// One liquid simulation: its GL loader, buffers, programs and the substep pipeline
+// (docs/design.md §4). The C API in src/api validates arguments before calling in here.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "api/log.h"
+#include "gl/buffer.h"
+#include "gl/gl.h"
+#include "gl/program.h"
+#include "gl/timer_ring.h"
+#include "pf/pf.h"
+#include "sim/sim_uniforms.h"
+
+namespace pf {
+
+// Grid buffers tests may read back (raw 32-bit words).
+enum class GridBuffer { face_accum, face_vel, face_vel_old, face_valid, cell_count, cell_type, pressure, rhs, status };
+
+class Simulation {
+public:
+    // Loads GL through desc.gl_get_proc_address, checks GL 4.3, allocates and compiles.
+    // `desc` must already be validated and have defaults resolved.
+    static pf_result create(const pf_sim_desc& desc, std::unique_ptr<Simulation>& out);
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    pf_result add_particles(const float* xyz, const float* vel, uint32_t n);
+    pf_result fill_box(const float lo[3], const float hi[3], const float vel[3]);
+    pf_result clear_particles();
+    pf_result step(float frame_dt);
+    pf_result set_params(const pf_sim_params& params);
+    pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
+    void gl_buffers(pf_gl_buffers& out) const;
+    void stats(pf_stats& out) const;
+    void clear_flags() { flags_ = 0; }
+
+    const pf_sim_desc& desc() const { return desc_; }
+    const pf_sim_params& params() const { return desc_.params; }
+    const Log& log() const { return log_; }
+    const gl::Api& api() const { return gl_; }
+    uint32_t particle_count() const { return particle_count_; }
+    // Substeps pf_step(frame_dt) would take now (CFL estimate, design.md §5).
+    uint32_t substeps_for(float frame_dt, bool* clamped = nullptr) const;
+
+    // Test access: one substep of length dt exactly (no CFL logic), and raw grid words.
+    pf_result run_substep_for_test(float dt);
+    std::vector<uint32_t> read_grid(GridBuffer which) const;
+
+private:
+    explicit Simulation(const pf_sim_desc& desc);
+    pf_result init();
+    void upload_uniforms(float dt);
+    void run_substep();
+    void dispatch(gl::ProgramId program, uint64_t invocations, pf_pass pass);
+    void bind(GLuint slot, const gl::Buffer& buffer) const;
+    void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, pf_pass pass);
+    void poll_status() const;
+
+    gl::Api gl_{};
+    pf_sim_desc desc_;
+    Log log_;
+    std::unique_ptr<gl::ProgramCache> programs_;
+    std::unique_ptr<gl::TimerRing<PF_PASS_COUNT>> timers_;
+
+    // particles
+    gl::Buffer pos_, vel_;
+    uint32_t particle_count_ = 0;
+    // grid
+    int32_t cells_ = 0;
+    std::array<int32_t, 3> face_counts_{};
+    int32_t faces_ = 0;
+    gl::Buffer face_accum_, face_vel_, face_vel_old_, face_valid_[2];
+    gl::Buffer cell_count_, cell_type_, pressure_[2], rhs_;
+    int pressure_current_ = 0;  // which pressure buffer holds the latest solution
+    int valid_current_ = 0;     // which valid mask is the latest
+    gl::Buffer uniforms_;
+    SimUniforms uniform_data_{};
+
+    // status (flags, max speed) read back a few steps late, behind fences
+    static constexpr int kReadbackSlots = 3;
+    gl::Buffer status_;
+    gl::Buffer readback_[kReadbackSlots];
+    mutable GLsync fences_[kReadbackSlots] = {};
+    mutable uint64_t fence_step_[kReadbackSlots] = {};
+    mutable uint64_t status_step_ = 0;     // step of the newest readback
+    mutable float gpu_max_speed_ = 0.0f;   // its max speed
+    mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
+    float added_speed_ = 0.0f;             // fastest particle added since...
+    uint64_t added_at_step_ = 0;           // ...this step (no readback covers it yet)
+
+    // counters
+    uint64_t steps_ = 0;
+    uint32_t last_substeps_ = 0;
+    float last_cpu_ms_ = 0.0f;
+    std::array<uint32_t, PF_PASS_COUNT> dispatches_{};
+    GLint max_groups_x_ = 65535;
+    uint32_t fill_calls_ = 0;
+};
+
+}  // namespace pf

@@ -1,0 +1,15 @@
+/* The public header must compile as C99 and its defaults must be callable from C. */
+#include "pf/pf.h"
+
+int pf_test_c_header_defaults_ok(void);
+
+int pf_test_c_header_defaults_ok(void) {
+    pf_sim_desc desc = pf_default_sim_desc();
+    pf_sim_params params = pf_default_sim_params();
+    pf_stats stats = {0};
+    pf_gl_buffers buffers = {0};
+    (void)stats;
+    (void)buffers;
+    return desc.grid_size[0] > 0 && params.pressure_iterations > 0 && pf_version() == PF_VERSION &&
+           pf_result_string(PF_OK) != 0;
+}

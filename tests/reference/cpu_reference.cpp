@@ -1,0 +1,320 @@
+// Double-precision CPU reference of one pflip substep; see cpu_reference.h and docs/design.md.
+#include "reference/cpu_reference.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace pf::ref {
+namespace {
+
+// Calls f(i, j, k, index) for every sample of lattice c.
+template <class F> void for_each_face(const Grid& grid, int c, F&& f) {
+    const glm::ivec3 d = grid.face_dims(c);
+    for (int k = 0; k < d.z; ++k)
+        for (int j = 0; j < d.y; ++j)
+            for (int i = 0; i < d.x; ++i) f(i, j, k, grid.face_index(c, i, j, k));
+}
+
+template <class F> void for_each_cell(const Grid& grid, F&& f) {
+    for (int k = 0; k < grid.nz; ++k)
+        for (int j = 0; j < grid.ny; ++j)
+            for (int i = 0; i < grid.nx; ++i) f(i, j, k, grid.cell_index(i, j, k));
+}
+
+// The 8 nodes and trilinear weights of the §3 stencil of lattice c at grid coordinate g.
+struct Stencil {
+    int index[8];
+    double weight[8];
+};
+
+Stencil stencil(const Grid& grid, int c, const glm::dvec3& g) {
+    const glm::ivec3 n = grid.face_dims(c);
+    const glm::dvec3 off = Grid::face_offset_g(c);
+    int b[3];
+    double f[3];
+    for (int a = 0; a < 3; ++a) {
+        const double s = std::clamp(g[a] - off[a], 0.0, double(n[a] - 1));
+        // min(.., N-2) keeps the upper node inside the lattice at s = N-1 (f becomes 1).
+        b[a] = std::min(int(std::floor(s)), n[a] - 2);
+        f[a] = s - b[a];
+    }
+    Stencil st;
+    int m = 0;
+    for (int dk = 0; dk < 2; ++dk)
+        for (int dj = 0; dj < 2; ++dj)
+            for (int di = 0; di < 2; ++di, ++m) {
+                st.index[m] = grid.face_index(c, b[0] + di, b[1] + dj, b[2] + dk);
+                st.weight[m] = (di ? f[0] : 1.0 - f[0]) * (dj ? f[1] : 1.0 - f[1]) *
+                               (dk ? f[2] : 1.0 - f[2]);
+            }
+    return st;
+}
+
+bool is_fluid(const std::vector<uint8_t>& type, int cell) { return type[cell] == FLUID; }
+
+// Visits the in-domain face neighbours of cell (i,j,k) (walls are not neighbours, §4.6).
+template <class F> void for_each_neighbour(const Grid& grid, int i, int j, int k, F&& f) {
+    if (i > 0) f(grid.cell_index(i - 1, j, k));
+    if (i + 1 < grid.nx) f(grid.cell_index(i + 1, j, k));
+    if (j > 0) f(grid.cell_index(i, j - 1, k));
+    if (j + 1 < grid.ny) f(grid.cell_index(i, j + 1, k));
+    if (k > 0) f(grid.cell_index(i, j, k - 1));
+    if (k + 1 < grid.nz) f(grid.cell_index(i, j, k + 1));
+}
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+    double s = 0.0;
+    for (size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
+    return s;
+}
+
+} // namespace
+
+P2GResult p2g(const Grid& grid, const Particles& particles) {
+    P2GResult r;
+    r.momentum.assign(grid.faces(), 0.0);
+    r.weight.assign(grid.faces(), 0.0);
+    r.count.assign(grid.cells(), 0u);
+    for (size_t p = 0; p < particles.pos.size(); ++p) {
+        const glm::dvec3 g = grid.to_grid(particles.pos[p]);
+        for (int c = 0; c < 3; ++c) {
+            const Stencil st = stencil(grid, c, g);
+            for (int m = 0; m < 8; ++m) {
+                r.momentum[st.index[m]] += st.weight[m] * particles.vel[p][c];
+                r.weight[st.index[m]] += st.weight[m];
+            }
+        }
+        // Clamped so a particle exactly on the upper wall still lands in a cell.
+        glm::ivec3 cell;
+        for (int a = 0; a < 3; ++a)
+            cell[a] = std::clamp(int(std::floor(g[a])), 0, grid.cell_dims()[a] - 1);
+        ++r.count[grid.cell_index(cell.x, cell.y, cell.z)];
+    }
+    return r;
+}
+
+std::vector<uint8_t> classify(const Grid& grid, const std::vector<uint32_t>& count) {
+    std::vector<uint8_t> type(grid.cells());
+    for (int i = 0; i < grid.cells(); ++i) type[i] = count[i] > 0 ? FLUID : AIR;
+    return type;
+}
+
+GridForces grid_forces(const Grid& grid, const P2GResult& acc, glm::dvec3 gravity, double dt) {
+    GridForces f;
+    f.vel.assign(grid.faces(), 0.0);
+    f.vel_old.assign(grid.faces(), 0.0);
+    for (int c = 0; c < 3; ++c)
+        for_each_face(grid, c, [&](int i, int j, int k, int id) {
+            const double W = acc.weight[id];
+            if (!(W > 0.0)) return; // no particle reached this face: both stay 0
+            f.vel_old[id] = acc.momentum[id] / W;
+            // Walls are free-slip: normal velocity 0. vel_old keeps the P2G value so that
+            // G2P's FLIP delta (vel - vel_old) removes the particles' normal velocity there.
+            f.vel[id] = grid.is_wall_face(c, i, j, k) ? 0.0 : f.vel_old[id] + dt * gravity[c];
+        });
+    return f;
+}
+
+std::vector<double> divergence(const Grid& grid, const std::vector<uint8_t>& type,
+                               const std::vector<double>& vel) {
+    std::vector<double> div(grid.cells(), 0.0);
+    for_each_cell(grid, [&](int i, int j, int k, int id) {
+        if (!is_fluid(type, id)) return;
+        div[id] = (vel[grid.face_index(0, i + 1, j, k)] - vel[grid.face_index(0, i, j, k)]) +
+                  (vel[grid.face_index(1, i, j + 1, k)] - vel[grid.face_index(1, i, j, k)]) +
+                  (vel[grid.face_index(2, i, j, k + 1)] - vel[grid.face_index(2, i, j, k)]);
+    });
+    return div;
+}
+
+std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
+                                 const std::vector<double>& vel, double density, double dt) {
+    std::vector<double> b = divergence(grid, type, vel);
+    // Scaled so that p comes out in pascals: the update subtracts dt/(ρ dx)·Δp per face.
+    for (double& v : b) v *= -density * grid.dx / dt;
+    return b;
+}
+
+std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type,
+                              const std::vector<double>& p) {
+    std::vector<double> out(grid.cells(), 0.0);
+    for_each_cell(grid, [&](int i, int j, int k, int id) {
+        if (!is_fluid(type, id)) return;
+        double s = 0.0;
+        for_each_neighbour(grid, i, j, k, [&](int n) {
+            s += p[id] - (is_fluid(type, n) ? p[n] : 0.0); // AIR: p = 0 (free surface)
+        });
+        out[id] = s;
+    });
+    return out;
+}
+
+std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
+                           const std::vector<double>& rhs, std::vector<double> p0,
+                           int iterations, double omega) {
+    assert(p0.size() == size_t(grid.cells()));
+    for (int id = 0; id < grid.cells(); ++id)
+        if (!is_fluid(type, id)) p0[id] = 0.0;
+    std::vector<double> next = p0; // non-FLUID entries stay 0 in both buffers
+    for (int it = 0; it < iterations; ++it) {
+        for_each_cell(grid, [&](int i, int j, int k, int id) {
+            if (!is_fluid(type, id)) return;
+            int diag = 0;
+            double sum = 0.0;
+            for_each_neighbour(grid, i, j, k, [&](int n) {
+                ++diag; // AIR neighbours count in the diagonal but add p = 0
+                if (is_fluid(type, n)) sum += p0[n];
+            });
+            // diag = 0 only for a 1x1x1 grid, which the stencil does not support anyway.
+            next[id] = diag ? (1.0 - omega) * p0[id] + omega * (rhs[id] + sum) / diag : 0.0;
+        });
+        std::swap(p0, next); // ping-pong: every cell of a sweep reads the previous sweep
+    }
+    return p0;
+}
+
+std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uint8_t>& type,
+                                         const std::vector<double>& rhs) {
+    // Conjugate gradients on the FLUID cells: A is symmetric positive definite whenever a
+    // non-FLUID cell exists (each FLUID component then touches AIR, fixing the constant).
+    const int n = grid.cells();
+    std::vector<double> x(n, 0.0), r(n, 0.0);
+    for (int id = 0; id < n; ++id)
+        if (is_fluid(type, id)) r[id] = rhs[id];
+    std::vector<double> d = r;
+    double rr = dot(r, r);
+    const double tol2 = 1e-24 * rr; // (1e-12 relative)^2
+    for (int it = 0; it < 10 * n + 100 && rr > tol2 && rr > 0.0; ++it) {
+        const std::vector<double> Ad = laplacian(grid, type, d);
+        const double dAd = dot(d, Ad);
+        if (!(dAd > 0.0)) break; // singular direction (all-FLUID domain): stop, stay finite
+        const double alpha = rr / dAd;
+        for (int id = 0; id < n; ++id) {
+            x[id] += alpha * d[id];
+            r[id] -= alpha * Ad[id];
+        }
+        const double rr_new = dot(r, r);
+        const double beta = rr_new / rr;
+        rr = rr_new;
+        for (int id = 0; id < n; ++id) d[id] = r[id] + beta * d[id];
+    }
+    return x;
+}
+
+VelocityUpdate velocity_update(const Grid& grid, const std::vector<uint8_t>& type,
+                               const std::vector<double>& vel, const std::vector<double>& p,
+                               double density, double dt) {
+    VelocityUpdate out{vel, std::vector<uint8_t>(grid.faces(), 0)};
+    const double scale = dt / (density * grid.dx);
+    for (int c = 0; c < 3; ++c)
+        for_each_face(grid, c, [&](int i, int j, int k, int id) {
+            if (grid.is_wall_face(c, i, j, k)) {
+                out.vel[id] = 0.0;
+                out.valid[id] = 1;
+                return;
+            }
+            glm::ivec3 lo(i, j, k);
+            lo[c] -= 1;
+            const int a = grid.cell_index(lo.x, lo.y, lo.z), b = grid.cell_index(i, j, k);
+            if (is_fluid(type, a) || is_fluid(type, b)) {
+                const double pa = is_fluid(type, a) ? p[a] : 0.0;
+                const double pb = is_fluid(type, b) ? p[b] : 0.0;
+                out.vel[id] -= scale * (pb - pa);
+                out.valid[id] = 1;
+            } else {
+                out.vel[id] = 0.0; // no fluid on either side: filled by extrapolation
+            }
+        });
+    return out;
+}
+
+void extrapolate(const Grid& grid, VelocityUpdate& v, int layers) {
+    for (int layer = 0; layer < layers; ++layer) {
+        // Read the old mask, write a new one, so a layer grows exactly one face-step.
+        // Writing v.vel in place is safe: only faces invalid in the old mask are written and
+        // only faces valid in the old mask are read.
+        const std::vector<uint8_t> old = v.valid;
+        bool changed = false;
+        for (int c = 0; c < 3; ++c) {
+            const glm::ivec3 d = grid.face_dims(c);
+            for_each_face(grid, c, [&](int i, int j, int k, int id) {
+                if (old[id]) return;
+                double sum = 0.0;
+                int count = 0;
+                const glm::ivec3 q(i, j, k);
+                for (int a = 0; a < 3; ++a)
+                    for (int s = -1; s <= 1; s += 2) {
+                        glm::ivec3 nb = q;
+                        nb[a] += s;
+                        if (nb[a] < 0 || nb[a] >= d[a]) continue;
+                        const int nid = grid.face_index(c, nb.x, nb.y, nb.z);
+                        if (old[nid]) {
+                            sum += v.vel[nid];
+                            ++count;
+                        }
+                    }
+                if (count) {
+                    v.vel[id] = sum / count;
+                    v.valid[id] = 1;
+                    changed = true;
+                }
+            });
+        }
+        if (!changed) break;
+    }
+}
+
+glm::dvec3 interpolate(const Grid& grid, const std::vector<double>& field, glm::dvec3 world_pos) {
+    const glm::dvec3 g = grid.to_grid(world_pos);
+    glm::dvec3 out(0.0);
+    for (int c = 0; c < 3; ++c) {
+        const Stencil st = stencil(grid, c, g);
+        for (int m = 0; m < 8; ++m) out[c] += st.weight[m] * field[st.index[m]];
+    }
+    return out;
+}
+
+void g2p(const Grid& grid, Particles& particles, const std::vector<double>& vel,
+         const std::vector<double>& vel_old, double flip_ratio, double max_speed) {
+    std::vector<double> delta(vel.size());
+    for (size_t f = 0; f < vel.size(); ++f) delta[f] = vel[f] - vel_old[f];
+    for (size_t p = 0; p < particles.pos.size(); ++p) {
+        const glm::dvec3 pic = interpolate(grid, vel, particles.pos[p]);
+        const glm::dvec3 flip = particles.vel[p] + interpolate(grid, delta, particles.pos[p]);
+        glm::dvec3 v = (1.0 - flip_ratio) * pic + flip_ratio * flip;
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) v = glm::dvec3(0.0);
+        const double speed = glm::length(v);
+        if (speed > max_speed) v *= max_speed / speed;
+        particles.vel[p] = v;
+    }
+}
+
+void advect(const Grid& grid, Particles& particles, double dt) {
+    const double eps = 1e-3; // cells; same on every side so the clamp is mirror symmetric
+    const glm::dvec3 n(grid.cell_dims());
+    for (size_t p = 0; p < particles.pos.size(); ++p) {
+        glm::dvec3 g = grid.to_grid(particles.pos[p] + dt * particles.vel[p]);
+        g = glm::clamp(g, glm::dvec3(eps), n - eps);
+        particles.pos[p] = grid.to_world(g);
+    }
+}
+
+void substep(const Grid& grid, Particles& particles, SubstepState& state, glm::dvec3 gravity,
+             double dt, double density, double flip_ratio, int jacobi_iterations, double omega,
+             int extrapolation_layers, double max_speed) {
+    if (state.pressure.size() != size_t(grid.cells())) state.pressure.assign(grid.cells(), 0.0);
+    const P2GResult acc = p2g(grid, particles);                                 // 1-2
+    const GridForces forces = grid_forces(grid, acc, gravity, dt);              // 3
+    const std::vector<uint8_t> type = classify(grid, acc.count);                // 4
+    const std::vector<double> b = pressure_rhs(grid, type, forces.vel, density, dt); // 5
+    state.pressure = jacobi_iterations >= 0                                     // 6
+                         ? jacobi(grid, type, b, state.pressure, jacobi_iterations, omega)
+                         : solve_pressure_exact(grid, type, b);
+    VelocityUpdate upd = velocity_update(grid, type, forces.vel, state.pressure, density, dt); // 7
+    extrapolate(grid, upd, extrapolation_layers);                               // 8
+    g2p(grid, particles, upd.vel, forces.vel_old, flip_ratio, max_speed);        // 9
+    advect(grid, particles, dt);                                                // 10
+}
+
+} // namespace pf::ref

@@ -1,0 +1,134 @@
+// Double-precision CPU reference of one pflip substep (docs/design.md §2-4).
+//
+// Every pass is a plain function over std::vector storage so tests can run the GPU kernels
+// and this reference on the same small inputs and compare pass by pass. The reference uses
+// exact (unquantised) P2G sums; everything else follows the contract literally.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace pf::ref {
+
+// Cell grid and MAC face lattices (design.md §2). Requires nx, ny, nz >= 2: the clamped
+// stencil (§3) needs at least two samples per axis on every lattice.
+struct Grid {
+    int nx = 0, ny = 0, nz = 0;
+    double dx = 1.0;
+    glm::dvec3 origin{0.0};
+
+    int cells() const { return nx * ny * nz; }
+    glm::ivec3 cell_dims() const { return {nx, ny, nz}; }
+    // Sample counts N_c of lattice c (0 = u, 1 = v, 2 = w).
+    glm::ivec3 face_dims(int c) const { return {nx + (c == 0), ny + (c == 1), nz + (c == 2)}; }
+    int face_count(int c) const { const glm::ivec3 d = face_dims(c); return d.x * d.y * d.z; }
+    int faces() const { return face_count(0) + face_count(1) + face_count(2); }
+    int face_offset(int c) const {
+        return c == 0 ? 0 : c == 1 ? face_count(0) : face_count(0) + face_count(1);
+    }
+    int face_index(int c, int i, int j, int k) const {
+        const glm::ivec3 d = face_dims(c);
+        return face_offset(c) + i + d.x * (j + d.y * k);
+    }
+    int cell_index(int i, int j, int k) const { return i + nx * (j + ny * k); }
+    // Lattice offset off_c: u (0,½,½), v (½,0,½), w (½,½,0).
+    static glm::dvec3 face_offset_g(int c) { glm::dvec3 o(0.5); o[c] = 0.0; return o; }
+    // Boundary faces of the domain (i = 0 or i = nx for u, likewise v, w): solid, free-slip.
+    bool is_wall_face(int c, int i, int j, int k) const {
+        const int a = glm::ivec3(i, j, k)[c];
+        return a == 0 || a == cell_dims()[c];
+    }
+    glm::dvec3 to_grid(const glm::dvec3& x) const { return (x - origin) / dx; }
+    glm::dvec3 to_world(const glm::dvec3& g) const { return origin + g * dx; }
+};
+
+enum CellType : uint8_t { AIR = 0, FLUID = 1, SOLID = 2 };
+
+struct Particles {
+    std::vector<glm::dvec3> pos, vel;
+};
+
+// Face fields: one std::vector<double> of size grid.faces(), u then v then w.
+
+// §4.2: momentum = Σ w·v_c, weight = Σ w over the §3 stencil, count per particle cell
+// clamp(floor(g), 0, n-1). Exact sums (the GPU's are quantised by S_m, S_w).
+struct P2GResult {
+    std::vector<double> momentum, weight;
+    std::vector<uint32_t> count;
+};
+P2GResult p2g(const Grid& grid, const Particles& particles);
+
+// §4.4: FLUID if count > 0, else AIR.
+std::vector<uint8_t> classify(const Grid& grid, const std::vector<uint32_t>& count);
+
+// §4.3: vel_old = W > 0 ? M / W : 0; vel = W > 0 ? vel_old + dt·g_c : 0; wall faces vel = 0
+// (vel_old keeps the P2G value there).
+struct GridForces {
+    std::vector<double> vel, vel_old;
+};
+GridForces grid_forces(const Grid& grid, const P2GResult& p2g_result, glm::dvec3 gravity,
+                       double dt);
+
+// §4.5: per cell Σ_c (u_c[+] - u_c[-]) in m/s (not divided by dx); 0 for non-FLUID cells.
+std::vector<double> divergence(const Grid& grid, const std::vector<uint8_t>& type,
+                               const std::vector<double>& vel);
+
+// §4.5: b = -div·ρ·dx/dt for FLUID cells, 0 elsewhere.
+std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
+                                 const std::vector<double>& vel, double density, double dt);
+
+// §4.6 operator: (A p)_i = Σ_{j∈N(i)} (p_i - p_j) for FLUID i, with N(i) the in-domain
+// neighbours (walls excluded) and p_j = 0 for non-FLUID j; 0 for non-FLUID i. The pressure
+// system is A p = b; tests use b - A p as the residual.
+std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type,
+                              const std::vector<double>& p);
+
+// §4.6: `iterations` damped (ω) Jacobi sweeps, ping-pong. p0 entries of non-FLUID cells are
+// treated as 0; the result is 0 in non-FLUID cells.
+std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
+                           const std::vector<double>& rhs, std::vector<double> p0,
+                           int iterations, double omega);
+
+// Converged solve of the same system (conjugate gradients to ‖b - A p‖ <= 1e-12·‖b‖).
+std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uint8_t>& type,
+                                         const std::vector<double>& rhs);
+
+// §4.7: wall faces 0 and valid; interior faces with a FLUID side get the pressure gradient
+// and are valid; faces between two non-FLUID cells become 0 and invalid.
+struct VelocityUpdate {
+    std::vector<double> vel;
+    std::vector<uint8_t> valid;
+};
+VelocityUpdate velocity_update(const Grid& grid, const std::vector<uint8_t>& type,
+                               const std::vector<double>& vel, const std::vector<double>& p,
+                               double density, double dt);
+
+// §4.8: `layers` rounds; in each, an invalid face with >= 1 valid lattice neighbour (old mask)
+// takes the average of those neighbours and is valid from the next round on.
+void extrapolate(const Grid& grid, VelocityUpdate& v, int layers);
+
+// §3: clamped trilinear interpolation of the three components of a face field.
+glm::dvec3 interpolate(const Grid& grid, const std::vector<double>& field, glm::dvec3 world_pos);
+
+// §4.9: v = (1-r)·I(u) + r·(v_p + I(u - u_old)); non-finite → 0; |v| > max_speed → scaled.
+void g2p(const Grid& grid, Particles& particles, const std::vector<double>& vel,
+         const std::vector<double>& vel_old, double flip_ratio, double max_speed);
+
+// §4.10: x += dt·v, then g = clamp(g, ε, n - ε), ε = 1e-3 cells.
+void advect(const Grid& grid, Particles& particles, double dt);
+
+// Pressure (Pa) per cell, the warm start of the next substep's solve. Resized to
+// grid.cells() zeros when its size does not match.
+struct SubstepState {
+    std::vector<double> pressure;
+};
+
+// Steps 1-10 of §4 in order. jacobi_iterations < 0 replaces the Jacobi solve by
+// solve_pressure_exact (a reference-only switch for tests that need a converged pressure).
+void substep(const Grid& grid, Particles& particles, SubstepState& state, glm::dvec3 gravity,
+             double dt, double density, double flip_ratio, int jacobi_iterations, double omega,
+             int extrapolation_layers, double max_speed);
+
+} // namespace pf::ref

@@ -1,0 +1,46 @@
+// Shared pieces of the GPU tests: a fixture that skips nothing — it fails if no GL 4.3
+// context can be made — and helpers to create simulations and read particles back.
+#pragma once
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "pf/pf.h"
+#include "support/test_context.h"
+
+namespace pf::test {
+
+struct SimDeleter {
+    void operator()(pf_sim* s) const { pf_destroy(s); }
+};
+using SimPtr = std::unique_ptr<pf_sim, SimDeleter>;
+
+class GpuTest : public ::testing::Test {
+protected:
+    void SetUp() override { ASSERT_TRUE(ensure_context()) << "no OpenGL 4.3 context through EGL"; }
+
+    SimPtr create(const pf_sim_desc& desc) {
+        pf_sim* s = nullptr;
+        const pf_result r = pf_create(&desc, &s);
+        EXPECT_EQ(r, PF_OK) << last_log();
+        return SimPtr(s);
+    }
+};
+
+struct ParticleState {
+    std::vector<float> pos, vel;  // 3 floats per particle
+    size_t count() const { return pos.size() / 3; }
+};
+
+inline ParticleState read_all(pf_sim* sim) {
+    pf_stats st{};
+    pf_get_stats(sim, &st);
+    ParticleState p;
+    p.pos.resize(size_t(st.particle_count) * 3);
+    p.vel.resize(size_t(st.particle_count) * 3);
+    EXPECT_EQ(pf_read_particles(sim, 0, st.particle_count, p.pos.data(), p.vel.data()), PF_OK);
+    return p;
+}
+
+}  // namespace pf::test
