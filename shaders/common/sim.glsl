@@ -70,4 +70,15 @@ float stencil_weight(vec3 frac, ivec3 d) {
     return w.x * w.y * w.z;
 }
 
+// The 6 face neighbours, in -/+ pairs per axis (neighbour n lies on axis n / 2).
+const ivec3 kNeighbours[6] = ivec3[6](ivec3(-1, 0, 0), ivec3(1, 0, 0), ivec3(0, -1, 0),
+                                      ivec3(0, 1, 0), ivec3(0, 0, -1), ivec3(0, 0, 1));
+
 ivec3 stencil_offset(int n) { return ivec3(n & 1, (n >> 1) & 1, (n >> 2) & 1); }
+
+// Sum of the 8 stencil terms as a tree: x pairs, then y, then z. Each level adds two
+// terms that swap under a mirror of that axis, and float addition is commutative, so
+// mirrored inputs give bit-mirrored sums (a left-to-right sum would not).
+float mirror_sum(float t[8]) {
+    return ((t[0] + t[1]) + (t[2] + t[3])) + ((t[4] + t[5]) + (t[6] + t[7]));
+}

@@ -8,9 +8,6 @@ layout(std430, binding = PF_SLOT_FACE_VEL) buffer FaceVel { float face_vel[]; };
 layout(std430, binding = PF_SLOT_FACE_VALID) readonly buffer Valid { uint valid_in[]; };
 layout(std430, binding = PF_SLOT_FACE_VALID_OUT) writeonly buffer ValidOut { uint valid_out[]; };
 
-const ivec3 kNeighbours[6] = ivec3[6](ivec3(-1, 0, 0), ivec3(1, 0, 0), ivec3(0, -1, 0),
-                                      ivec3(0, 1, 0), ivec3(0, 0, -1), ivec3(0, 0, 1));
-
 void main() {
     int id = int(flat_id());
     if (id >= sim.face_count.w) return;
@@ -22,17 +19,18 @@ void main() {
     ivec3 f;
     decode_face(id, axis, f);
     ivec3 dims = face_dims(axis);
-    float sum = 0.0;
+    vec3 pair_sum = vec3(0.0);  // per axis pair first: mirror-exact (see mirror_sum)
     float count = 0.0;
     for (int n = 0; n < 6; ++n) {
         ivec3 nb = f + kNeighbours[n];
         if (any(lessThan(nb, ivec3(0))) || any(greaterThanEqual(nb, dims))) continue;
         int nid = face_index(axis, nb);
         if (valid_in[nid] != 0u) {
-            sum += face_vel[nid];
+            pair_sum[n / 2] += face_vel[nid];
             count += 1.0;
         }
     }
+    float sum = (pair_sum.x + pair_sum.y) + pair_sum.z;
     if (count > 0.0) face_vel[id] = sum / count;
     valid_out[id] = count > 0.0 ? 1u : 0u;
 }

@@ -20,16 +20,22 @@ void main() {
     vec3 delta = vec3(0.0);
     for (int axis = 0; axis < 3; ++axis) {
         Stencil st = face_stencil(axis, g);
+        float pic[8];
+        float dif[8];
         for (int n = 0; n < 8; ++n) {
             ivec3 d = stencil_offset(n);
             float w = stencil_weight(st.frac, d);
             int face = face_index(axis, st.base + d);
             float u = face_vel[face];
-            v_pic[axis] += w * u;
-#if !PF_PIC_ONLY
-            delta[axis] += w * (u - face_vel_old[face]);
+            pic[n] = w * u;
+#if PF_PIC_ONLY
+            dif[n] = 0.0;
+#else
+            dif[n] = w * (u - face_vel_old[face]);
 #endif
         }
+        v_pic[axis] = mirror_sum(pic);
+        delta[axis] = mirror_sum(dif);
     }
 #if PF_PIC_ONLY
     vec3 v = v_pic;

@@ -8,9 +8,6 @@ layout(std430, binding = PF_SLOT_RHS) readonly buffer Rhs { float rhs[]; };
 layout(std430, binding = PF_SLOT_PRESSURE) readonly buffer Pressure { float p_in[]; };
 layout(std430, binding = PF_SLOT_PRESSURE_OUT) writeonly buffer PressureOut { float p_out[]; };
 
-const ivec3 kNeighbours[6] = ivec3[6](ivec3(-1, 0, 0), ivec3(1, 0, 0), ivec3(0, -1, 0),
-                                      ivec3(0, 1, 0), ivec3(0, 0, -1), ivec3(0, 0, 1));
-
 void main() {
     int c = int(flat_id());
     if (c >= sim.grid.w) return;
@@ -19,7 +16,8 @@ void main() {
         return;
     }
     ivec3 ijk = ivec3(c % sim.grid.x, (c / sim.grid.x) % sim.grid.y, c / (sim.grid.x * sim.grid.y));
-    float sum = 0.0;
+    // Neighbour pressures summed per axis pair first, so mirrored inputs sum identically.
+    vec3 pair_sum = vec3(0.0);
     float diag = 0.0;
     for (int n = 0; n < 6; ++n) {
         ivec3 nb = ijk + kNeighbours[n];
@@ -28,8 +26,9 @@ void main() {
         uint t = cell_type[nc];
         if (t == PF_CELL_SOLID) continue;
         diag += 1.0;
-        if (t == PF_CELL_FLUID) sum += p_in[nc];
+        if (t == PF_CELL_FLUID) pair_sum[n / 2] += p_in[nc];
     }
+    float sum = (pair_sum.x + pair_sum.y) + pair_sum.z;
     float omega = sim.solve.y;
     p_out[c] = (1.0 - omega) * p_in[c] + omega * (rhs[c] + sum) / diag;
 }
