@@ -73,15 +73,16 @@ typedef void (*pf_gl_proc)(void);
 /** The engine's GL loader: returns the entry point called name, or NULL. */
 typedef pf_gl_proc (*pf_gl_get_proc_address_fn)(const char* name);
 
-/** Parameters that may change between steps (pf_set_params). */
+/** Parameters that may change between steps (pf_set_params). Fields marked "0 = default"
+ *  take their default when zero; gravity and flip_ratio take zero literally. */
 typedef struct pf_sim_params {
     float gravity[3];             /**< body acceleration in m/s^2; default (0, -9.81, 0) */
     float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 */
-    uint32_t pressure_iterations; /**< Jacobi iterations per substep, 1..10000; default 40 */
-    float jacobi_omega;           /**< Jacobi relaxation weight in (0, 1]; default 1 (the original) */
-    float cfl;                    /**< max cells a particle may cross per substep, (0, 16]; default 1 */
-    uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; default 8 */
-    uint32_t extrapolation_layers;/**< face layers velocity is extended into air, 1..16; default 2 */
+    uint32_t pressure_iterations; /**< Jacobi iterations per substep, 1..10000; 0 = default 40 */
+    float jacobi_omega;           /**< Jacobi relaxation weight in (0, 1]; 0 = default 1 (the original) */
+    float cfl;                    /**< max cells a particle may cross per substep, (0, 16]; 0 = default 1 */
+    uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; 0 = default 8 */
+    uint32_t extrapolation_layers;/**< face layers velocity is extended into air, 1..16; 0 = default 2 */
 } pf_sim_params;
 
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
@@ -90,9 +91,10 @@ typedef struct pf_sim_desc {
     float cell_size;              /**< cell edge in metres, > 0; default 0.05 */
     float origin[3];              /**< world position of the grid's minimum corner; default 0 */
     uint32_t max_particles;       /**< particle capacity, 1..2^28; default 262144 */
-    float max_speed;              /**< speed bound in m/s used to size fixed-point P2G; default 100 */
-    float density;                /**< liquid density in kg/m^3 (pressure units); default 1000 */
-    uint32_t fill_particles_per_cell; /**< pf_fill_box density: 1, 8, 27 or 64; default 8 */
+    float max_speed;              /**< speed bound in m/s (particles are clamped to it; sizes the
+                                       fixed-point P2G range); 0 = default 100 */
+    float density;                /**< liquid density in kg/m^3 (pressure units); 0 = default 1000 */
+    uint32_t fill_particles_per_cell; /**< pf_fill_box density: 1, 8, 27 or 64; 0 = default 8 */
     float fill_jitter;            /**< pf_fill_box jitter, fraction of sub-cell spacing 0..1; default 0.8 */
     uint32_t seed;                /**< seed of pf_fill_box jitter (deterministic); default 1 */
     pf_sim_params params;         /**< step parameters */
@@ -137,15 +139,19 @@ typedef struct pf_stats {
     float max_speed;                  /**< largest particle speed of the latest GPU readback, m/s */
     float cpu_ms;                     /**< host time spent inside the last pf_step */
     uint64_t gpu_step;                /**< which step gpu_ms belongs to (0: none measured yet) */
+    uint32_t gpu_substeps;            /**< substeps of that step */
     float gpu_ms[PF_PASS_COUNT];      /**< GPU ms per pass in that step, summed over substeps */
     float gpu_total_ms;               /**< sum of gpu_ms */
-    uint32_t dispatches[PF_PASS_COUNT]; /**< compute dispatches per pass in the last pf_step */
+    uint32_t dispatches[PF_PASS_COUNT]; /**< compute dispatches per pass in the last pf_step
+                                             (0 for a pass that did not run) */
 } pf_stats;
 
-/** The simulation's particle buffers, for engines that draw particles themselves. */
+/** The simulation's particle buffers, for engines that draw particles themselves. pf_step
+ *  ends with glMemoryBarrier(VERTEX_ATTRIB_ARRAY | SHADER_STORAGE | BUFFER_UPDATE), so
+ *  they may be read as vertex attributes, storage buffers or copied right after it. */
 typedef struct pf_gl_buffers {
-    uint32_t positions;           /**< GL buffer: vec4 per particle, xyz = world position */
-    uint32_t velocities;          /**< GL buffer: vec4 per particle, xyz = velocity in m/s */
+    uint32_t positions;           /**< GL buffer: vec4 per particle, xyz = world position, w = 0 */
+    uint32_t velocities;          /**< GL buffer: vec4 per particle, xyz = velocity in m/s, w = 0 */
     uint32_t count;               /**< live particles (the first count entries) */
     uint32_t stride;              /**< bytes between particles: 16 */
 } pf_gl_buffers;

@@ -8,7 +8,6 @@
 #include "api/handle.h"
 #include "api/validate.h"
 #include "pf/pf.h"
-#include "sim/particle_fill.h"
 
 namespace {
 const pf::Log kSilent{};
@@ -133,8 +132,6 @@ pf_result pf_fill_box(pf_sim* sim, const float lo[3], const float hi[3], const f
         }
         if (vel && std::sqrt(double(vel[0]) * vel[0] + double(vel[1]) * vel[1] + double(vel[2]) * vel[2]) > s.desc().max_speed)
             return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_fill_box: vel exceeds desc.max_speed");
-        if (pf::FillLattice(s.desc(), lo, hi).count() == 0)
-            return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_fill_box: the box is empty or does not overlap the domain");
         return s.fill_box(lo, hi, vel);
     });
 }

@@ -2,7 +2,17 @@
 
 namespace pf::gl {
 
-StateGuard::StateGuard(const Api& gl) : gl_(gl) {
+namespace {
+// GL 4.4 enums; the library's loader is generated for 4.3.
+constexpr GLenum kQueryBuffer = 0x9192;
+constexpr GLenum kQueryBufferBinding = 0x9193;
+}  // namespace
+
+StateGuard::StateGuard(const Api& gl, const Options& options) : gl_(gl), options_(options) {
+    if (options_.query_buffer) {
+        gl_.GetIntegerv(kQueryBufferBinding, &query_buffer_);
+        if (query_buffer_) gl_.BindBuffer(kQueryBuffer, 0);
+    }
     gl_.GetIntegerv(GL_CURRENT_PROGRAM, &program_);
     for (GLuint i = 0; i < PF_SLOT_COUNT; ++i) {
         save_indexed(GL_SHADER_STORAGE_BUFFER_BINDING, GL_SHADER_STORAGE_BUFFER_START,
@@ -19,6 +29,7 @@ StateGuard::~StateGuard() {
     restore_indexed(GL_UNIFORM_BUFFER, PF_UBO_SIM, uniform_);
     // Indexed binds also set the generic binding point, so generic bindings go last.
     for (int i = 0; i < kGenericCount; ++i) gl_.BindBuffer(kGeneric[i], static_cast<GLuint>(generic_[i]));
+    if (query_buffer_) gl_.BindBuffer(kQueryBuffer, static_cast<GLuint>(query_buffer_));
 }
 
 void StateGuard::save_indexed(GLenum binding, GLenum start, GLenum size, GLuint index, Indexed& out) {

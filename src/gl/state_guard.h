@@ -1,6 +1,7 @@
 // Saves the GL state pflip's calls touch and restores it on scope exit, so an engine's
 // bindings survive every pf_* call: current program, indexed storage/uniform bindings the
-// kernels use, and the generic buffer bindings used for uploads and readbacks.
+// kernels use, the generic buffer bindings used for uploads and readbacks, and (GL 4.4+)
+// the query buffer, which is unbound meanwhile so query results land in host memory.
 #pragma once
 #include <array>
 
@@ -11,7 +12,10 @@ namespace pf::gl {
 
 class StateGuard {
 public:
-    explicit StateGuard(const Api& gl);
+    struct Options {
+        bool query_buffer = false;  // GL >= 4.4: save GL_QUERY_BUFFER and unbind it meanwhile
+    };
+    StateGuard(const Api& gl, const Options& options);
     ~StateGuard();
     StateGuard(const StateGuard&) = delete;
     StateGuard& operator=(const StateGuard&) = delete;
@@ -34,7 +38,9 @@ private:
     void restore_indexed(GLenum target, GLuint index, const Indexed& s);
 
     const Api& gl_;
+    Options options_;
     GLint program_ = 0;
+    GLint query_buffer_ = 0;
     std::array<Indexed, PF_SLOT_COUNT> storage_{};
     Indexed uniform_{};
     std::array<GLint, kGenericCount> generic_{};

@@ -18,6 +18,7 @@ public:
 
     struct Result {
         uint64_t step = 0;  // 0: nothing measured yet
+        uint32_t substeps = 0;
         std::array<float, PassCount> ms{};
     };
 
@@ -36,12 +37,13 @@ public:
 
     // Starts recording step `step`. If the slot's previous step is still in flight, that
     // step's timing is dropped rather than waited for.
-    void begin_step(uint64_t step) {
+    void begin_step(uint64_t step, uint32_t substeps) {
         poll();
         current_ = nullptr;
         if (!supported_) return;
         Slot& s = slots_[step % kSlots];
         s.step = step;
+        s.substeps = substeps;
         s.used = 0;
         s.passes.clear();
         s.pending = true;
@@ -67,6 +69,7 @@ public:
             if (s.step < latest_.step) continue;
             Result r;
             r.step = s.step;
+            r.substeps = s.substeps;
             for (size_t p = 0; p < s.passes.size(); ++p) {
                 GLuint64 t0 = 0, t1 = 0;
                 gl_.GetQueryObjectui64v(s.queries[2 * p], GL_QUERY_RESULT, &t0);
@@ -82,6 +85,7 @@ public:
 private:
     struct Slot {
         uint64_t step = 0;
+        uint32_t substeps = 0;
         bool pending = false;
         size_t used = 0;
         std::vector<GLuint> queries;

@@ -43,9 +43,9 @@ uint64_t FillLattice::count() const {
     return n;
 }
 
-template <typename Fn>
-void FillLattice::for_each(uint32_t seed, uint32_t call, Fn&& fn) const {
+void FillLattice::generate(uint32_t seed, uint32_t call, std::vector<float>& xyz) const {
     if (empty_) return;
+    xyz.reserve(xyz.size() + size_t(count()) * 3);
     const double spacing = double(desc_.cell_size) / m_;
     const double jitter = desc_.fill_jitter;
     const uint32_t stream = hash32(seed ^ hash32(call + 0x9e3779b9U));
@@ -54,23 +54,16 @@ void FillLattice::for_each(uint32_t seed, uint32_t call, Fn&& fn) const {
             for (int64_t i = first_[0]; i < last_[0]; ++i) {
                 const int64_t s[3] = {i, j, k};
                 uint32_t h = hash32(stream ^ hash32(uint32_t(i) ^ hash32(uint32_t(j) ^ hash32(uint32_t(k)))));
-                float p[3];
                 for (int a = 0; a < 3; ++a) {
                     h = hash32(h + uint32_t(a));
                     // Jitter stays within the sample's own sub-cell, so the sample never
                     // leaves [lo, hi] by more than half a sub-cell; clamp the rest.
-                    double x = desc_.origin[a] + (double(s[a]) + 0.5 + jitter * (unit(h) - 0.5)) * spacing;
-                    p[a] = float(std::min(std::max(x, lo_[a]), hi_[a]));
+                    const double x = desc_.origin[a] + (double(s[a]) + 0.5 + jitter * (unit(h) - 0.5)) * spacing;
+                    xyz.push_back(float(std::min(std::max(x, lo_[a]), hi_[a])));
                 }
-                fn(p);
             }
         }
     }
-}
-
-void FillLattice::generate(uint32_t seed, uint32_t call, std::vector<float>& xyz) const {
-    xyz.reserve(xyz.size() + size_t(count()) * 3);
-    for_each(seed, call, [&](const float p[3]) { xyz.insert(xyz.end(), p, p + 3); });
 }
 
 }  // namespace pf

@@ -18,9 +18,6 @@ public:
     void generate(uint32_t seed, uint32_t call, std::vector<float>& xyz) const;
 
 private:
-    template <typename Fn>
-    void for_each(uint32_t seed, uint32_t call, Fn&& fn) const;
-
     const pf_sim_desc& desc_;
     double lo_[3], hi_[3];
     int64_t first_[3] = {}, last_[3] = {};  // sample index range per axis (inclusive, exclusive)

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "common/slots.h"
+#include "gl/entry_points.h"
 #include "gl/state_guard.h"
 #include "sim/particle_fill.h"
 
@@ -63,6 +64,13 @@ pf_result Simulation::init() {
         return log_.error(PF_ERROR_GL_UNSUPPORTED, "pf_create: OpenGL 4.3 core is required, the current context is " +
                                                        std::to_string(major) + "." + std::to_string(minor));
     }
+    if (const char* missing = gl::first_missing_entry_point(gl_)) {
+        gl_ = gl::Api{};
+        return log_.error(PF_ERROR_GL_UNSUPPORTED,
+                          std::string("pf_create: the GL loader returned no address for ") + missing);
+    }
+    // GL 4.4 added GL_QUERY_BUFFER, which redirects query results: the state guard parks it.
+    gl_state_.query_buffer = major > 4 || minor >= 4;
     // A GL error the engine left pending would be mistaken for ours below.
     if (GLenum pending = gl_.GetError(); pending != GL_NO_ERROR) {
         log_.warning("pf_create: a GL error (0x" + std::to_string(pending) + ") was pending before the call; it was consumed");
@@ -90,7 +98,7 @@ pf_result Simulation::init() {
                                                  std::to_string(max_block) + "); lower max_particles or the grid size");
     }
 
-    gl::StateGuard guard(gl_);
+    gl::StateGuard guard(gl_, gl_state_);
     const size_t np = desc_.max_particles;
     pos_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW);
     vel_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW);
@@ -266,13 +274,13 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
 
 pf_result Simulation::step(float frame_dt) {
     const auto t0 = std::chrono::steady_clock::now();
-    gl::StateGuard guard(gl_);
+    gl::StateGuard guard(gl_, gl_state_);
     bool clamped = false;
     const uint32_t substeps = substeps_for(frame_dt, &clamped);
     if (clamped) flags_ |= PF_FLAG_SUBSTEPS_CLAMPED;
     ++steps_;
     dispatches_ = {};
-    timers_->begin_step(steps_);
+    timers_->begin_step(steps_, substeps);
 
     const uint32_t zero[PF_STATUS_WORDS] = {};
     status_.upload(0, sizeof(zero), zero);
@@ -297,9 +305,9 @@ pf_result Simulation::step(float frame_dt) {
 }
 
 pf_result Simulation::run_substep_for_test(float dt) {
-    gl::StateGuard guard(gl_);
+    gl::StateGuard guard(gl_, gl_state_);
     ++steps_;
-    timers_->begin_step(steps_);
+    timers_->begin_step(steps_, 1);
     upload_uniforms(dt);
     run_substep();
     gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
@@ -315,7 +323,7 @@ void Simulation::poll_status() const {
         fences_[s] = nullptr;
         uint32_t words[PF_STATUS_WORDS] = {};
         {
-            gl::StateGuard guard(gl_);
+            gl::StateGuard guard(gl_, gl_state_);
             readback_[s].download(0, sizeof(words), words);
         }
         flags_ |= words[PF_STATUS_FLAGS];
@@ -339,7 +347,7 @@ pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t
         fastest = std::max(fastest, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
     }
     {
-        gl::StateGuard guard(gl_);
+        gl::StateGuard guard(gl_, gl_state_);
         pos_.upload(size_t(particle_count_) * 16, size_t(n) * 16, pos4.data());
         vel_.upload(size_t(particle_count_) * 16, size_t(n) * 16, vel4.data());
     }
@@ -352,6 +360,7 @@ pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t
 pf_result Simulation::fill_box(const float lo[3], const float hi[3], const float vel[3]) {
     FillLattice lattice{desc_, lo, hi};
     const uint64_t n = lattice.count();
+    if (n == 0) return log_.error(PF_ERROR_INVALID_ARGUMENT, "pf_fill_box: the box is empty or does not overlap the domain");
     if (uint64_t(particle_count_) + n > desc_.max_particles) {
         return log_.error(PF_ERROR_CAPACITY, "pf_fill_box: the box holds " + std::to_string(n) +
                                                  " particles but only " +
@@ -370,7 +379,7 @@ pf_result Simulation::fill_box(const float lo[3], const float hi[3], const float
 }
 
 pf_result Simulation::clear_particles() {
-    gl::StateGuard guard(gl_);
+    gl::StateGuard guard(gl_, gl_state_);
     particle_count_ = 0;
     fill(pressure_[0], uint32_t(cells_), 0u, PF_PASS_CLEAR);
     pressure_current_ = 0;
@@ -383,7 +392,7 @@ pf_result Simulation::set_params(const pf_sim_params& params) {
     if (params.flip_ratio > 0.0f || desc_.params.flip_ratio > 0.0f) {
         const gl::ProgramId g2p = params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
         std::string error;
-        gl::StateGuard guard(gl_);
+        gl::StateGuard guard(gl_, gl_state_);
         if (!programs_->get(g2p, error)) return log_.error(PF_ERROR_SHADER_COMPILE, "pf_set_params: " + error);
     }
     desc_.params = params;
@@ -392,7 +401,7 @@ pf_result Simulation::set_params(const pf_sim_params& params) {
 
 pf_result Simulation::read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const {
     std::vector<float> tmp(size_t(count) * 4);
-    gl::StateGuard guard(gl_);
+    gl::StateGuard guard(gl_, gl_state_);
     gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     const std::pair<const gl::Buffer*, float*> outs[] = {{&pos_, xyz}, {&vel_, vel}};
     for (const auto& [buffer, out] : outs) {
@@ -413,6 +422,7 @@ void Simulation::gl_buffers(pf_gl_buffers& out) const {
 }
 
 void Simulation::stats(pf_stats& out) const {
+    gl::StateGuard guard(gl_, gl_state_);
     poll_status();
     timers_->poll();
     out = pf_stats{};
@@ -425,6 +435,7 @@ void Simulation::stats(pf_stats& out) const {
     out.cpu_ms = last_cpu_ms_;
     const auto& r = timers_->latest();
     out.gpu_step = r.step;
+    out.gpu_substeps = r.substeps;
     for (int p = 0; p < PF_PASS_COUNT; ++p) {
         out.gpu_ms[p] = r.ms[p];
         out.gpu_total_ms += r.ms[p];
@@ -446,7 +457,7 @@ std::vector<uint32_t> Simulation::read_grid(GridBuffer which) const {
         case GridBuffer::status: b = &status_; break;
     }
     std::vector<uint32_t> words(b->bytes() / 4);
-    gl::StateGuard guard(gl_);
+    gl::StateGuard guard(gl_, gl_state_);
     gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     b->download(0, b->bytes(), words.data());
     return words;

@@ -10,6 +10,7 @@
 #include "gl/buffer.h"
 #include "gl/gl.h"
 #include "gl/program.h"
+#include "gl/state_guard.h"
 #include "gl/timer_ring.h"
 #include "pf/pf.h"
 #include "sim/sim_uniforms.h"
@@ -61,6 +62,7 @@ private:
     void poll_status() const;
 
     gl::Api gl_{};
+    gl::StateGuard::Options gl_state_{};
     pf_sim_desc desc_;
     Log log_;
     std::unique_ptr<gl::ProgramCache> programs_;

@@ -204,3 +204,570 @@ protected:
     }
 };
 
+
+TEST_F(CreateValidation, NullDescOrOut) {
+    alignas(16) static unsigned char sentinel_bytes[16];
+    pf_sim* const sentinel = reinterpret_cast<pf_sim*>(sentinel_bytes);
+    pf_sim* s = sentinel;
+    // No desc means no logger to report through: only the code can be checked.
+    EXPECT_EQ(pf_create(nullptr, &s), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(s, sentinel);
+    EXPECT_EQ(pf_create(nullptr, nullptr), PF_ERROR_INVALID_ARGUMENT);
+    const pf_sim_desc d = test_desc(8, 8, 8);
+    EXPECT_REJECTED(pf_create(&d, nullptr), PF_ERROR_INVALID_ARGUMENT, "pf_create", "out");
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    pf_destroy(nullptr);  // ignored, must not crash
+}
+
+TEST_F(CreateValidation, RejectsBadDescFields) {
+    struct Case {
+        const char* name;
+        const char* field;
+        std::function<void(pf_sim_desc&)> apply;
+    };
+    const std::vector<Case> cases = {
+        {"gl_get_proc_address NULL", "gl_get_proc_address", [](pf_sim_desc& d) { d.gl_get_proc_address = nullptr; }},
+        {"grid_size[0] 0", "grid_size", [](pf_sim_desc& d) { d.grid_size[0] = 0; }},
+        {"grid_size[1] 0", "grid_size", [](pf_sim_desc& d) { d.grid_size[1] = 0; }},
+        {"grid_size[2] 0", "grid_size", [](pf_sim_desc& d) { d.grid_size[2] = 0; }},
+        {"grid_size[0] 1", "grid_size", [](pf_sim_desc& d) { d.grid_size[0] = 1; }},
+        {"grid_size[1] 1", "grid_size", [](pf_sim_desc& d) { d.grid_size[1] = 1; }},
+        {"grid_size[2] 1", "grid_size", [](pf_sim_desc& d) { d.grid_size[2] = 1; }},
+        {"grid_size[0] 1025", "grid_size", [](pf_sim_desc& d) { d.grid_size[0] = 1025; }},
+        {"grid_size[1] 1025", "grid_size", [](pf_sim_desc& d) { d.grid_size[1] = 1025; }},
+        {"grid_size[2] 1025", "grid_size", [](pf_sim_desc& d) { d.grid_size[2] = 1025; }},
+        {"grid_size UINT32_MAX", "grid_size", [](pf_sim_desc& d) { d.grid_size[2] = 0xffffffffu; }},
+        {"1024x1024x65 cells (> 2^26)", "grid_size",
+         [](pf_sim_desc& d) { d.grid_size[0] = 1024, d.grid_size[1] = 1024, d.grid_size[2] = 65; }},
+        {"1024^3 cells", "grid_size", [](pf_sim_desc& d) { d.grid_size[0] = d.grid_size[1] = d.grid_size[2] = 1024; }},
+        {"cell_size 0", "cell_size", [](pf_sim_desc& d) { d.cell_size = 0.0f; }},
+        {"cell_size -0.1", "cell_size", [](pf_sim_desc& d) { d.cell_size = -0.1f; }},
+        {"cell_size NaN", "cell_size", [](pf_sim_desc& d) { d.cell_size = kNaN; }},
+        {"cell_size +Inf", "cell_size", [](pf_sim_desc& d) { d.cell_size = kInf; }},
+        {"cell_size -Inf", "cell_size", [](pf_sim_desc& d) { d.cell_size = -kInf; }},
+        {"origin[0] NaN", "origin", [](pf_sim_desc& d) { d.origin[0] = kNaN; }},
+        {"origin[1] +Inf", "origin", [](pf_sim_desc& d) { d.origin[1] = kInf; }},
+        {"origin[2] NaN", "origin", [](pf_sim_desc& d) { d.origin[2] = kNaN; }},
+        {"max_particles 0", "max_particles", [](pf_sim_desc& d) { d.max_particles = 0; }},
+        {"max_particles 2^28+1", "max_particles", [](pf_sim_desc& d) { d.max_particles = (1u << 28) + 1; }},
+        {"max_particles UINT32_MAX", "max_particles", [](pf_sim_desc& d) { d.max_particles = 0xffffffffu; }},
+        {"max_speed -1", "max_speed", [](pf_sim_desc& d) { d.max_speed = -1.0f; }},
+        {"max_speed NaN", "max_speed", [](pf_sim_desc& d) { d.max_speed = kNaN; }},
+        {"max_speed +Inf", "max_speed", [](pf_sim_desc& d) { d.max_speed = kInf; }},
+        {"density -1000", "density", [](pf_sim_desc& d) { d.density = -1000.0f; }},
+        {"density NaN", "density", [](pf_sim_desc& d) { d.density = kNaN; }},
+        {"density +Inf", "density", [](pf_sim_desc& d) { d.density = kInf; }},
+        {"fill_particles_per_cell 5", "fill_particles_per_cell", [](pf_sim_desc& d) { d.fill_particles_per_cell = 5; }},
+        {"fill_particles_per_cell 2", "fill_particles_per_cell", [](pf_sim_desc& d) { d.fill_particles_per_cell = 2; }},
+        {"fill_particles_per_cell 125", "fill_particles_per_cell",
+         [](pf_sim_desc& d) { d.fill_particles_per_cell = 125; }},
+        {"fill_jitter 2", "fill_jitter", [](pf_sim_desc& d) { d.fill_jitter = 2.0f; }},
+        {"fill_jitter -0.1", "fill_jitter", [](pf_sim_desc& d) { d.fill_jitter = -0.1f; }},
+        {"fill_jitter NaN", "fill_jitter", [](pf_sim_desc& d) { d.fill_jitter = kNaN; }},
+    };
+    for (const Case& c : cases) {
+        pf_sim_desc d = test_desc(8, 8, 8);
+        c.apply(d);
+        expect_create_fails(d, PF_ERROR_INVALID_ARGUMENT, c.field, std::string("desc.") + c.name);
+    }
+    // The failures left nothing behind: a valid simulation is still created and steps.
+    SimPtr ok = create(test_desc(8, 8, 8));
+    ASSERT_TRUE(ok);
+    EXPECT_EQ(pf_step(ok.get(), kDt), PF_OK) << last_log();
+}
+
+TEST_F(CreateValidation, RejectsBadParamsFields) {
+    for (const ParamCase& c : bad_param_cases()) {
+        pf_sim_desc d = test_desc(8, 8, 8);
+        c.apply(d.params);
+        expect_create_fails(d, PF_ERROR_INVALID_ARGUMENT, c.field, std::string("desc.params.") + c.name);
+    }
+}
+
+// The documented inclusive bounds are accepted (a validator off by one fails here).
+TEST_F(CreateValidation, AcceptsBoundaryValues) {
+    pf_sim_desc hi = test_desc(1024, 2, 2);
+    hi.max_particles = 1;
+    hi.fill_particles_per_cell = 64;
+    hi.fill_jitter = 1.0f;
+    hi.params.flip_ratio = 1.0f;
+    hi.params.pressure_iterations = 10000;
+    hi.params.jacobi_omega = 1.0f;
+    hi.params.cfl = 16.0f;
+    hi.params.max_substeps = 64;
+    hi.params.extrapolation_layers = 16;
+    {
+        SimPtr s = create(hi);
+        ASSERT_TRUE(s) << "upper bounds";
+        pf_sim_params p{};
+        ASSERT_EQ(pf_get_params(s.get(), &p), PF_OK);
+        EXPECT_TRUE(same_params(p, hi.params)) << params_str(p) << " vs " << params_str(hi.params);
+    }
+    pf_sim_desc lo = test_desc(2, 2, 2);
+    lo.origin[0] = -1000.0f, lo.origin[1] = 12.5f, lo.origin[2] = -0.001f;
+    lo.fill_particles_per_cell = 1;
+    lo.fill_jitter = 0.0f;
+    lo.params.flip_ratio = 0.0f;
+    lo.params.pressure_iterations = 1;
+    lo.params.jacobi_omega = 1e-6f;
+    lo.params.cfl = 1e-3f;
+    lo.params.max_substeps = 1;
+    lo.params.extrapolation_layers = 1;
+    lo.params.gravity[0] = 1e30f;  // finite is all gravity must be
+    {
+        SimPtr s = create(lo);
+        ASSERT_TRUE(s) << "lower bounds";
+        pf_sim_params p{};
+        ASSERT_EQ(pf_get_params(s.get(), &p), PF_OK);
+        EXPECT_TRUE(same_params(p, lo.params)) << params_str(p) << " vs " << params_str(lo.params);
+    }
+}
+
+// A loader that finds nothing: no GL at all.
+pf_gl_proc null_loader(const char*) { return nullptr; }
+
+// A loader over the real context that reports GL_VERSION "3.3.0 Fake".
+int g_fake_version_queries = 0;
+PFNGLGETSTRINGPROC g_real_get_string = nullptr;
+const GLubyte* GLAD_API_PTR fake_get_string(GLenum name) {
+    if (name == GL_VERSION) {
+        ++g_fake_version_queries;
+        return reinterpret_cast<const GLubyte*>("3.3.0 Fake");
+    }
+    return g_real_get_string(name);
+}
+pf_gl_proc gl33_loader(const char* name) {
+    if (std::strcmp(name, "glGetString") == 0) return reinterpret_cast<pf_gl_proc>(&fake_get_string);
+    return get_proc(name);
+}
+
+TEST_F(CreateValidation, NoGlAtAllIsUnsupported) {
+    pf_sim_desc d = test_desc(8, 8, 8);
+    d.gl_get_proc_address = null_loader;
+    expect_create_fails(d, PF_ERROR_GL_UNSUPPORTED, "pf_create", "loader returning NULL for everything");
+}
+
+TEST_F(CreateValidation, Gl33ContextIsUnsupported) {
+    g_real_get_string = reinterpret_cast<PFNGLGETSTRINGPROC>(get_proc("glGetString"));
+    ASSERT_NE(g_real_get_string, nullptr);
+    g_fake_version_queries = 0;
+    pf_sim_desc d = test_desc(8, 8, 8);
+    d.gl_get_proc_address = gl33_loader;
+    expect_create_fails(d, PF_ERROR_GL_UNSUPPORTED, "4.3", "GL_VERSION reported as 3.3.0");
+    EXPECT_GT(g_fake_version_queries, 0) << "the library never asked glGetString(GL_VERSION): the fake was not seen";
+    // The real context is untouched by the refusal.
+    SimPtr ok = create(test_desc(8, 8, 8));
+    ASSERT_TRUE(ok);
+    EXPECT_EQ(pf_step(ok.get(), kDt), PF_OK) << last_log();
+}
+
+// "entry points missing" is PF_ERROR_GL_UNSUPPORTED too (pf.h). A loader that reports GL 4.5
+// but cannot find glDispatchCompute must be refused, not crash later. Run in a child process
+// (threadsafe death-test style re-executes this test alone) so a crash fails only this test.
+pf_gl_proc no_dispatch_loader(const char* name) {
+    if (std::strcmp(name, "glDispatchCompute") == 0) return nullptr;
+    return get_proc(name);
+}
+
+using CreateValidationDeathTest = CreateValidation;
+
+TEST_F(CreateValidationDeathTest, MissingGl43EntryPointIsUnsupportedNotACrash) {
+    GTEST_FLAG_SET(death_test_style, "threadsafe");
+    EXPECT_EXIT(
+        {
+            pf_sim_desc d = test_desc(8, 8, 8);
+            d.gl_get_proc_address = no_dispatch_loader;
+            pf_sim* s = nullptr;
+            clear_log();
+            const pf_result r = pf_create(&d, &s);
+            std::fprintf(stderr, "pf_create -> %d (%s), log: %s\n", int(r), pf_result_string(r), last_log());
+            const bool ok = r == PF_ERROR_GL_UNSUPPORTED && s == nullptr && log_mentions("pf_create");
+            if (r == PF_OK) pf_destroy(s);
+            std::fflush(stderr);
+            std::_Exit(ok ? 0 : 1);
+        },
+        ::testing::ExitedWithCode(0), "");
+}
+
+// ---------------------------------------------------------------------------------------------
+// NULL handles and out pointers
+
+TEST_F(ApiValidation, NullSimIsRejectedEverywhere) {
+    // A NULL handle has no logger to report through; the code is what an engine can check.
+    const float xyz[3] = {0.1f, 0.1f, 0.1f};
+    float out[3] = {};
+    pf_sim_params params = pf_default_sim_params();
+    pf_stats st{};
+    pf_gl_buffers bufs{};
+    EXPECT_EQ(pf_add_particles(nullptr, xyz, nullptr, 1), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_fill_box(nullptr, xyz, xyz, nullptr), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_clear_particles(nullptr), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_step(nullptr, kDt), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_get_params(nullptr, &params), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_set_params(nullptr, &params), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_read_particles(nullptr, 0, 1, out, out), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_get_gl_buffers(nullptr, &bufs), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_get_stats(nullptr, &st), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_clear_flags(nullptr), PF_ERROR_INVALID_ARGUMENT);
+    pf_destroy(nullptr);
+    expect_usable(kFilled, "NULL handles");
+}
+
+TEST_F(ApiValidation, NullOutPointersAreRejectedAndLogged) {
+    EXPECT_REJECTED(pf_get_params(sim_.get(), nullptr), PF_ERROR_INVALID_ARGUMENT, "pf_get_params", "out");
+    EXPECT_REJECTED(pf_set_params(sim_.get(), nullptr), PF_ERROR_INVALID_ARGUMENT, "pf_set_params", "params");
+    EXPECT_REJECTED(pf_get_stats(sim_.get(), nullptr), PF_ERROR_INVALID_ARGUMENT, "pf_get_stats", "out");
+    EXPECT_REJECTED(pf_get_gl_buffers(sim_.get(), nullptr), PF_ERROR_INVALID_ARGUMENT, "pf_get_gl_buffers", "out");
+    EXPECT_REJECTED(pf_add_particles(sim_.get(), nullptr, nullptr, 1), PF_ERROR_INVALID_ARGUMENT, "pf_add_particles",
+                    "xyz");
+    const float box[3] = {0.1f, 0.1f, 0.1f};
+    EXPECT_REJECTED(pf_fill_box(sim_.get(), nullptr, box, nullptr), PF_ERROR_INVALID_ARGUMENT, "pf_fill_box", "lo");
+    EXPECT_REJECTED(pf_fill_box(sim_.get(), box, nullptr, nullptr), PF_ERROR_INVALID_ARGUMENT, "pf_fill_box", "hi");
+    expect_usable(kFilled, "NULL out pointers");
+}
+
+// ---------------------------------------------------------------------------------------------
+// pf_set_params / pf_get_params
+
+TEST_F(ApiValidation, SetParamsRejectsAndKeepsParams) {
+    // Start from non-default values so "reset to defaults" on error would also be caught.
+    pf_sim_params custom = pf_default_sim_params();
+    custom.gravity[0] = 0.5f, custom.gravity[1] = -3.0f, custom.gravity[2] = 0.25f;
+    custom.flip_ratio = 0.7f;
+    custom.pressure_iterations = 23;
+    custom.jacobi_omega = 0.9f;
+    custom.cfl = 2.5f;
+    custom.max_substeps = 5;
+    custom.extrapolation_layers = 3;
+    ASSERT_EQ(pf_set_params(sim_.get(), &custom), PF_OK) << last_log();
+    for (const ParamCase& c : bad_param_cases()) {
+        SCOPED_TRACE(c.name);
+        pf_sim_params before{}, after{};
+        ASSERT_EQ(pf_get_params(sim_.get(), &before), PF_OK);
+        ASSERT_TRUE(same_params(before, custom)) << params_str(before);
+        pf_sim_params bad = custom;
+        c.apply(bad);
+        EXPECT_REJECTED(pf_set_params(sim_.get(), &bad), PF_ERROR_INVALID_ARGUMENT, "pf_set_params", c.field);
+        ASSERT_EQ(pf_get_params(sim_.get(), &after), PF_OK);
+        EXPECT_TRUE(same_params(before, after)) << "before: " << params_str(before) << "\nafter:  " << params_str(after);
+    }
+    expect_usable(kFilled, "rejected pf_set_params");
+}
+
+TEST_F(ApiValidation, SetParamsAcceptsBoundaryValues) {
+    pf_sim_params hi = pf_default_sim_params();
+    hi.flip_ratio = 1.0f;
+    hi.pressure_iterations = 10000;
+    hi.jacobi_omega = 1.0f;
+    hi.cfl = 16.0f;
+    hi.max_substeps = 64;
+    hi.extrapolation_layers = 16;
+    pf_sim_params lo = pf_default_sim_params();
+    lo.flip_ratio = 0.0f;
+    lo.pressure_iterations = 1;
+    lo.jacobi_omega = 1e-6f;
+    lo.cfl = 1e-4f;
+    lo.max_substeps = 1;
+    lo.extrapolation_layers = 1;
+    for (const pf_sim_params& p : {hi, lo}) {
+        EXPECT_EQ(pf_set_params(sim_.get(), &p), PF_OK) << params_str(p) << ": " << last_log();
+        pf_sim_params got{};
+        ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
+        EXPECT_TRUE(same_params(got, p)) << "set " << params_str(p) << "\ngot " << params_str(got);
+        EXPECT_EQ(pf_step(sim_.get(), kDt), PF_OK) << params_str(p) << ": " << last_log();
+    }
+    expect_usable(kFilled, "boundary params");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Zero means default
+
+TEST_F(ApiValidation, ZeroedParamsTakeDefaultsButGravityAndFlipStayZero) {
+    const pf_sim_params def = pf_default_sim_params();
+    const pf_sim_params zero{};
+    ASSERT_EQ(pf_set_params(sim_.get(), &zero), PF_OK) << last_log();
+    pf_sim_params got{};
+    ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
+    EXPECT_EQ(got.pressure_iterations, def.pressure_iterations);
+    EXPECT_EQ(got.jacobi_omega, def.jacobi_omega);
+    EXPECT_EQ(got.cfl, def.cfl);
+    EXPECT_EQ(got.max_substeps, def.max_substeps);
+    EXPECT_EQ(got.extrapolation_layers, def.extrapolation_layers);
+    EXPECT_EQ(got.gravity[0], 0.0f);
+    EXPECT_EQ(got.gravity[1], 0.0f);  // not the default -9.81
+    EXPECT_EQ(got.gravity[2], 0.0f);
+    EXPECT_EQ(got.flip_ratio, 0.0f);  // pure PIC, not the default 0.95
+    // Observable: with zero gravity a liquid at rest stays at rest (default gravity would give
+    // 9.81 m/s^2 * 1/60 s = 0.16 m/s after one frame). Bound: 1e-4 m/s.
+    ParticleState before = read_all(sim_.get());
+    ASSERT_EQ(pf_step(sim_.get(), kDt), PF_OK) << last_log();
+    ParticleState after = read_all(sim_.get());
+    ASSERT_EQ(after.count(), size_t(kFilled));
+    double vmax = 0, dmax = 0;
+    for (size_t i = 0; i < after.pos.size(); ++i) {
+        vmax = std::max(vmax, std::abs(double(after.vel[i])));
+        dmax = std::max(dmax, std::abs(double(after.pos[i]) - before.pos[i]));
+    }
+    EXPECT_LT(vmax, 1e-4);
+    EXPECT_LT(dmax, 1e-5);
+    // Cross-check the bound can fail: restoring default gravity does move the liquid.
+    ASSERT_EQ(pf_set_params(sim_.get(), &def), PF_OK);
+    ASSERT_EQ(pf_step(sim_.get(), kDt), PF_OK);
+    ParticleState fallen = read_all(sim_.get());
+    double vmax_g = 0;
+    for (float v : fallen.vel) vmax_g = std::max(vmax_g, std::abs(double(v)));
+    EXPECT_GT(vmax_g, 0.05);
+}
+
+TEST_F(CreateValidation, ZeroedDescParamsTakeDefaults) {
+    pf_sim_desc d = test_desc(8, 8, 8);
+    d.params = pf_sim_params{};
+    SimPtr s = create(d);
+    ASSERT_TRUE(s);
+    const pf_sim_params def = pf_default_sim_params();
+    pf_sim_params got{};
+    ASSERT_EQ(pf_get_params(s.get(), &got), PF_OK);
+    EXPECT_EQ(got.pressure_iterations, def.pressure_iterations);
+    EXPECT_EQ(got.jacobi_omega, def.jacobi_omega);
+    EXPECT_EQ(got.cfl, def.cfl);
+    EXPECT_EQ(got.max_substeps, def.max_substeps);
+    EXPECT_EQ(got.extrapolation_layers, def.extrapolation_layers);
+    EXPECT_EQ(got.gravity[1], 0.0f);
+    EXPECT_EQ(got.flip_ratio, 0.0f);
+    EXPECT_EQ(pf_step(s.get(), kDt), PF_OK) << last_log();
+}
+
+// max_speed, density and fill_particles_per_cell of 0 resolve to their defaults (src/api/validate.cpp
+// resolve_desc). Observable through pf_fill_box (8 per cell) and pf_add_particles' speed check
+// (the default 100 m/s; a literal 0 would reject every moving particle).
+TEST_F(CreateValidation, ZeroedDescKnobsTakeDefaults) {
+    pf_sim_desc d = test_desc(8, 8, 8);
+    d.max_speed = 0.0f;
+    d.density = 0.0f;
+    d.fill_particles_per_cell = 0;
+    SimPtr s = create(d);
+    ASSERT_TRUE(s);
+    const float lo[3] = {0.1f, 0.1f, 0.1f}, hi[3] = {0.2f, 0.2f, 0.2f};  // exactly one cell
+    ASSERT_EQ(pf_fill_box(s.get(), lo, hi, nullptr), PF_OK) << last_log();
+    pf_stats st{};
+    ASSERT_EQ(pf_get_stats(s.get(), &st), PF_OK);
+    EXPECT_EQ(st.particle_count, pf_default_sim_desc().fill_particles_per_cell);
+    const float p[3] = {0.4f, 0.4f, 0.4f}, v_ok[3] = {0.0f, 99.0f, 0.0f}, v_bad[3] = {0.0f, 101.0f, 0.0f};
+    EXPECT_EQ(pf_add_particles(s.get(), p, v_ok, 1), PF_OK) << last_log();
+    EXPECT_REJECTED(pf_add_particles(s.get(), p, v_bad, 1), PF_ERROR_INVALID_ARGUMENT, "pf_add_particles", "max_speed");
+    EXPECT_EQ(pf_step(s.get(), kDt), PF_OK) << last_log();
+}
+
+// ---------------------------------------------------------------------------------------------
+// pf_add_particles
+
+TEST_F(ApiValidation, AddParticlesRejectsBadBatchesWhole) {
+    // 100 valid particles, then one bad one at index `at` (first or last): nothing is added.
+    struct Case {
+        const char* name;
+        float pos[3];
+        float vel[3];
+    };
+    const float top = 0.8f;  // 8 cells of 0.1 m
+    const std::vector<Case> cases = {
+        {"position NaN", {0.5f, kNaN, 0.5f}, {0, 0, 0}},
+        {"position +Inf", {kInf, 0.5f, 0.5f}, {0, 0, 0}},
+        {"position -Inf", {0.5f, 0.5f, -kInf}, {0, 0, 0}},
+        {"position below origin", {0.5f, -0.01f, 0.5f}, {0, 0, 0}},
+        {"position above the top", {0.5f, 0.5f, top + 0.01f}, {0, 0, 0}},
+        {"position far outside", {100.0f, 0.5f, 0.5f}, {0, 0, 0}},
+        {"velocity NaN", {0.5f, 0.5f, 0.5f}, {0, kNaN, 0}},
+        {"velocity Inf", {0.5f, 0.5f, 0.5f}, {-kInf, 0, 0}},
+        {"speed above max_speed (10.01 > 10)", {0.5f, 0.5f, 0.5f}, {0, 0, 10.01f}},
+        {"speed above max_speed by its norm only (8,8,0)", {0.5f, 0.5f, 0.5f}, {8.0f, 8.0f, 0.0f}},
+    };
+    const uint32_t n = 101;
+    for (const Case& c : cases) {
+        for (uint32_t at : {0u, n - 1}) {
+            SCOPED_TRACE(std::string(c.name) + " at index " + std::to_string(at));
+            std::vector<float> xyz, vel;
+            for (uint32_t i = 0; i < n; ++i) {
+                const float p[3] = {0.45f + 0.003f * float(i), 0.55f, 0.65f}, v[3] = {0.0f, -1.0f, 0.5f};
+                xyz.insert(xyz.end(), p, p + 3);
+                vel.insert(vel.end(), v, v + 3);
+            }
+            std::memcpy(&xyz[size_t(at) * 3], c.pos, sizeof c.pos);
+            std::memcpy(&vel[size_t(at) * 3], c.vel, sizeof c.vel);
+            EXPECT_REJECTED(pf_add_particles(sim_.get(), xyz.data(), vel.data(), n), PF_ERROR_INVALID_ARGUMENT,
+                            "pf_add_particles", std::to_string(at).c_str());
+            EXPECT_EQ(count(), kFilled) << "particles were added by a rejected call";
+        }
+    }
+    // The next valid particle lands right after the existing ones, with exactly its values.
+    const float p[3] = {0.71f, 0.72f, 0.73f}, v[3] = {1.0f, -2.0f, 3.0f};
+    ASSERT_EQ(pf_add_particles(sim_.get(), p, v, 1), PF_OK) << last_log();
+    ASSERT_EQ(count(), kFilled + 1);
+    float got_p[3] = {}, got_v[3] = {};
+    ASSERT_EQ(pf_read_particles(sim_.get(), kFilled, 1, got_p, got_v), PF_OK);
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_EQ(got_p[a], p[a]) << a;
+        EXPECT_EQ(got_v[a], v[a]) << a;
+    }
+    expect_usable(kFilled + 1, "rejected pf_add_particles");
+}
+
+TEST_F(ApiValidation, AddParticlesAcceptsEdgesOfTheRules) {
+    // Speed exactly max_speed (|(6, 8, 0)| = 10), the domain's minimum corner, zero particles.
+    const float p[3] = {0.0f, 0.0f, 0.0f}, v[3] = {6.0f, 8.0f, 0.0f};
+    EXPECT_EQ(pf_add_particles(sim_.get(), p, v, 1), PF_OK) << last_log();
+    EXPECT_EQ(pf_add_particles(sim_.get(), p, nullptr, 1), PF_OK) << last_log();
+    EXPECT_EQ(pf_add_particles(sim_.get(), nullptr, nullptr, 0), PF_OK) << last_log();
+    expect_usable(kFilled + 2, "edge particles");
+}
+
+TEST_F(ApiValidation, CapacityIsAllOrNothing) {
+    pf_sim_desc d = test_desc(8, 8, 8);
+    d.max_particles = kFilled + 88;
+    SimPtr s = create(d);
+    ASSERT_TRUE(s);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.4f, 0.4f, 0.4f};
+    ASSERT_EQ(pf_fill_box(s.get(), lo, hi, nullptr), PF_OK) << last_log();
+    auto live = [&] {
+        pf_stats st{};
+        EXPECT_EQ(pf_get_stats(s.get(), &st), PF_OK);
+        return st.particle_count;
+    };
+    std::vector<float> xyz;
+    for (int i = 0; i < 89; ++i) {
+        const float p[3] = {0.5f + 0.002f * float(i), 0.6f, 0.7f};
+        xyz.insert(xyz.end(), p, p + 3);
+    }
+    EXPECT_REJECTED(pf_add_particles(s.get(), xyz.data(), nullptr, 89), PF_ERROR_CAPACITY, "pf_add_particles", "");
+    EXPECT_EQ(live(), kFilled);
+    // A batch that is both too large and invalid is still refused as a whole.
+    xyz[88 * 3] = kNaN;
+    clear_log();
+    EXPECT_NE(pf_add_particles(s.get(), xyz.data(), nullptr, 89), PF_OK);
+    EXPECT_GT(std::strlen(last_log()), 0u);
+    EXPECT_EQ(live(), kFilled);
+    // A box of one cell (8 particles) does not fit either once only 7 slots are left.
+    EXPECT_EQ(pf_add_particles(s.get(), xyz.data(), nullptr, 81), PF_OK) << last_log();
+    EXPECT_EQ(live(), kFilled + 81);
+    const float blo[3] = {0.5f, 0.5f, 0.5f}, bhi[3] = {0.6f, 0.6f, 0.6f};
+    EXPECT_REJECTED(pf_fill_box(s.get(), blo, bhi, nullptr), PF_ERROR_CAPACITY, "pf_fill_box", "");
+    EXPECT_EQ(live(), kFilled + 81);
+    EXPECT_EQ(pf_add_particles(s.get(), xyz.data(), nullptr, 7), PF_OK) << last_log();
+    EXPECT_EQ(live(), d.max_particles);
+    EXPECT_REJECTED(pf_add_particles(s.get(), xyz.data(), nullptr, 1), PF_ERROR_CAPACITY, "pf_add_particles", "");
+    EXPECT_EQ(live(), d.max_particles);
+    // Full and still usable.
+    EXPECT_EQ(pf_step(s.get(), kDt), PF_OK) << last_log();
+    ParticleState p = read_all(s.get());
+    EXPECT_EQ(p.count(), size_t(d.max_particles));
+}
+
+// ---------------------------------------------------------------------------------------------
+// pf_fill_box
+
+TEST_F(ApiValidation, FillBoxRejectsBadBoxes) {
+    struct Case {
+        const char* name;
+        float lo[3], hi[3];
+        bool with_vel;
+        float vel[3];
+    };
+    const std::vector<Case> cases = {
+        {"lo NaN", {0.1f, kNaN, 0.1f}, {0.5f, 0.5f, 0.5f}, false, {}},
+        {"hi +Inf", {0.1f, 0.1f, 0.1f}, {0.5f, 0.5f, kInf}, false, {}},
+        {"lo -Inf", {-kInf, 0.1f, 0.1f}, {0.5f, 0.5f, 0.5f}, false, {}},
+        {"vel NaN", {0.1f, 0.1f, 0.1f}, {0.5f, 0.5f, 0.5f}, true, {kNaN, 0, 0}},
+        {"vel Inf", {0.1f, 0.1f, 0.1f}, {0.5f, 0.5f, 0.5f}, true, {0, 0, kInf}},
+        {"vel above max_speed", {0.1f, 0.1f, 0.1f}, {0.5f, 0.5f, 0.5f}, true, {0, 10.5f, 0}},
+        {"inverted box (lo > hi)", {0.5f, 0.5f, 0.5f}, {0.1f, 0.1f, 0.1f}, false, {}},
+        {"inverted on one axis", {0.1f, 0.5f, 0.1f}, {0.5f, 0.1f, 0.5f}, false, {}},
+        {"zero volume (lo == hi)", {0.3f, 0.3f, 0.3f}, {0.3f, 0.3f, 0.3f}, false, {}},
+        {"flat box", {0.1f, 0.3f, 0.1f}, {0.5f, 0.3f, 0.5f}, false, {}},
+        {"entirely above the domain", {0.1f, 1.0f, 0.1f}, {0.5f, 2.0f, 0.5f}, false, {}},
+        {"entirely below the origin", {-2.0f, -2.0f, -2.0f}, {-1.0f, -1.0f, -1.0f}, false, {}},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        EXPECT_REJECTED(pf_fill_box(sim_.get(), c.lo, c.hi, c.with_vel ? c.vel : nullptr), PF_ERROR_INVALID_ARGUMENT,
+                        "pf_fill_box", "");
+        EXPECT_EQ(count(), kFilled);
+    }
+    // A box sticking out of the domain is clipped, not refused: [0.6, 5]^3 keeps 2^3 cells.
+    const float lo[3] = {0.6f, 0.6f, 0.6f}, hi[3] = {5.0f, 5.0f, 5.0f};
+    EXPECT_EQ(pf_fill_box(sim_.get(), lo, hi, nullptr), PF_OK) << last_log();
+    EXPECT_EQ(count(), kFilled + 2 * 2 * 2 * 8);
+    expect_usable(kFilled + 64, "rejected pf_fill_box");
+}
+
+// ---------------------------------------------------------------------------------------------
+// pf_step
+
+TEST_F(ApiValidation, StepRejectsBadFrameDt) {
+    ParticleState before = read_all(sim_.get());
+    const uint64_t steps_before = steps();
+    const float bad[] = {0.0f, -0.0f, -kDt, kNaN, kInf, -kInf, 2.0f, std::nextafter(1.0f, 2.0f),
+                         std::numeric_limits<float>::denorm_min() * -1.0f};
+    for (float dt : bad) {
+        SCOPED_TRACE("frame_dt " + std::to_string(dt));
+        EXPECT_REJECTED(pf_step(sim_.get(), dt), PF_ERROR_INVALID_ARGUMENT, "pf_step", "frame_dt");
+    }
+    EXPECT_EQ(steps(), steps_before) << "a rejected pf_step was counted";
+    ParticleState after = read_all(sim_.get());
+    ASSERT_EQ(after.count(), before.count());
+    EXPECT_EQ(std::memcmp(after.pos.data(), before.pos.data(), after.pos.size() * sizeof(float)), 0)
+        << "a rejected pf_step moved particles";
+    EXPECT_EQ(std::memcmp(after.vel.data(), before.vel.data(), after.vel.size() * sizeof(float)), 0)
+        << "a rejected pf_step changed velocities";
+    // The documented upper bound itself is accepted.
+    EXPECT_EQ(pf_step(sim_.get(), 1.0f), PF_OK) << last_log();
+    EXPECT_EQ(steps(), steps_before + 1);
+    expect_usable(kFilled, "rejected pf_step");
+}
+
+// ---------------------------------------------------------------------------------------------
+// pf_read_particles
+
+TEST_F(ApiValidation, ReadParticlesRejectsRangesPastTheCount) {
+    const uint32_t n = kFilled;
+    struct Range {
+        uint32_t first, count;
+    };
+    const Range bad[] = {{0, n + 1}, {n, 1}, {n - 1, 2}, {n + 5, 1}, {0xffffffffu, 2}, {1, 0xffffffffu},
+                         {0x80000000u, 0x80000000u}};
+    const float sentinel = -12345.0f;
+    std::vector<float> xyz(size_t(n + 8) * 3, sentinel), vel(size_t(n + 8) * 3, sentinel);
+    for (const Range& r : bad) {
+        SCOPED_TRACE("first " + std::to_string(r.first) + " count " + std::to_string(r.count));
+        EXPECT_REJECTED(pf_read_particles(sim_.get(), r.first, r.count, xyz.data(), vel.data()),
+                        PF_ERROR_INVALID_ARGUMENT, "pf_read_particles", "");
+        for (size_t i = 0; i < xyz.size(); ++i) {
+            ASSERT_EQ(xyz[i], sentinel) << "rejected read wrote xyz[" << i << "]";
+            ASSERT_EQ(vel[i], sentinel) << "rejected read wrote vel[" << i << "]";
+        }
+    }
+    // In-range reads at the end, empty reads and reads with no destination are fine.
+    EXPECT_EQ(pf_read_particles(sim_.get(), n - 1, 1, xyz.data(), vel.data()), PF_OK) << last_log();
+    EXPECT_NE(xyz[0], sentinel);
+    EXPECT_EQ(pf_read_particles(sim_.get(), n, 0, xyz.data(), vel.data()), PF_OK) << last_log();
+    EXPECT_EQ(pf_read_particles(sim_.get(), 0, n, nullptr, nullptr), PF_OK) << last_log();
+    EXPECT_EQ(pf_read_particles(sim_.get(), 0, n, xyz.data(), nullptr), PF_OK) << last_log();
+    EXPECT_EQ(xyz[size_t(n) * 3], sentinel) << "read past the requested range";
+    expect_usable(kFilled, "rejected pf_read_particles");
+}
+
+// pf_clear_particles empties the simulation but keeps it usable and keeps its parameters.
+TEST_F(ApiValidation, ClearParticlesKeepsParams) {
+    pf_sim_params custom = pf_default_sim_params();
+    custom.flip_ratio = 0.5f;
+    custom.pressure_iterations = 17;
+    ASSERT_EQ(pf_set_params(sim_.get(), &custom), PF_OK);
+    ASSERT_EQ(pf_clear_particles(sim_.get()), PF_OK) << last_log();
+    pf_sim_params got{};
+    ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
+    EXPECT_TRUE(same_params(got, custom)) << params_str(got);
+    EXPECT_REJECTED(pf_read_particles(sim_.get(), 0, 1, nullptr, nullptr), PF_ERROR_INVALID_ARGUMENT,
+                    "pf_read_particles", "");
+    expect_usable(0, "pf_clear_particles");
+}
+
+}  // namespace
+}  // namespace pf::test

@@ -1,0 +1,473 @@
+// pf_bench — pflip benchmark harness.
+//
+// For each scene: create the simulation, fill it, run W warm-up steps, then M measured steps of
+// the scene's frame_dt (the library picks the CFL substeps; they are reported). Per step it
+// records the wall time with glFinish before and after pf_step, pflip's host time, and —
+// once per distinct pf_stats.gpu_step — the per-pass GPU times from pf_get_stats. Results go
+// to stdout as a table and optionally to JSON and CSV.
+
+#include <glad/gl.h>
+
+#include <pf/pf.h>
+
+#include "egl_context.h"
+#include "scene.h"
+#include "util.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+using pfs::Error;
+using ojson = nlohmann::ordered_json;
+
+struct Options {
+    std::vector<std::string> scenes;
+    uint32_t warmup = 20;
+    uint32_t steps = 100;
+    uint32_t pressure_iterations = 40;
+    uint32_t max_substeps = 0; // 0: the scene's
+    float frame_dt = 0;        // 0: the scene's
+    std::string json_path, csv_path;
+    bool verbose = false;
+    std::string command_line;
+};
+
+const char* kDefaultScenes[] = {"original_24", "dam_break_1m", "dam_break_10m"};
+
+void print_usage(std::FILE* f) {
+    std::fprintf(f,
+                 "usage: pf_bench [options] [SCENE ...]\n"
+                 "  SCENE                    scene file or name in the scenes directory\n"
+                 "                           (default: original_24 dam_break_1m dam_break_10m)\n"
+                 "  --warmup W               unmeasured steps first (default 20)\n"
+                 "  --steps M                measured steps (default 100)\n"
+                 "  --pressure-iterations N  Jacobi iterations per substep for every scene (default 40,\n"
+                 "                           the original's \"step (40 Jacobi iterations)\")\n"
+                 "  --max-substeps N         override the scenes' max_substeps (1 = one substep per step)\n"
+                 "  --frame-dt S             override the scenes' frame_dt (seconds per pf_step)\n"
+                 "  --json PATH              write results as JSON\n"
+                 "  --csv PATH               write results as CSV (one row per scene and metric)\n"
+                 "  --verbose                pflip's info messages and EGL details\n"
+                 "  -h, --help               this text\n"
+                 "environment: PF_EGL_PLATFORM=device|surfaceless, PF_EGL_DEVICE=N, PF_SCENES_DIR=DIR\n"
+                 "scenes directory: %s\n",
+                 pfs::scenes_dir().c_str());
+}
+
+Options parse_args(int argc, char** argv) {
+    Options o;
+    for (int i = 0; i < argc; ++i) o.command_line += std::string(i ? " " : "") + argv[i];
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw Error(a + " needs a value (see --help)");
+            return argv[++i];
+        };
+        if (a == "-h" || a == "--help") {
+            print_usage(stdout);
+            std::exit(0);
+        } else if (a == "--warmup") {
+            o.warmup = pfs::parse_u32(value(), "--warmup", 0, 1000000);
+        } else if (a == "--steps") {
+            o.steps = pfs::parse_u32(value(), "--steps", 1, 1000000);
+        } else if (a == "--pressure-iterations") {
+            o.pressure_iterations = pfs::parse_u32(value(), "--pressure-iterations", 1, 10000);
+        } else if (a == "--max-substeps") {
+            o.max_substeps = pfs::parse_u32(value(), "--max-substeps", 1, 64);
+        } else if (a == "--frame-dt") {
+            o.frame_dt = pfs::parse_float(value(), "--frame-dt", 1e-6f, 1.0f);
+        } else if (a == "--json") {
+            o.json_path = value();
+        } else if (a == "--csv") {
+            o.csv_path = value();
+        } else if (a == "--verbose") {
+            o.verbose = true;
+        } else if (!a.empty() && a[0] == '-') {
+            throw Error("unknown option '" + a + "' (see --help)");
+        } else {
+            o.scenes.push_back(a);
+        }
+    }
+    if (o.scenes.empty())
+        for (const char* s : kDefaultScenes) o.scenes.push_back(s);
+    return o;
+}
+
+struct SimDeleter {
+    void operator()(pf_sim* s) const { pf_destroy(s); }
+};
+using SimPtr = std::unique_ptr<pf_sim, SimDeleter>;
+
+std::vector<std::string> flag_list(uint32_t flags) {
+    std::vector<std::string> v;
+    if (flags & PF_FLAG_P2G_OVERFLOW) v.push_back("P2G_OVERFLOW");
+    if (flags & PF_FLAG_NONFINITE) v.push_back("NONFINITE");
+    if (flags & PF_FLAG_SPEED_CLAMPED) v.push_back("SPEED_CLAMPED");
+    if (flags & PF_FLAG_SUBSTEPS_CLAMPED) v.push_back("SUBSTEPS_CLAMPED");
+    return v;
+}
+
+ojson summary_json(const pfs::Summary& s) {
+    ojson j;
+    j["mean"] = s.mean;
+    j["median"] = s.median;
+    j["min"] = s.min;
+    j["max"] = s.max;
+    j["stddev"] = s.stddev;
+    j["n"] = s.n;
+    return j;
+}
+
+struct Result {
+    std::string name, file, error;
+    pfs::Scene scene;
+    pf_sim_params params{};
+    float frame_dt = 0;
+    uint32_t particles = 0, max_particles = 0, ppc = 0;
+    double create_ms = 0, fill_ms = 0;
+    pfs::Summary wall, wall_per_substep, cpu, substeps;
+    pfs::Summary gpu_total, gpu_per_substep;
+    pfs::Summary gpu_pass[PF_PASS_COUNT];
+    uint32_t dispatches[PF_PASS_COUNT] = {};
+    size_t gpu_samples = 0;
+    bool gpu_valid = false;
+    uint32_t flags = 0;
+    float max_speed = 0;
+};
+
+// Run one scene; fills r (r.error on failure).
+void bench_scene(const Options& opt, const std::string& arg, Result& r) {
+    r.name = arg;
+    const std::string path = pfs::resolve_scene_path(arg);
+    r.file = path;
+    r.scene = pfs::load_scene(path);
+    r.name = r.scene.name;
+    r.frame_dt = opt.frame_dt > 0 ? opt.frame_dt : r.scene.frame_dt;
+
+    pf_sim_desc desc = pfs::make_sim_desc(r.scene, pfs::get_proc, pfs::stderr_logger(opt.verbose));
+    desc.params.pressure_iterations = opt.pressure_iterations;
+    if (opt.max_substeps) desc.params.max_substeps = opt.max_substeps;
+    r.params = desc.params;
+    r.max_particles = desc.max_particles;
+    r.ppc = desc.fill_particles_per_cell;
+
+    std::printf("\n[%s] %s\n  grid %ux%ux%u, cell %.4g m; %u Jacobi iterations, max_substeps %u, frame_dt %.5g s\n",
+                r.name.c_str(), path.c_str(), desc.grid_size[0], desc.grid_size[1], desc.grid_size[2],
+                double(desc.cell_size), desc.params.pressure_iterations, desc.params.max_substeps,
+                double(r.frame_dt));
+    std::fflush(stdout);
+
+    glFinish();
+    double t0 = pfs::now_ms();
+    SimPtr sim;
+    {
+        pf_sim* raw = nullptr;
+        pfs::check(pf_create(&desc, &raw), "pf_create");
+        sim.reset(raw);
+    }
+    glFinish();
+    r.create_ms = pfs::now_ms() - t0;
+    t0 = pfs::now_ms();
+    pfs::fill_scene(sim.get(), r.scene);
+    glFinish();
+    r.fill_ms = pfs::now_ms() - t0;
+
+    pf_stats st{};
+    pfs::check(pf_get_stats(sim.get(), &st), "pf_get_stats");
+    r.particles = st.particle_count;
+    std::printf("  %u particles; pf_create %.1f ms, fill %.1f ms; warming up %u steps...\n", r.particles,
+                r.create_ms, r.fill_ms, opt.warmup);
+    std::fflush(stdout);
+
+    for (uint32_t i = 0; i < opt.warmup; ++i) pfs::check(pf_step(sim.get(), r.frame_dt), "pf_step (warm-up)");
+    glFinish();
+    pfs::check(pf_clear_flags(sim.get()), "pf_clear_flags");
+    pfs::check(pf_get_stats(sim.get(), &st), "pf_get_stats");
+    const uint64_t first = st.steps + 1, last = st.steps + opt.steps;
+
+    std::map<uint64_t, uint32_t> substeps_of; // step -> substeps
+    struct Gpu {
+        float ms[PF_PASS_COUNT];
+        float total;
+    };
+    std::map<uint64_t, Gpu> gpu; // distinct gpu_step -> timings
+    std::vector<double> wall, cpu;
+    auto collect = [&]() {
+        if (st.gpu_step >= first && st.gpu_step <= last && !gpu.count(st.gpu_step)) {
+            Gpu g{};
+            std::copy(st.gpu_ms, st.gpu_ms + PF_PASS_COUNT, g.ms);
+            g.total = st.gpu_total_ms;
+            gpu[st.gpu_step] = g;
+        }
+    };
+
+    std::printf("  measuring %u steps...\n", opt.steps);
+    std::fflush(stdout);
+    const uint32_t progress_every = std::max(1u, opt.steps / 4);
+    for (uint32_t i = 0; i < opt.steps; ++i) {
+        glFinish();
+        const double s0 = pfs::now_ms();
+        pfs::check(pf_step(sim.get(), r.frame_dt), "pf_step");
+        glFinish();
+        const double s1 = pfs::now_ms();
+        pfs::check(pf_get_stats(sim.get(), &st), "pf_get_stats");
+        wall.push_back(s1 - s0);
+        cpu.push_back(st.cpu_ms);
+        substeps_of[st.steps] = st.substeps;
+        for (int p = 0; p < PF_PASS_COUNT; ++p) r.dispatches[p] = std::max(r.dispatches[p], st.dispatches[p]);
+        collect();
+        if ((i + 1) % progress_every == 0 && i + 1 < opt.steps) {
+            std::printf("    %u/%u  %.2f ms/step (wall)  substeps %u\n", i + 1, opt.steps, s1 - s0, st.substeps);
+            std::fflush(stdout);
+        }
+    }
+    r.flags = st.flags;
+    r.max_speed = st.max_speed;
+    r.particles = st.particle_count;
+    // GPU timings lag a few steps: keep stepping (unmeasured) until the last measured step's
+    // timings are reported, or give up after a few.
+    for (int i = 0; i < 8 && st.gpu_step < last; ++i) {
+        pfs::check(pf_step(sim.get(), r.frame_dt), "pf_step (drain)");
+        glFinish();
+        pfs::check(pf_get_stats(sim.get(), &st), "pf_get_stats");
+        collect();
+    }
+
+    std::vector<double> subs, wall_sub;
+    for (size_t i = 0; i < wall.size(); ++i) {
+        const uint32_t k = substeps_of[first + i];
+        subs.push_back(k);
+        if (k) wall_sub.push_back(wall[i] / k);
+    }
+    r.wall = pfs::summarize(wall);
+    r.wall_per_substep = pfs::summarize(wall_sub);
+    r.cpu = pfs::summarize(cpu);
+    r.substeps = pfs::summarize(subs);
+    std::vector<double> tot, tot_sub, pass[PF_PASS_COUNT];
+    for (const auto& [step, g] : gpu) {
+        tot.push_back(g.total);
+        const uint32_t k = substeps_of.count(step) ? substeps_of[step] : 0;
+        if (k) tot_sub.push_back(g.total / k);
+        for (int p = 0; p < PF_PASS_COUNT; ++p) pass[p].push_back(g.ms[p]);
+    }
+    r.gpu_samples = gpu.size();
+    r.gpu_total = pfs::summarize(tot);
+    r.gpu_per_substep = pfs::summarize(tot_sub);
+    for (int p = 0; p < PF_PASS_COUNT; ++p) r.gpu_pass[p] = pfs::summarize(pass[p]);
+    r.gpu_valid = r.gpu_samples > 0 && r.gpu_total.max > 0;
+
+    std::printf("  wall %.3f ms/step (median), gpu %.3f ms/step (median of %zu), substeps %.2f\n", r.wall.median,
+                r.gpu_total.median, r.gpu_samples, r.substeps.mean);
+    sim.reset();
+    glFinish();
+}
+
+ojson result_json(const Result& r) {
+    ojson j;
+    j["scene"] = r.name;
+    j["file"] = r.file;
+    if (!r.error.empty()) {
+        j["error"] = r.error;
+        return j;
+    }
+    j["description"] = r.scene.description;
+    j["grid"] = {r.scene.grid_size[0], r.scene.grid_size[1], r.scene.grid_size[2]};
+    j["cell_size"] = r.scene.cell_size;
+    j["particles"] = r.particles;
+    j["max_particles"] = r.max_particles;
+    j["particles_per_cell"] = r.ppc;
+    j["frame_dt"] = r.frame_dt;
+    ojson p;
+    p["gravity"] = {r.params.gravity[0], r.params.gravity[1], r.params.gravity[2]};
+    p["flip_ratio"] = r.params.flip_ratio;
+    p["pressure_iterations"] = r.params.pressure_iterations;
+    p["jacobi_omega"] = r.params.jacobi_omega;
+    p["cfl"] = r.params.cfl;
+    p["max_substeps"] = r.params.max_substeps;
+    p["extrapolation_layers"] = r.params.extrapolation_layers;
+    j["params"] = p;
+    j["create_ms"] = r.create_ms;
+    j["fill_ms"] = r.fill_ms;
+    j["substeps_per_step"] = summary_json(r.substeps);
+    j["wall_ms_per_step"] = summary_json(r.wall);
+    j["wall_ms_per_substep"] = summary_json(r.wall_per_substep);
+    j["cpu_ms_per_step"] = summary_json(r.cpu);
+    ojson g;
+    g["samples"] = r.gpu_samples;
+    g["timer_valid"] = r.gpu_valid;
+    g["total_ms_per_step"] = summary_json(r.gpu_total);
+    g["total_ms_per_substep"] = summary_json(r.gpu_per_substep);
+    ojson passes;
+    for (int k = 0; k < PF_PASS_COUNT; ++k) {
+        ojson pj = summary_json(r.gpu_pass[k]);
+        pj["dispatches_per_step"] = r.dispatches[k];
+        passes[pf_pass_name(pf_pass(k))] = pj;
+    }
+    g["passes_ms_per_step"] = passes;
+    j["gpu"] = g;
+    j["flags"] = flag_list(r.flags);
+    j["max_speed"] = r.max_speed;
+    return j;
+}
+
+void write_csv(const std::string& path, const std::vector<Result>& results) {
+    std::ofstream f(path);
+    if (!f) throw Error("cannot write " + path);
+    f << "scene,particles,grid,pressure_iterations,frame_dt,substeps_mean,metric,mean_ms,median_ms,min_ms,max_ms,"
+         "samples\n";
+    for (const Result& r : results) {
+        if (!r.error.empty()) continue;
+        char grid[64];
+        std::snprintf(grid, sizeof grid, "%ux%ux%u", r.scene.grid_size[0], r.scene.grid_size[1], r.scene.grid_size[2]);
+        auto row = [&](const std::string& metric, const pfs::Summary& s) {
+            char buf[512];
+            std::snprintf(buf, sizeof buf, "%s,%u,%s,%u,%.9g,%.4f,%s,%.6f,%.6f,%.6f,%.6f,%zu\n", r.name.c_str(),
+                          r.particles, grid, r.params.pressure_iterations, double(r.frame_dt), r.substeps.mean,
+                          metric.c_str(), s.mean, s.median, s.min, s.max, s.n);
+            f << buf;
+        };
+        row("wall_step", r.wall);
+        row("wall_substep", r.wall_per_substep);
+        row("cpu_step", r.cpu);
+        row("gpu_total_step", r.gpu_total);
+        row("gpu_total_substep", r.gpu_per_substep);
+        for (int k = 0; k < PF_PASS_COUNT; ++k) row(std::string("gpu_") + pf_pass_name(pf_pass(k)), r.gpu_pass[k]);
+    }
+    if (!f) throw Error("error writing " + path);
+}
+
+void print_tables(const std::vector<Result>& results) {
+    std::printf("\n%-16s %10s %13s %7s %12s %12s %14s %10s\n", "scene", "particles", "grid", "subst", "wall ms/step",
+                "gpu ms/step", "gpu ms/substep", "cpu ms");
+    for (const Result& r : results) {
+        if (!r.error.empty()) {
+            std::printf("%-16s  FAILED: %s\n", r.name.c_str(), r.error.c_str());
+            continue;
+        }
+        char grid[64];
+        std::snprintf(grid, sizeof grid, "%ux%ux%u", r.scene.grid_size[0], r.scene.grid_size[1], r.scene.grid_size[2]);
+        std::printf("%-16s %10u %13s %7.2f %12.3f %12.3f %14.3f %10.3f\n", r.name.c_str(), r.particles, grid,
+                    r.substeps.mean, r.wall.median, r.gpu_total.median, r.gpu_per_substep.median, r.cpu.median);
+    }
+    std::printf("(medians; wall = glFinish around pf_step; gpu = pf_get_stats timer queries)\n");
+
+    std::vector<const Result*> ok;
+    for (const Result& r : results)
+        if (r.error.empty()) ok.push_back(&r);
+    if (ok.empty()) return;
+    std::printf("\nGPU ms per step by pass (median):\n%-18s", "pass");
+    for (const Result* r : ok) std::printf(" %16.16s", r->name.c_str());
+    std::printf("\n");
+    for (int k = 0; k < PF_PASS_COUNT; ++k) {
+        std::printf("%-18s", pf_pass_name(pf_pass(k)));
+        for (const Result* r : ok) std::printf(" %16.4f", r->gpu_pass[k].median);
+        std::printf("\n");
+    }
+    std::printf("%-18s", "total");
+    for (const Result* r : ok) std::printf(" %16.4f", r->gpu_total.median);
+    std::printf("\n");
+    bool any_invalid = false;
+    for (const Result* r : ok) any_invalid = any_invalid || !r->gpu_valid;
+    if (any_invalid)
+        std::printf("note: some scenes have no non-zero GPU timings (timer queries unsupported or reading 0 on this "
+                    "driver, e.g. llvmpipe); use the wall times.\n");
+    for (const Result* r : ok)
+        if (r->flags)
+            std::printf("note: %s raised flags:%s\n", r->name.c_str(), [&] {
+                std::string s;
+                for (const auto& f : flag_list(r->flags)) s += " " + f;
+                return s;
+            }().c_str());
+}
+
+int run(int argc, char** argv) {
+    const Options opt = parse_args(argc, argv);
+
+    pfs::EglContext::Options copt;
+    copt.verbose = opt.verbose;
+    pfs::EglContext ctx(copt);
+    const int glv = gladLoadGL(pfs::get_proc);
+    if (!glv || GLAD_VERSION_MAJOR(glv) * 100 + GLAD_VERSION_MINOR(glv) < 403)
+        throw Error("gladLoadGL: OpenGL 4.3 core functions not available");
+
+    const std::string date = pfs::utc_timestamp();
+    std::printf("pflip %s benchmark, %s\n%s\nwarm-up %u steps, measured %u steps, %u Jacobi iterations\n",
+                pfs::pf_version_string().c_str(), date.c_str(), ctx.describe().c_str(), opt.warmup, opt.steps,
+                opt.pressure_iterations);
+
+    std::vector<Result> results(opt.scenes.size());
+    bool failed = false;
+    for (size_t i = 0; i < opt.scenes.size(); ++i) {
+        try {
+            bench_scene(opt, opt.scenes[i], results[i]);
+        } catch (const std::exception& e) {
+            results[i].error = e.what();
+            failed = true;
+            std::fprintf(stderr, "pf_bench: %s: %s\n", opt.scenes[i].c_str(), e.what());
+            while (glGetError() != GL_NO_ERROR) {
+            }
+        }
+    }
+
+    print_tables(results);
+
+    if (!opt.json_path.empty()) {
+        ojson j;
+        j["tool"] = "pf_bench";
+        j["pflip_version"] = pfs::pf_version_string();
+        j["date"] = date;
+        j["host"] = pfs::host_name();
+        j["command_line"] = opt.command_line;
+        ojson gl;
+        gl["egl_platform"] = ctx.platform();
+        gl["egl_device"] = ctx.device_info();
+        gl["egl_vendor"] = ctx.egl_vendor();
+        gl["vendor"] = ctx.gl_vendor();
+        gl["renderer"] = ctx.gl_renderer();
+        gl["version"] = ctx.gl_version();
+        j["gl"] = gl;
+        ojson settings;
+        settings["warmup_steps"] = opt.warmup;
+        settings["measured_steps"] = opt.steps;
+        settings["pressure_iterations"] = opt.pressure_iterations;
+        settings["max_substeps_override"] = opt.max_substeps;
+        settings["frame_dt_override"] = opt.frame_dt;
+        settings["wall_time"] = "glFinish; t0; pf_step; glFinish; t1";
+        settings["gpu_time"] = "pf_get_stats per-pass timer queries, each distinct gpu_step once, summed over substeps";
+        j["settings"] = settings;
+        ojson arr = ojson::array();
+        for (const Result& r : results) arr.push_back(result_json(r));
+        j["scenes"] = arr;
+        std::ofstream f(opt.json_path);
+        f << j.dump(2) << "\n";
+        if (!f) throw Error("cannot write " + opt.json_path);
+        std::printf("wrote %s\n", opt.json_path.c_str());
+    }
+    if (!opt.csv_path.empty()) {
+        write_csv(opt.csv_path, results);
+        std::printf("wrote %s\n", opt.csv_path.c_str());
+    }
+    return failed ? 1 : 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "pf_bench: error: %s\n", e.what());
+        return 1;
+    }
+}

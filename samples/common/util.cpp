@@ -1,0 +1,165 @@
+#include "util.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+
+#if defined(__unix__) || defined(__APPLE__)
+#include <unistd.h>
+#endif
+
+#ifndef PF_DEFAULT_SCENES_DIR
+#define PF_DEFAULT_SCENES_DIR "scenes"
+#endif
+
+namespace pfs {
+
+void check(pf_result r, const char* what) {
+    if (r == PF_OK) return;
+    throw Error(std::string(what) + ": " + pf_result_string(r) + " (pf_result " +
+                std::to_string(static_cast<int>(r)) + ")");
+}
+
+namespace {
+void log_to_stderr(void* user, pf_log_level level, pf_result code, const char* message) {
+    const bool verbose = user != nullptr;
+    const char* tag = "info";
+    switch (level) {
+    case PF_LOG_ERROR: tag = "error"; break;
+    case PF_LOG_WARNING: tag = "warning"; break;
+    default:
+        if (!verbose) return;
+        break;
+    }
+    if (code != PF_OK)
+        std::fprintf(stderr, "[pflip %s] %s (%s)\n", tag, message ? message : "", pf_result_string(code));
+    else
+        std::fprintf(stderr, "[pflip %s] %s\n", tag, message ? message : "");
+}
+int verbose_marker = 1;
+} // namespace
+
+pf_logger stderr_logger(bool verbose) {
+    pf_logger l;
+    l.fn = &log_to_stderr;
+    l.user = verbose ? static_cast<void*>(&verbose_marker) : nullptr;
+    return l;
+}
+
+double now_ms() {
+    using clock = std::chrono::steady_clock;
+    return std::chrono::duration<double, std::milli>(clock::now().time_since_epoch()).count();
+}
+
+std::string utc_timestamp() {
+    std::time_t t = std::time(nullptr);
+    std::tm tm{};
+#if defined(_WIN32)
+    gmtime_s(&tm, &t);
+#else
+    gmtime_r(&t, &tm);
+#endif
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return buf;
+}
+
+std::string host_name() {
+#if defined(__unix__) || defined(__APPLE__)
+    char buf[256] = {};
+    if (gethostname(buf, sizeof buf - 1) == 0 && buf[0]) return buf;
+#endif
+    return "unknown";
+}
+
+std::string scenes_dir() {
+    const char* env = std::getenv("PF_SCENES_DIR");
+    if (env && *env) return env;
+    return PF_DEFAULT_SCENES_DIR;
+}
+
+static bool file_exists(const std::string& p) {
+    std::ifstream f(p);
+    return f.good();
+}
+
+std::string resolve_scene_path(const std::string& arg) {
+    std::vector<std::string> tried;
+    auto attempt = [&](const std::string& p) {
+        tried.push_back(p);
+        return file_exists(p);
+    };
+    const bool has_ext = arg.size() > 5 && arg.compare(arg.size() - 5, 5, ".json") == 0;
+    if (attempt(arg)) return arg;
+    if (!has_ext && attempt(arg + ".json")) return arg + ".json";
+    const bool absolute = !arg.empty() && arg[0] == '/';
+    if (!absolute) {
+        const std::string dir = scenes_dir();
+        const std::string p = dir + "/" + arg;
+        if (attempt(p)) return p;
+        if (!has_ext && attempt(p + ".json")) return p + ".json";
+    }
+    std::string msg = "scene '" + arg + "' not found; tried:";
+    for (const auto& t : tried) msg += "\n  " + t;
+    msg += "\n(set PF_SCENES_DIR or pass a path)";
+    throw Error(msg);
+}
+
+Summary summarize(std::vector<double> v) {
+    Summary s;
+    s.n = v.size();
+    if (v.empty()) return s;
+    std::sort(v.begin(), v.end());
+    double sum = 0;
+    for (double x : v) sum += x;
+    s.mean = sum / double(v.size());
+    const size_t n = v.size();
+    s.median = (n % 2) ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    s.min = v.front();
+    s.max = v.back();
+    double var = 0;
+    for (double x : v) var += (x - s.mean) * (x - s.mean);
+    s.stddev = n > 1 ? std::sqrt(var / double(n - 1)) : 0.0;
+    return s;
+}
+
+uint32_t parse_u32(const std::string& text, const char* option, uint32_t lo, uint32_t hi) {
+    errno = 0;
+    char* end = nullptr;
+    const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
+    if (text.empty() || text[0] == '-' || errno != 0 || end == text.c_str() || *end != '\0' || v < lo || v > hi)
+        throw Error(std::string(option) + ": expected an integer in [" + std::to_string(lo) + ", " +
+                    std::to_string(hi) + "], got '" + text + "'");
+    return static_cast<uint32_t>(v);
+}
+
+float parse_float(const std::string& text, const char* option, float lo, float hi) {
+    errno = 0;
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (text.empty() || errno != 0 || end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) {
+        char buf[128];
+        std::snprintf(buf, sizeof buf, ": expected a number in [%g, %g], got '", double(lo), double(hi));
+        throw Error(std::string(option) + buf + text + "'");
+    }
+    return static_cast<float>(v);
+}
+
+void parse_size(const std::string& text, const char* option, uint32_t& w, uint32_t& h) {
+    const size_t x = text.find_first_of("xX");
+    if (x == std::string::npos) throw Error(std::string(option) + ": expected WxH, got '" + text + "'");
+    w = parse_u32(text.substr(0, x), option, 16, 16384);
+    h = parse_u32(text.substr(x + 1), option, 16, 16384);
+}
+
+std::string pf_version_string() {
+    const uint32_t v = pf_version();
+    return std::to_string(v / 10000) + "." + std::to_string((v / 100) % 100) + "." + std::to_string(v % 100);
+}
+
+} // namespace pfs

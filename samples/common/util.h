@@ -1,0 +1,58 @@
+// Small helpers shared by the pflip samples: error handling around pf_result, a stderr
+// logger, timing, statistics, command-line number parsing, scene lookup.
+#pragma once
+
+#include <pf/pf.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pfs {
+
+/// Thrown by the samples for any fatal error; main() prints what() and exits non-zero.
+struct Error : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// Throws Error("<what>: <pf_result_string> (code N)") unless r == PF_OK.
+void check(pf_result r, const char* what);
+
+/// A logger that prints pflip's messages to stderr. Errors and warnings always; info
+/// messages only when verbose.
+pf_logger stderr_logger(bool verbose);
+
+/// Monotonic wall clock in milliseconds.
+double now_ms();
+
+/// Current UTC time as ISO 8601, e.g. "2024-05-01T12:34:56Z".
+std::string utc_timestamp();
+
+/// Host name, or "unknown".
+std::string host_name();
+
+/// Scenes directory: $PF_SCENES_DIR if set, else the one compiled in (PF_SCENES_DIR in CMake).
+std::string scenes_dir();
+
+/// Finds a scene file: arg as a path, arg + ".json", then both inside scenes_dir().
+/// Throws Error listing the places tried when none exists.
+std::string resolve_scene_path(const std::string& arg);
+
+/// Descriptive statistics of a sample; all 0 for an empty one.
+struct Summary {
+    size_t n = 0;
+    double mean = 0, median = 0, min = 0, max = 0, stddev = 0;
+};
+Summary summarize(std::vector<double> values);
+
+/// Strict number parsing for command-line options; throw Error naming the option.
+uint32_t parse_u32(const std::string& text, const char* option, uint32_t lo, uint32_t hi);
+float parse_float(const std::string& text, const char* option, float lo, float hi);
+/// "WxH" -> w, h (each 16..16384).
+void parse_size(const std::string& text, const char* option, uint32_t& w, uint32_t& h);
+
+/// "0.1.0" from pf_version().
+std::string pf_version_string();
+
+} // namespace pfs
