@@ -2,13 +2,11 @@
 
 #include <glad/gl.h>
 
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
-
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
+#include <memory>
 #include <string>
+
+#include "egl_context.h"
 
 namespace pf::test {
 
@@ -17,60 +15,29 @@ std::string g_last_log;
 
 void record_log(void*, pf_log_level, pf_result, const char* message) { g_last_log = message; }
 
-struct Context {
-    EGLDisplay display = EGL_NO_DISPLAY;
-    EGLContext context = EGL_NO_CONTEXT;
-    bool ok = false;
-
-    Context() {
-        auto query_devices = reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
-        auto platform_display =
-            reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-        if (!platform_display) return;
-        const char* force = std::getenv("PF_EGL_PLATFORM");
-        const bool want_device = !force || std::strcmp(force, "surfaceless") != 0;
-        if (want_device && query_devices) {
-            EGLDeviceEXT devices[8];
-            EGLint count = 0;
-            if (query_devices(8, devices, &count) && count > 0) {
-                for (EGLint i = 0; i < count && display == EGL_NO_DISPLAY; ++i) {
-                    EGLDisplay d = platform_display(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
-                    if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr) && try_context(d)) display = d;
-                }
-            }
-        }
-        if (display == EGL_NO_DISPLAY) {
-            EGLDisplay d = platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
-            if (d != EGL_NO_DISPLAY && eglInitialize(d, nullptr, nullptr) && try_context(d)) display = d;
-        }
-        if (display == EGL_NO_DISPLAY) return;
-        ok = gladLoadGL(reinterpret_cast<GLADloadfunc>(eglGetProcAddress)) != 0;
-        if (ok) std::fprintf(stderr, "[test context] %s | %s\n", glGetString(GL_RENDERER), glGetString(GL_VERSION));
+// The test binary's one context (the samples' headless EGL context: NVIDIA device
+// platform when present, Mesa surfaceless otherwise), torn down at exit.
+std::unique_ptr<pfs::EglContext> make_context() {
+    try {
+        auto ctx = std::make_unique<pfs::EglContext>();
+        if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(pfs::get_proc))) return nullptr;
+        std::fprintf(stderr, "[test context] %s | %s | %s\n", ctx->platform().c_str(), ctx->gl_renderer().c_str(),
+                     ctx->gl_version().c_str());
+        return ctx;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "[test context] no GL 4.3 context: %s\n", e.what());
+        return nullptr;
     }
-
-    bool try_context(EGLDisplay d) {
-        if (!eglBindAPI(EGL_OPENGL_API)) return false;
-        const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 3,
-                                  EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-        EGLContext c = eglCreateContext(d, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
-        if (c == EGL_NO_CONTEXT) return false;
-        if (!eglMakeCurrent(d, EGL_NO_SURFACE, EGL_NO_SURFACE, c)) {
-            eglDestroyContext(d, c);
-            return false;
-        }
-        context = c;
-        return true;
-    }
-};
+}
 }  // namespace
 
 bool ensure_context() {
-    static Context ctx;  // the test binary's one context, torn down at exit
-    if (ctx.ok) eglMakeCurrent(ctx.display, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx.context);
-    return ctx.ok;
+    static const std::unique_ptr<pfs::EglContext> ctx = make_context();
+    if (ctx) ctx->make_current();
+    return ctx != nullptr;
 }
 
-pf_gl_proc get_proc(const char* name) { return reinterpret_cast<pf_gl_proc>(eglGetProcAddress(name)); }
+pf_gl_proc get_proc(const char* name) { return pfs::get_proc(name); }
 
 pf_sim_desc test_desc(uint32_t nx, uint32_t ny, uint32_t nz, float cell_size) {
     pf_sim_desc d = pf_default_sim_desc();
