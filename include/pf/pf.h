@@ -121,6 +121,19 @@ typedef enum pf_pass {
     PF_PASS_FORCE32 = 0x7fffffff
 } pf_pass;
 
+/** Passes of pf_render_ssf / pf_render_particles, timed in pf_stats.render_gpu_ms. */
+typedef enum pf_render_pass {
+    PF_RENDER_PASS_SCENE_COPY = 0,   /**< copy the engine's scene colour/depth (no feedback loops) */
+    PF_RENDER_PASS_THICKNESS = 1,    /**< additive sphere thickness */
+    PF_RENDER_PASS_DEPTH = 2,        /**< nearest sphere depth, occluded by the scene depth */
+    PF_RENDER_PASS_SMOOTH = 3,       /**< depth smoothing filter (all iterations) */
+    PF_RENDER_PASS_SHADE = 4,        /**< normals, refraction, absorption, Fresnel, specular */
+    PF_RENDER_PASS_RESOLVE = 5,      /**< write liquid colour and depth into the engine's target */
+    PF_RENDER_PASS_PARTICLES = 6,    /**< pf_render_particles sprites */
+    PF_RENDER_PASS_COUNT = 7,
+    PF_RENDER_PASS_FORCE32 = 0x7fffffff
+} pf_render_pass;
+
 /** Bits of pf_stats.flags: conditions detected on the GPU (sticky until pf_clear_flags). */
 enum {
     PF_FLAG_P2G_OVERFLOW = 1u << 0,    /**< a fixed-point accumulator would have overflowed */
@@ -144,6 +157,10 @@ typedef struct pf_stats {
     float gpu_total_ms;               /**< sum of gpu_ms */
     uint32_t dispatches[PF_PASS_COUNT]; /**< compute dispatches per pass in the last pf_step
                                              (0 for a pass that did not run) */
+    uint64_t render_frame;            /**< which render call render_gpu_ms belongs to (0: none yet) */
+    float render_gpu_ms[PF_RENDER_PASS_COUNT]; /**< GPU ms per render pass of that call */
+    float render_gpu_total_ms;        /**< sum of render_gpu_ms */
+    float render_cpu_ms;              /**< host time inside the last render call */
 } pf_stats;
 
 /** The simulation's particle buffers, for engines that draw particles themselves. pf_step
@@ -200,6 +217,113 @@ PF_API pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out);
 PF_API pf_result pf_get_stats(const pf_sim* sim, pf_stats* out);
 /** Clear the sticky PF_FLAG_* bits. */
 PF_API pf_result pf_clear_flags(pf_sim* sim);
+
+
+/* ---- rendering into the engine's frame ----------------------------------------------------- */
+
+/** How the engine maps depth: the projection matrix plus the clip-space depth range. */
+typedef enum pf_depth_convention {
+    PF_DEPTH_STANDARD = 0,       /**< GL default: NDC z in [-1, 1], window depth 0 = near, 1 = far */
+    PF_DEPTH_ZERO_TO_ONE = 1,    /**< glClipControl(.., GL_ZERO_TO_ONE): window depth = NDC z, 0 = near */
+    PF_DEPTH_REVERSED_Z = 2,     /**< glClipControl(.., GL_ZERO_TO_ONE) with a reversed projection: 1 = near */
+    PF_DEPTH_FORCE32 = 0x7fffffff
+} pf_depth_convention;
+
+/** The engine's camera for this frame. Matrices are column-major (OpenGL/glm layout). */
+typedef struct pf_camera {
+    float view[16];              /**< world -> eye */
+    float proj[16];              /**< eye -> clip, matching depth_convention */
+    int32_t viewport[4];         /**< x, y, width, height in target pixels (width, height 1..16384) */
+    float near_plane;            /**< eye distance of the near plane, > 0; nothing nearer is drawn */
+    float far_plane;             /**< eye distance of the far plane, > near_plane; nothing farther is drawn */
+    pf_depth_convention depth_convention;
+} pf_camera;
+
+/** Where pflip draws, and the engine's scene it draws over. All objects stay the engine's:
+ *  pflip reads them, never resizes or deletes them. */
+typedef struct pf_render_target {
+    uint32_t framebuffer;        /**< FBO to draw into (0 = default framebuffer); needs a depth attachment
+                                      if depth is to be written */
+    uint32_t scene_color;        /**< GL_TEXTURE_2D, single-sampled: the scene behind the liquid (refraction);
+                                      may be the target's own colour attachment (it is copied first) */
+    uint32_t scene_depth;        /**< GL_TEXTURE_2D depth texture of the scene (occlusion), or 0 for none */
+    uint32_t environment_cubemap;/**< GL_TEXTURE_CUBE_MAP reflected by the liquid, or 0 for the built-in sky */
+} pf_render_target;
+
+/** Depth smoothing filters of pf_render_ssf. */
+typedef enum pf_ssf_filter {
+    PF_SSF_FILTER_BILATERAL = 0,     /**< the original's separable bilateral filter */
+    PF_SSF_FILTER_NARROW_RANGE = 1,  /**< Truong & Yuksel 2018 narrow-range filter */
+    PF_SSF_FILTER_NONE = 2,          /**< raw sphere depth */
+    PF_SSF_FILTER_FORCE32 = 0x7fffffff
+} pf_ssf_filter;
+
+/** Which GPU path runs the screen-space passes (both give the same image). */
+typedef enum pf_ssf_path {
+    PF_SSF_PATH_COMPUTE = 0,     /**< compute shaders for filters and shading (fast on compute-heavy GPUs) */
+    PF_SSF_PATH_RASTER = 1,      /**< fragment shaders on full-screen triangles */
+    PF_SSF_PATH_FORCE32 = 0x7fffffff
+} pf_ssf_path;
+
+/** Look and quality of pf_render_ssf. Start from pf_default_ssf_params(). */
+typedef struct pf_ssf_params {
+    float particle_radius;       /**< sphere radius in metres, > 0; 0 = default (0.5 cell size) */
+    pf_ssf_filter filter;
+    uint32_t filter_radius;      /**< filter half-width in pixels, 1..64; 0 = default 8 */
+    uint32_t filter_iterations;  /**< filter applications, 1..16; 0 = default 1 (bilateral) / 2 (narrow range) */
+    float filter_depth_range;    /**< depth difference in metres treated as the same surface, > 0;
+                                      0 = default (2 particle radii) */
+    float absorption[3];         /**< Beer-Lambert absorption per metre of liquid, RGB, >= 0 */
+    float refraction;            /**< screen-space refraction offset per unit normal, in fractions of the view */
+    float fresnel_f0;            /**< reflectance at normal incidence (water 0.02), 0..1 */
+    float specular;              /**< strength of the sun highlight, >= 0 */
+    float shininess;             /**< Blinn-Phong exponent of the highlight, 1..10000 */
+    float light_direction[3];    /**< world direction towards the sun (normalised internally), non-zero */
+    pf_ssf_path path;
+} pf_ssf_params;
+
+/** What colours the debug sprites of pf_render_particles. */
+typedef enum pf_particle_color {
+    PF_PARTICLE_COLOR_SPEED = 0,       /**< |v| */
+    PF_PARTICLE_COLOR_VELOCITY_X = 1,  /**< v.x (signed) */
+    PF_PARTICLE_COLOR_VELOCITY_Y = 2,  /**< v.y (signed) */
+    PF_PARTICLE_COLOR_VELOCITY_Z = 3,  /**< v.z (signed) */
+    PF_PARTICLE_COLOR_HEIGHT = 4,      /**< world y */
+    PF_PARTICLE_COLOR_UNIFORM = 5,     /**< one colour: color_low */
+    PF_PARTICLE_COLOR_FORCE32 = 0x7fffffff
+} pf_particle_color;
+
+/** Debug particle view. Start from pf_default_particle_params(). */
+typedef struct pf_particle_params {
+    float particle_radius;       /**< sprite radius in metres; 0 = default (0.5 cell size) */
+    pf_particle_color color_by;
+    float range[2];              /**< value mapped to color_low .. color_high (range[0] != range[1]) */
+    float color_low[3];          /**< RGB at range[0] */
+    float color_high[3];         /**< RGB at range[1] */
+} pf_particle_params;
+
+/** Default liquid look: clear water, bilateral filter, compute path. */
+PF_API pf_ssf_params pf_default_ssf_params(void);
+/** Default debug view: coloured by speed 0..3 m/s, blue to white. */
+PF_API pf_particle_params pf_default_particle_params(void);
+/** Stable short name of a render pass ("thickness", "smooth", ...); "unknown" if out of range. */
+PF_API const char* pf_render_pass_name(pf_render_pass pass);
+
+/** Draws the liquid with screen-space fluid rendering into target->framebuffer over the engine's
+ *  scene: colour where there is liquid (the rest of the framebuffer is untouched) and, if the
+ *  target has a depth attachment, the liquid's depth there. params may be NULL (defaults). */
+PF_API pf_result pf_render_ssf(pf_sim* sim, const pf_camera* camera, const pf_render_target* target,
+                               const pf_ssf_params* params);
+/** Draws every particle as a shaded sphere sprite, depth-tested against the target's depth buffer
+ *  (target->scene_color, scene_depth and environment_cubemap are ignored). params may be NULL. */
+PF_API pf_result pf_render_particles(pf_sim* sim, const pf_camera* camera, const pf_render_target* target,
+                                     const pf_particle_params* params);
+
+/* ---- interaction ---------------------------------------------------------------------------- */
+
+/** Adds velocity dv (m/s) to the particles within radius of center, falling off smoothly to 0 at
+ *  the rim (splashes, a hand in the water). Takes effect at once on the GPU; speeds stay <= max_speed. */
+PF_API pf_result pf_push(pf_sim* sim, const float center[3], float radius, const float dv[3]);
 
 #ifdef __cplusplus
 }

@@ -31,6 +31,11 @@
 #define PF_LOC_FILL_COUNT 0
 #define PF_LOC_FILL_VALUE 1
 
+/* explicit uniform locations of the push kernel */
+#define PF_LOC_PUSH_CENTER_RADIUS 0
+#define PF_LOC_PUSH_DV_MAX_SPEED 1
+#define PF_LOC_PUSH_COUNT 2
+
 /* uniform block with the per-step constants (common/sim.glsl, src/sim/sim_uniforms.h) */
 #define PF_UBO_SIM 0
 

@@ -151,6 +151,19 @@ pf_result pf_step(pf_sim* sim, float frame_dt) {
     return guarded(s.log(), "pf_step", [&] { return s.step(frame_dt); });
 }
 
+pf_result pf_push(pf_sim* sim, const float center[3], float radius, const float dv[3]) {
+    PF_CHECK_SIM(sim, "pf_push");
+    pf::Simulation& s = *sim->impl;
+    if (!center || !dv) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_push: center and dv must not be NULL");
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(center[a]) || !std::isfinite(dv[a]))
+            return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_push: center and dv must be finite");
+    }
+    if (!(std::isfinite(radius) && radius > 0.0f))
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_push: radius must be finite and > 0, got " + std::to_string(radius));
+    return guarded(s.log(), "pf_push", [&] { return s.push(center, radius, dv); });
+}
+
 pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out) {
     PF_CHECK_SIM(sim, "pf_get_params");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_params: out must not be NULL");

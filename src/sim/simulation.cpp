@@ -150,7 +150,7 @@ void Simulation::dispatch(ProgramId program, uint64_t invocations, pf_pass pass)
     gl_.UseProgram(programs_->built(program));
     gl_.DispatchCompute(GLuint(gx), GLuint(gy), 1);
     gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    ++dispatches_[pass];
+    if (pass < PF_PASS_COUNT) ++dispatches_[pass];
 }
 
 void Simulation::fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, pf_pass pass) {
@@ -385,6 +385,27 @@ pf_result Simulation::clear_particles() {
     pressure_current_ = 0;
     added_speed_ = 0.0f;
     gpu_max_speed_ = 0.0f;
+    return PF_OK;
+}
+
+pf_result Simulation::push(const float center[3], float radius, const float dv[3]) {
+    if (particle_count_ == 0) return PF_OK;
+    gl::StateGuard guard(gl_, gl_state_);
+    std::string error;
+    const GLuint p = programs_->get(ProgramId::push, error);
+    if (!p) return log_.error(PF_ERROR_SHADER_COMPILE, "pf_push: " + error);
+    gl_.ProgramUniform4f(p, PF_LOC_PUSH_CENTER_RADIUS, center[0], center[1], center[2], radius);
+    gl_.ProgramUniform4f(p, PF_LOC_PUSH_DV_MAX_SPEED, dv[0], dv[1], dv[2], desc_.max_speed);
+    gl_.ProgramUniform1ui(p, PF_LOC_PUSH_COUNT, particle_count_);
+    bind(PF_SLOT_PARTICLE_POS, pos_);
+    bind(PF_SLOT_PARTICLE_VEL, vel_);
+    bind(PF_SLOT_STATUS, status_);
+    dispatch(ProgramId::push, particle_count_, PF_PASS_COUNT);  // not part of a step's counts
+    // The push may make particles faster than the last readback knew: CFL must see it.
+    const float known = added_at_step_ > status_step_ ? std::max(added_speed_, gpu_max_speed_) : gpu_max_speed_;
+    added_speed_ = std::min(desc_.max_speed, known + std::sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]));
+    added_at_step_ = steps_ + 1;
+    gl_.MemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     return PF_OK;
 }
 

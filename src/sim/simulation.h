@@ -32,6 +32,8 @@ public:
     pf_result add_particles(const float* xyz, const float* vel, uint32_t n);
     pf_result fill_box(const float lo[3], const float hi[3], const float vel[3]);
     pf_result clear_particles();
+    // pf_push: velocity impulse in a sphere (arguments validated by the API).
+    pf_result push(const float center[3], float radius, const float dv[3]);
     pf_result step(float frame_dt);
     pf_result set_params(const pf_sim_params& params);
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
