@@ -282,8 +282,10 @@ pf_result Simulation::step(float frame_dt) {
     dispatches_ = {};
     timers_->begin_step(steps_, substeps);
 
-    const uint32_t zero[PF_STATUS_WORDS] = {};
-    status_.upload(0, sizeof(zero), zero);
+    // The max-speed word restarts every step; flag bits accumulate (a pf_push between steps
+    // may have set one) until pf_clear_flags.
+    const uint32_t zero = 0;
+    status_.upload(PF_STATUS_MAX_SPEED * 4, 4, &zero);
     upload_uniforms(frame_dt / float(substeps));
     for (uint32_t s = 0; s < substeps; ++s) run_substep();
 
@@ -326,7 +328,7 @@ void Simulation::poll_status() const {
             gl::StateGuard guard(gl_, gl_state_);
             readback_[s].download(0, sizeof(words), words);
         }
-        flags_ |= words[PF_STATUS_FLAGS];
+        if (fence_step_[s] > flags_cleared_at_step_) flags_ |= words[PF_STATUS_FLAGS];
         if (fence_step_[s] > status_step_) {
             status_step_ = fence_step_[s];
             std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
@@ -376,6 +378,14 @@ pf_result Simulation::fill_box(const float lo[3], const float hi[3], const float
         for (size_t i = 0; i < v.size(); ++i) v[i] = vel[i % 3];
     }
     return add_particles(xyz.data(), vel ? v.data() : nullptr, uint32_t(xyz.size() / 3));
+}
+
+void Simulation::clear_flags() {
+    flags_ = 0;
+    flags_cleared_at_step_ = steps_;  // readbacks still in flight predate the clear
+    gl::StateGuard guard(gl_, gl_state_);
+    const uint32_t zero = 0;
+    status_.upload(PF_STATUS_FLAGS * 4, 4, &zero);
 }
 
 pf_result Simulation::clear_particles() {

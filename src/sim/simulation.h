@@ -39,7 +39,7 @@ public:
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
     void gl_buffers(pf_gl_buffers& out) const;
     void stats(pf_stats& out) const;
-    void clear_flags() { flags_ = 0; }
+    void clear_flags();
 
     const pf_sim_desc& desc() const { return desc_; }
     const pf_sim_params& params() const { return desc_.params; }
@@ -93,6 +93,7 @@ private:
     mutable uint64_t status_step_ = 0;     // step of the newest readback
     mutable float gpu_max_speed_ = 0.0f;   // its max speed
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
+    uint64_t flags_cleared_at_step_ = 0;   // pf_clear_flags: ignore flags read back from older steps
     float added_speed_ = 0.0f;             // fastest particle added since...
     uint64_t added_at_step_ = 0;           // ...this step (no readback covers it yet)
 
