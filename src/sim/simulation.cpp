@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <string>
 
@@ -32,6 +33,12 @@ GLADapiproc load_gl(void* user, const char* name) {
 }
 
 int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
+
+std::string hex(GLenum e) {
+    char buf[16];
+    std::snprintf(buf, sizeof(buf), "0x%04X", unsigned(e));
+    return buf;
+}
 }  // namespace
 
 Simulation::Simulation(const pf_sim_desc& desc) : desc_(desc), log_(desc.logger) {}
@@ -73,7 +80,7 @@ pf_result Simulation::init() {
     gl_state_.query_buffer = major > 4 || minor >= 4;
     // A GL error the engine left pending would be mistaken for ours below.
     if (GLenum pending = gl_.GetError(); pending != GL_NO_ERROR) {
-        log_.warning("pf_create: a GL error (0x" + std::to_string(pending) + ") was pending before the call; it was consumed");
+        log_.warning("pf_create: a GL error (" + hex(pending) + ") was pending before the call; it was consumed");
     }
 
     const auto& n = desc_.grid_size;
@@ -115,8 +122,8 @@ pf_result Simulation::init() {
     for (auto& b : readback_) b = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_STREAM_READ);
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                          "pf_create: allocating " + std::to_string((np * 32 + size_t(faces_) * 28 + size_t(cells_) * 20) >> 20) +
-                              " MiB of GPU buffers failed (GL error 0x" + std::to_string(err) + ")");
+                          "pf_create: allocating " + std::to_string((np * 32 + size_t(faces_) * 24 + size_t(cells_) * 20) >> 20) +
+                              " MiB of GPU buffers failed (GL error " + hex(err) + ")");
     }
 
     programs_ = std::make_unique<gl::ProgramCache>(gl_);
