@@ -205,6 +205,7 @@ pf_result pf_get_stats(const pf_sim* sim, pf_stats* out) {
     PF_CHECK_SIM(sim, "pf_get_stats");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_stats: out must not be NULL");
     sim->impl->stats(*out);
+    if (sim->renderer) sim->renderer->stats(*out);
     return PF_OK;
 }
 

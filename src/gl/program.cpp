@@ -1,7 +1,5 @@
 #include "gl/program.h"
 
-#include <vector>
-
 namespace pf::gl {
 
 namespace {
@@ -20,33 +18,65 @@ std::string program_log(const Api& gl, GLuint program) {
     if (len > 1) gl.GetProgramInfoLog(program, len, nullptr, buf.data());
     return buf.data();
 }
+
+const char* stage_name(GLenum type) {
+    switch (type) {
+        case GL_COMPUTE_SHADER: return "compute";
+        case GL_VERTEX_SHADER: return "vertex";
+        case GL_FRAGMENT_SHADER: return "fragment";
+        default: return "shader";
+    }
+}
 }  // namespace
 
-GLuint build_compute_program(const Api& gl, const ExpandedSource& src, const std::string& name,
-                             std::string& error) {
-    if (!src.error.empty()) {
-        error = name + ": " + src.error;
-        return 0;
+std::vector<ShaderStage> program_stages(const ProgramInfo& info) {
+    std::vector<ShaderStage> stages;
+    if (!info.fragment) {
+        stages.push_back({GL_COMPUTE_SHADER, expand_shader(info.file, info.defines)});
+    } else {
+        stages.push_back({GL_VERTEX_SHADER, expand_shader(info.file, info.defines)});
+        stages.push_back({GL_FRAGMENT_SHADER, expand_shader(info.fragment, info.defines)});
     }
-    GLuint shader = gl.CreateShader(GL_COMPUTE_SHADER);
-    const char* text = src.text.c_str();
-    gl.ShaderSource(shader, 1, &text, nullptr);
-    gl.CompileShader(shader);
-    GLint ok = GL_FALSE;
-    gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        error = name + ": compile failed:\n" + annotate_log(shader_log(gl, shader), src.files);
-        gl.DeleteShader(shader);
-        return 0;
+    return stages;
+}
+
+GLuint build_program(const Api& gl, const std::vector<ShaderStage>& stages, const std::string& name,
+                     std::string& error) {
+    for (const ShaderStage& s : stages) {
+        if (!s.source.error.empty()) {
+            error = name + ": " + s.source.error;
+            return 0;
+        }
+    }
+    std::vector<GLuint> shaders;
+    auto release = [&] {
+        for (GLuint sh : shaders) gl.DeleteShader(sh);
+    };
+    for (const ShaderStage& s : stages) {
+        GLuint shader = gl.CreateShader(s.type);
+        shaders.push_back(shader);
+        const char* text = s.source.text.c_str();
+        gl.ShaderSource(shader, 1, &text, nullptr);
+        gl.CompileShader(shader);
+        GLint ok = GL_FALSE;
+        gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+        if (!ok) {
+            error = name + ": " + stage_name(s.type) + " compile failed:\n" +
+                    annotate_log(shader_log(gl, shader), s.source.files);
+            release();
+            return 0;
+        }
     }
     GLuint program = gl.CreateProgram();
-    gl.AttachShader(program, shader);
+    for (GLuint sh : shaders) gl.AttachShader(program, sh);
     gl.LinkProgram(program);
-    gl.DetachShader(program, shader);
-    gl.DeleteShader(shader);
+    for (GLuint sh : shaders) gl.DetachShader(program, sh);
+    release();
+    GLint ok = GL_FALSE;
     gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
     if (!ok) {
-        error = name + ": link failed:\n" + annotate_log(program_log(gl, program), src.files);
+        // Link logs may point into either stage; the first stage's file table is the usual culprit.
+        error = name + ": link failed:\n" + annotate_log(program_log(gl, program), stages.front().source.files);
         gl.DeleteProgram(program);
         return 0;
     }
@@ -63,7 +93,7 @@ GLuint ProgramCache::get(ProgramId id, std::string& error) {
     GLuint& slot = programs_[static_cast<size_t>(id)];
     if (slot) return slot;
     const ProgramInfo& info = program_info(id);
-    slot = build_compute_program(gl_, expand_shader(info.file, info.defines), info.id, error);
+    slot = build_program(gl_, program_stages(info), info.id, error);
     return slot;
 }
 

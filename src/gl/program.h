@@ -1,19 +1,28 @@
-// Compute programs built from the embedded sources, compiled on first use and cached per
-// simulation (programs are per-context objects; nothing is shared globally).
+// Programs built from the embedded sources (compute, or vertex + fragment), compiled on first
+// use and cached per owner (programs are per-context objects; nothing is shared globally).
 #pragma once
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "gl/gl.h"
 #include "gl/shader_source.h"
 
 namespace pf::gl {
 
-// Compiles and links one compute shader from complete source text. On failure returns 0
-// and fills `error` with the annotated compile/link log.
-GLuint build_compute_program(const Api& gl, const ExpandedSource& src, const std::string& name,
-                             std::string& error);
+// One stage of a program: its GL shader type and complete source text.
+struct ShaderStage {
+    GLenum type;
+    ExpandedSource source;
+};
+
+// Compiles every stage and links them into one program. On failure returns 0 and fills
+// `error` with the annotated compile/link log.
+GLuint build_program(const Api& gl, const std::vector<ShaderStage>& stages, const std::string& name,
+                     std::string& error);
+// The stages of one permutations.inc line, expanded with its #defines.
+std::vector<ShaderStage> program_stages(const ProgramInfo& info);
 
 class ProgramCache {
 public:

@@ -9,8 +9,10 @@ namespace pf::gl {
 
 namespace {
 const std::vector<ProgramInfo> kPrograms = {
-#define PF_PROGRAM(id, file, defines) {#id, file, defines},
+#define PF_PROGRAM(id, file, defines) {#id, file, nullptr, defines},
+#define PF_RASTER_PROGRAM(id, vertex, fragment, defines) {#id, vertex, fragment, defines},
 #include "permutations.inc"
+#undef PF_RASTER_PROGRAM
 #undef PF_PROGRAM
 };
 

@@ -13,16 +13,21 @@ struct EmbeddedShaderFile {
 extern const EmbeddedShaderFile kEmbeddedShaderFiles[];
 extern const unsigned kEmbeddedShaderFileCount;
 
-// One line of shaders/permutations.inc.
+// One line of shaders/permutations.inc: a compute program (PF_PROGRAM: `file` is the .comp,
+// `fragment` is null) or a raster program (PF_RASTER_PROGRAM: `file` is the .vert and
+// `fragment` the .frag). `defines` go in front of every stage of the program.
 struct ProgramInfo {
     const char* id;
     const char* file;
+    const char* fragment;
     const char* defines;
 };
 
 enum class ProgramId {
 #define PF_PROGRAM(id, file, defines) id,
+#define PF_RASTER_PROGRAM(id, vertex, fragment, defines) id,
 #include "permutations.inc"
+#undef PF_RASTER_PROGRAM
 #undef PF_PROGRAM
     count
 };

@@ -1,0 +1,59 @@
+/* Binding points and constants shared by the renderer (src/render) and the render shaders
+ * (shaders/render). Valid C and GLSL: only #define lines. The render state guard saves
+ * exactly the texture units 0..PF_RENDER_TEX_UNITS-1 and image units
+ * 0..PF_RENDER_IMAGE_UNITS-1, so every binding below must stay inside those ranges. */
+#ifndef PF_RENDER_SLOTS_H
+#define PF_RENDER_SLOTS_H
+
+/* uniform block with the camera and look of one render call (common/render.glsl,
+ * src/render/render_uniforms.h); binding 0 belongs to the simulation's block */
+#define PF_UBO_RENDER 1
+
+/* texture units (sampler bindings) */
+#define PF_TEX_SCENE_COLOR 0   /* copy of the engine's scene colour */
+#define PF_TEX_SCENE_DEPTH 1   /* copy of the engine's scene depth (window depth, engine convention) */
+#define PF_TEX_LIQUID_DEPTH 2  /* linear eye depth of the liquid surface (filter input / shading) */
+#define PF_TEX_THICKNESS 3     /* liquid thickness along the view ray, metres */
+#define PF_TEX_ENVIRONMENT 4   /* the engine's environment cube map */
+#define PF_TEX_SHADED_COLOR 5  /* shaded liquid colour, alpha 1 where there is liquid */
+#define PF_TEX_SHADED_DEPTH 6  /* liquid window depth in the engine's convention */
+#define PF_RENDER_TEX_UNITS 7
+
+/* image units (compute path) */
+#define PF_IMG_SMOOTH_OUT 0
+#define PF_IMG_SHADE_COLOR 0
+#define PF_IMG_SHADE_DEPTH 1
+#define PF_RENDER_IMAGE_UNITS 2
+
+/* vertex attributes of the sphere sprites: one vec4 per particle (instanced) */
+#define PF_ATTR_POSITION 0
+#define PF_ATTR_VELOCITY 1
+
+/* varying locations between render/sphere.vert and its fragment shaders */
+#define PF_VARY_THROUGH 0
+#define PF_VARY_CENTER 1
+#define PF_VARY_VALUE 2
+
+/* explicit uniform locations */
+#define PF_LOC_SMOOTH_DIRECTION 0 /* ivec2: (1,0) horizontal pass, (0,1) vertical pass */
+
+/* compute tiles of the screen-space passes */
+#define PF_RENDER_TILE 8
+
+/* values of pf.h enums used by shaders (static_assert'ed equal in src/render) */
+#define PF_SSF_FILTER_BILATERAL_ID 0
+#define PF_SSF_FILTER_NARROW_RANGE_ID 1
+#define PF_DEPTH_STANDARD_ID 0
+#define PF_DEPTH_ZERO_TO_ONE_ID 1
+#define PF_DEPTH_REVERSED_Z_ID 2
+#define PF_COLOR_SPEED_ID 0
+#define PF_COLOR_VELOCITY_X_ID 1
+#define PF_COLOR_VELOCITY_Y_ID 2
+#define PF_COLOR_VELOCITY_Z_ID 3
+#define PF_COLOR_HEIGHT_ID 4
+#define PF_COLOR_UNIFORM_ID 5
+
+/* linear eye depth stored where a pixel holds no liquid (real depths are >= near > 0) */
+#define PF_NO_LIQUID 0.0
+
+#endif

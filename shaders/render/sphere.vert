@@ -1,0 +1,56 @@
+// Sphere sprite: one camera-facing quad per particle (instanced, 4 strip vertices), large
+// enough to hold the sphere's projected silhouette; the fragment shaders intersect the
+// camera ray with the sphere. Quads rather than GL points: points are clipped by their centre
+// (spheres at the screen edge would pop) and their size is capped by GL_POINT_SIZE_RANGE.
+// gl_Position.z is 0.5 w, inside the clip range of both glClipControl depth modes: the
+// fragment shaders write gl_FragDepth themselves and cull by near/far.
+#include "common/render.glsl"
+
+#ifndef PF_SPHERE_VALUE
+#define PF_SPHERE_VALUE 0
+#endif
+
+layout(location = PF_ATTR_POSITION) in vec4 a_position;
+#if PF_SPHERE_VALUE
+layout(location = PF_ATTR_VELOCITY) in vec4 a_velocity;
+layout(location = PF_VARY_VALUE) flat out float v_value;  // the scalar the debug view colours by
+#endif
+
+layout(location = PF_VARY_THROUGH) out vec3 v_through;      // eye-space point on the quad: the camera ray passes through it
+layout(location = PF_VARY_CENTER) flat out vec3 v_center;  // sphere centre, eye space
+
+// Outside every clip volume: the quad is dropped.
+const vec4 kCulled = vec4(2.0, 2.0, 2.0, 1.0);
+
+void main() {
+    float r = rnd.sphere.x;
+    vec3 c = (rnd.view * vec4(a_position.xyz, 1.0)).xyz;
+    v_center = c;
+#if PF_SPHERE_VALUE
+    int mode = rnd.modes.x;
+    v_value = mode == PF_COLOR_SPEED_ID ? length(a_velocity.xyz)
+            : mode == PF_COLOR_VELOCITY_X_ID ? a_velocity.x
+            : mode == PF_COLOR_VELOCITY_Y_ID ? a_velocity.y
+            : mode == PF_COLOR_VELOCITY_Z_ID ? a_velocity.z
+            : mode == PF_COLOR_HEIGHT_ID ? a_position.y : rnd.color_low.w;
+#endif
+    // Wholly outside [near, far], or the camera inside the sphere: nothing to draw.
+    float dist = length(c);
+    if (-c.z + r < rnd.planes.x || -c.z - r > rnd.planes.y || (!render_orthographic() && dist <= r * 1.0001)) {
+        gl_Position = kCulled;
+        v_through = vec3(0.0);
+        return;
+    }
+    // Perspective: a quad through the centre, normal to the eye-centre axis, with half size
+    // r d / sqrt(d^2 - r^2): the section of the silhouette cone there. Orthographic: facing -z.
+    vec3 axis = render_orthographic() ? vec3(0.0, 0.0, 1.0) : c / dist;
+    float half_size = render_orthographic() ? r : r * dist / sqrt(dist * dist - r * r);
+    vec3 helper = abs(axis.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+    vec3 t = normalize(cross(helper, axis));
+    vec3 b = cross(axis, t);
+    vec2 corner = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1)) * 2.0 - 1.0;
+    vec3 p = c + half_size * (corner.x * t + corner.y * b);
+    v_through = p;
+    vec4 clip = rnd.proj * vec4(p, 1.0);
+    gl_Position = vec4(clip.xy, 0.5 * clip.w, clip.w);
+}

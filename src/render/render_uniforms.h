@@ -1,0 +1,39 @@
+// Host mirror of the RenderUniforms std140 block in shaders/common/render.glsl, and how a
+// render call's camera and parameters fill it. Only mat4 and 16-byte vectors, so std140
+// offsets equal C++ offsets.
+#pragma once
+#include <cstdint>
+
+#include "pf/pf.h"
+
+namespace pf {
+
+struct RenderUniforms {
+    float view[16];        // world -> eye
+    float proj[16];        // eye -> clip (engine convention)
+    float inv_proj[16];    // clip -> eye
+    float inv_view[16];    // eye -> world
+    float viewport[4];     // width, height, 1/width, 1/height
+    float planes[4];       // near, far, depth convention, 1 if orthographic
+    float sphere[4];       // particle radius, filter radius px, filter depth range m, 1 if scene depth
+    float absorption[4];   // rgb per metre, refraction
+    float light[4];        // world direction to the sun (unit), specular strength
+    float surface[4];      // fresnel f0, shininess, 1 if environment cube map, NDC y sign
+    float color_low[4];    // rgb, range[0]
+    float color_high[4];   // rgb, range[1]
+    int32_t modes[4];      // colour_by, -, -, -
+    int32_t target[4];     // viewport x, y, -, -
+};
+static_assert(sizeof(RenderUniforms) == 4 * 64 + 10 * 16, "RenderUniforms must match the std140 block");
+
+// Camera part: matrices (inverses in double precision), viewport, planes. `y_sign` is -1 when
+// the engine's clip origin is GL_UPPER_LEFT. The camera must have passed validation (the
+// matrices are invertible).
+void fill_camera(const pf_camera& camera, float y_sign, RenderUniforms& u);
+// Liquid look; `params` has its defaults resolved; `has_scene_depth` / `has_environment` say
+// which engine textures were given.
+void fill_ssf(const pf_ssf_params& params, bool has_scene_depth, bool has_environment, RenderUniforms& u);
+// Debug view colours; `params` has its defaults resolved.
+void fill_particles(const pf_particle_params& params, RenderUniforms& u);
+
+}  // namespace pf

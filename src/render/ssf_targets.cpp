@@ -1,0 +1,57 @@
+#include "render/ssf_targets.h"
+
+namespace pf {
+
+namespace {
+constexpr GLenum kFormats[SsfTargets::texture_count] = {
+    GL_RGBA16F, 0 /* engine's depth format */, GL_R32F, GL_R32F, GL_DEPTH_COMPONENT32F,
+    GL_R32F,    GL_R32F, GL_RGBA16F, GL_R32F};
+}  // namespace
+
+SsfTargets::SsfTargets(const gl::Api& gl) : gl_(gl) {
+    for (gl::Object& f : framebuffers_) f = gl::Object(gl_, gl::ObjectKind::framebuffer);
+}
+
+void SsfTargets::allocate(Texture t, GLenum format) {
+    textures_[t] = gl::Object(gl_, gl::ObjectKind::texture);
+    gl_.BindTexture(GL_TEXTURE_2D, textures_[t].id());
+    gl_.TexStorage2D(GL_TEXTURE_2D, 1, format, width_, height_);
+    gl_.BindTexture(GL_TEXTURE_2D, 0);
+}
+
+void SsfTargets::attach(Framebuffer f, GLenum attachment, Texture t) {
+    gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers_[f].id());
+    gl_.FramebufferTexture2D(GL_DRAW_FRAMEBUFFER, attachment, GL_TEXTURE_2D, textures_[t].id(), 0);
+}
+
+void SsfTargets::attach_all() {
+    attach(copy_draw, GL_COLOR_ATTACHMENT0, scene_color);
+    attach(copy_draw, GL_DEPTH_ATTACHMENT, scene_depth);  // 0 when there is no copy
+    attach(thickness_fb, GL_COLOR_ATTACHMENT0, thickness);
+    attach(depth_fb, GL_COLOR_ATTACHMENT0, raw_depth);
+    attach(depth_fb, GL_DEPTH_ATTACHMENT, depth_buffer);
+    attach(smooth_a_fb, GL_COLOR_ATTACHMENT0, smooth_a);
+    attach(smooth_b_fb, GL_COLOR_ATTACHMENT0, smooth_b);
+    attach(shade_fb, GL_COLOR_ATTACHMENT0, shaded_color);
+    attach(shade_fb, GL_COLOR_ATTACHMENT1, shaded_depth);
+    const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    gl_.DrawBuffers(2, two);  // shade_fb is still bound
+}
+
+void SsfTargets::ensure(int width, int height, GLenum depth_format) {
+    const bool resized = width != width_ || height != height_;
+    const bool new_depth = depth_format != 0 && depth_format != depth_format_;
+    if (!resized && !new_depth) return;
+    width_ = width;
+    height_ = height;
+    if (resized) {
+        for (int t = 0; t < texture_count; ++t) {
+            if (t != scene_depth) allocate(Texture(t), kFormats[t]);
+        }
+    }
+    if (depth_format != 0) depth_format_ = depth_format;
+    if (depth_format_ != 0) allocate(scene_depth, depth_format_);
+    attach_all();
+}
+
+}  // namespace pf
