@@ -1,0 +1,21 @@
+# CTest driver of the pf_viewer smoke test: runs the viewer under xvfb-run for a few frames with
+# --screenshot, then checks the picture with pf_png_check.
+#   -DXVFB_RUN=... -DVIEWER=... -DCHECK=... -DOUT=path.png -DSIZE=WxH -DSCENES=dir
+foreach(v XVFB_RUN VIEWER CHECK OUT SIZE)
+  if(NOT DEFINED ${v})
+    message(FATAL_ERROR "viewer_smoke.cmake: ${v} not set")
+  endif()
+endforeach()
+file(REMOVE "${OUT}")
+set(ENV{PF_SCENES_DIR} "${SCENES}")
+execute_process(
+  COMMAND "${XVFB_RUN}" -a -s "-screen 0 1280x720x24"
+          "${VIEWER}" --scene dam_break_small --size ${SIZE} --frames 6 --screenshot "${OUT}"
+  RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "pf_viewer under xvfb-run failed (${rc})")
+endif()
+execute_process(COMMAND "${CHECK}" "${OUT}" ${SIZE} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the viewer's screenshot ${OUT} failed the check")
+endif()

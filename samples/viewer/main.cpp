@@ -1,0 +1,803 @@
+// pf_viewer — interactive pflip viewer (GLFW window, Dear ImGui).
+//
+// The frame is built the way a game engine builds it: the sample's world (sky, floor, tank,
+// crates; samples/common/world.h) is drawn with the sample's own GL loader into the sample's
+// own framebuffer (colour + depth textures), pflip draws the liquid into that framebuffer
+// (pf_render_ssf, or pf_render_particles for the debug view), the result is blitted to the
+// window and ImGui goes on top.
+//
+// Mouse: right drag (or Alt + left drag) orbits, middle drag (or Shift + right drag) pans,
+// the wheel zooms, left drag pushes the liquid (pf_push along the drag). Keys: Space pauses,
+// S steps once, R resets the scene, P toggles SSF / particles, Esc quits.
+//
+// --screenshot PATH --frames N runs N frames, saves the window (UI included) to PATH (PNG, or
+// JPEG for .jpg) and exits: scripted screenshots, and the CTest smoke test under xvfb-run.
+
+#include <glad/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <pf/pf.h>
+
+#include "camera.h"
+#include "gl_util.h"
+#include "image_write.h"
+#include "scene.h"
+#include "util.h"
+#include "world.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+using pfs::Error;
+
+// ---- command line ---------------------------------------------------------------------------
+
+struct Options {
+    std::string scene = "dam_break_small";
+    uint32_t width = 1280, height = 720;
+    bool ssf = true;
+    pf_depth_convention depth = PF_DEPTH_STANDARD;
+    std::string screenshot;
+    uint32_t frames = 0;        // 0: run until closed (with --screenshot: default 60)
+    bool paused = false;
+    bool vsync = true;
+    bool verbose = false;
+    // --drag: a synthetic left drag (scripted pushes, tests)
+    bool drag = false;
+    float drag_from[2] = {0, 0}, drag_to[2] = {0, 0};
+    uint32_t drag_first = 5, drag_last = 15;
+};
+
+void print_usage(std::FILE* f) {
+    std::fprintf(f,
+                 "usage: pf_viewer [options]\n"
+                 "  --scene PATH|NAME   scene file, or a name in the scenes directory (default dam_break_small)\n"
+                 "  --size WxH          window size (default 1280x720)\n"
+                 "  --render ssf|particles  start with pflip's screen-space fluid (default) or its particles\n"
+                 "  --depth standard|zero_to_one|reversed_z  camera depth convention (default standard)\n"
+                 "  --paused            start paused\n"
+                 "  --no-vsync          do not wait for the display between frames\n"
+                 "  --screenshot PATH   after --frames frames save the window to PATH (.png, or .jpg) and exit\n"
+                 "  --frames N          frames to run before the screenshot, or before exiting (default 60\n"
+                 "                      with --screenshot, otherwise until the window closes)\n"
+                 "  --drag X0,Y0,X1,Y1[,F0,F1]  scripted left drag (a push) from window pixel X0,Y0 to X1,Y1\n"
+                 "                      over frames F0..F1 (default 5..15)\n"
+                 "  --verbose           pflip's info messages\n"
+                 "  -h, --help          this text\n"
+                 "mouse: right drag / Alt+left drag orbit, middle drag / Shift+right drag pan, wheel zoom,\n"
+                 "       left drag pushes the liquid. keys: Space pause, S step, R reset, P SSF/particles, Esc quit\n"
+                 "scenes directory: %s (PF_SCENES_DIR)\n",
+                 pfs::scenes_dir().c_str());
+}
+
+Options parse_args(int argc, char** argv) {
+    Options o;
+    bool frames_set = false;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw Error(a + " needs a value (see --help)");
+            return argv[++i];
+        };
+        if (a == "-h" || a == "--help") {
+            print_usage(stdout);
+            std::exit(0);
+        } else if (a == "--scene") {
+            o.scene = value();
+        } else if (a == "--size") {
+            pfs::parse_size(value(), "--size", o.width, o.height);
+        } else if (a == "--render") {
+            const std::string v = value();
+            if (v == "ssf") o.ssf = true;
+            else if (v == "particles") o.ssf = false;
+            else throw Error("--render: expected ssf or particles, got '" + v + "'");
+        } else if (a == "--depth") {
+            o.depth = pfs::parse_depth_convention(value(), "--depth");
+        } else if (a == "--paused") {
+            o.paused = true;
+        } else if (a == "--no-vsync") {
+            o.vsync = false;
+        } else if (a == "--screenshot") {
+            o.screenshot = value();
+        } else if (a == "--frames") {
+            o.frames = pfs::parse_u32(value(), "--frames", 1, 100000000);
+            frames_set = true;
+        } else if (a == "--drag") {
+            const std::string v = value();
+            float f[6] = {0, 0, 0, 0, 5, 15};
+            const int n = std::sscanf(v.c_str(), "%f,%f,%f,%f,%f,%f", &f[0], &f[1], &f[2], &f[3], &f[4], &f[5]);
+            if ((n != 4 && n != 6) || f[4] < 1 || f[5] <= f[4])
+                throw Error("--drag: expected X0,Y0,X1,Y1 or X0,Y0,X1,Y1,F0,F1 (F0 >= 1, F1 > F0), got '" + v + "'");
+            o.drag = true;
+            o.drag_from[0] = f[0];
+            o.drag_from[1] = f[1];
+            o.drag_to[0] = f[2];
+            o.drag_to[1] = f[3];
+            o.drag_first = uint32_t(f[4]);
+            o.drag_last = uint32_t(f[5]);
+        } else if (a == "--verbose") {
+            o.verbose = true;
+        } else {
+            throw Error("unknown argument '" + a + "' (see --help)");
+        }
+    }
+    if (!o.screenshot.empty()) {
+        if (!frames_set) o.frames = 60;
+        o.vsync = false;
+    }
+    return o;
+}
+
+// ---- helpers --------------------------------------------------------------------------------
+
+struct SimDeleter {
+    void operator()(pf_sim* s) const { pf_destroy(s); }
+};
+using SimPtr = std::unique_ptr<pf_sim, SimDeleter>;
+
+pf_gl_proc glfw_get_proc(const char* name) { return reinterpret_cast<pf_gl_proc>(glfwGetProcAddress(name)); }
+GLADapiproc glad_get_proc(const char* name) { return reinterpret_cast<GLADapiproc>(glfwGetProcAddress(name)); }
+
+/// Scene files (*.json) in the scenes directory, sorted.
+std::vector<std::string> list_scenes() {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(pfs::scenes_dir(), ec))
+        if (e.is_regular_file() && e.path().extension() == ".json") out.push_back(e.path().string());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+/// Ray / axis-aligned box: entry distance (>= 0) or -1 when missed.
+float ray_box(const glm::vec3& o, const glm::vec3& d, const glm::vec3& lo, const glm::vec3& hi) {
+    float t0 = 0.0f, t1 = 1e30f;
+    for (int a = 0; a < 3; ++a) {
+        if (std::fabs(d[a]) < 1e-12f) {
+            if (o[a] < lo[a] || o[a] > hi[a]) return -1.0f;
+            continue;
+        }
+        float ta = (lo[a] - o[a]) / d[a], tb = (hi[a] - o[a]) / d[a];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+        if (t0 > t1) return -1.0f;
+    }
+    return t0;
+}
+
+/// Ray / plane: distance or -1.
+float ray_plane(const glm::vec3& o, const glm::vec3& d, const glm::vec3& p, const glm::vec3& n) {
+    const float den = glm::dot(d, n);
+    if (std::fabs(den) < 1e-6f) return -1.0f;
+    const float t = glm::dot(p - o, n) / den;
+    return t >= 0.0f ? t : -1.0f;
+}
+
+constexpr float kPanelWidth = 420.0f;
+
+// ---- the application ------------------------------------------------------------------------
+
+class Viewer {
+public:
+    Viewer(const Options& opt, GLFWwindow* window) : opt_(opt), window_(window) {
+        look_.ssf = opt.ssf;
+        camera_depth_ = opt.depth;
+        paused_ = opt.paused;
+        scene_files_ = list_scenes();
+        load_scene(pfs::resolve_scene_path(opt.scene));
+    }
+
+    ~Viewer() {
+        world_.reset();
+        sim_.reset();
+    }
+
+    bool frame(uint64_t frame_index);
+
+private:
+    void load_scene(const std::string& path);
+    void reset_scene();
+    void handle_mouse(int fb_w, int fb_h, uint64_t frame_index);
+    void begin_push(double x, double y, int fb_w, int fb_h);
+    void ui(int fb_w, int fb_h);
+    void ui_scene();
+    void ui_simulation();
+    void ui_rendering();
+    void ui_stats();
+    void draw_push_marker(int fb_w, int fb_h);
+
+    const Options& opt_;
+    GLFWwindow* window_;
+    pfs::Scene scene_;
+    std::string scene_path_;
+    std::vector<std::string> scene_files_;
+    SimPtr sim_;
+    std::unique_ptr<pfs::World> world_;
+    pfs::OrbitCamera camera_;
+    pf_depth_convention camera_depth_ = PF_DEPTH_STANDARD;
+    pfs::LiquidLook look_;
+    pf_sim_params params_{};
+    pf_stats stats_{};
+    std::string last_error_;
+
+    bool paused_ = false, step_once_ = false;
+    int steps_per_frame_ = 1;
+
+    // mouse
+    enum class Drag { none, orbit, pan, push } drag_ = Drag::none;
+    double last_x_ = 0, last_y_ = 0;
+    glm::vec3 grab_point_{0.0f}, grab_normal_{0.0f, 0.0f, 1.0f};
+    glm::vec3 push_center_{0.0f}, push_dv_{0.0f};
+    bool push_active_ = false;
+    float push_radius_frac_ = 0.12f;  // of the largest tank extent
+    float push_gain_ = 0.5f;
+    float push_max_dv_ = 2.0f;         // m/s added per frame of dragging
+
+    // keys (ImGui 1.86 has no named letter keys): pressed = down now, up last frame
+    std::map<int, bool> key_down_;
+    bool key_pressed(int key) { return glfwGetKey(window_, key) == GLFW_PRESS && !key_down_[key]; }
+
+    // timing
+    std::deque<float> frame_ms_;
+    double last_frame_time_ = 0;
+    double step_wall_ms_ = 0;
+};
+
+void Viewer::load_scene(const std::string& path) {
+    pfs::Scene s = pfs::load_scene(path); // throws before anything is torn down
+    world_.reset();
+    sim_.reset();
+    scene_ = std::move(s);
+    scene_path_ = path;
+    sim_.reset(pfs::create_scene_sim(scene_, glfw_get_proc, pfs::stderr_logger(opt_.verbose)));
+    pfs::check(pf_get_params(sim_.get(), &params_), "pf_get_params");
+    world_ = std::make_unique<pfs::World>(scene_, glad_get_proc);
+    world_->set_sun(glm::vec3(look_.ssf_params.light_direction[0], look_.ssf_params.light_direction[1],
+                              look_.ssf_params.light_direction[2]));
+    camera_.set_from_scene(scene_.has_camera ? scene_.camera : scene_.default_camera());
+    if (camera_depth_ != PF_DEPTH_STANDARD && !world_->has_clip_control()) {
+        std::fprintf(stderr, "pf_viewer: no glClipControl on this context; using the standard depth convention\n");
+        camera_depth_ = PF_DEPTH_STANDARD;
+    }
+    camera_.depth = camera_depth_;
+    // Shift the view right by half the UI panel so the tank is not hidden behind it.
+    {
+        int win_w = 0, win_h = 0;
+        glfwGetWindowSize(window_, &win_w, &win_h);
+        camera_.pan(0.5f * kPanelWidth, 0.0f, std::max(win_h, 1));
+        camera_.zoom(1.1f);
+    }
+    // Particle colours: the speed range of a tank-deep dam break.
+    const pfs::vec3f lo = scene_.domain_min(), hi = scene_.domain_max();
+    look_.particle_params.range[1] = std::max(0.5f, 0.8f * std::sqrt(9.81f * (hi[1] - lo[1])));
+    last_error_.clear();
+}
+
+void Viewer::reset_scene() {
+    pfs::check(pf_clear_particles(sim_.get()), "pf_clear_particles");
+    pfs::fill_scene(sim_.get(), scene_);
+    pfs::check(pf_clear_flags(sim_.get()), "pf_clear_flags");
+}
+
+// Left press: find where the ray meets the liquid (particles read back once per press: the
+// nearest one close to the ray, else the particles' bounding box) or else the tank's vertical
+// mid-plane facing the camera; the drag then moves along the camera-facing plane through that
+// point, and every frame of movement calls pf_push there with dv along the drag.
+void Viewer::begin_push(double x, double y, int fb_w, int fb_h) {
+    glm::vec3 o, d;
+    int win_w = 0, win_h = 0;
+    glfwGetWindowSize(window_, &win_w, &win_h);
+    camera_.ray(x, y, win_w, win_h, o, d);
+    (void)fb_w;
+    (void)fb_h;
+    const glm::vec3 tlo = world_->tank_min(), thi = world_->tank_max();
+    float t = -1.0f;
+    pf_stats st{};
+    pf_get_stats(sim_.get(), &st);
+    if (st.particle_count > 0) {
+        std::vector<float> xyz(size_t(st.particle_count) * 3);
+        if (pf_read_particles(sim_.get(), 0, st.particle_count, xyz.data(), nullptr) == PF_OK) {
+            // Nearest particle within two cells of the ray: the liquid surface under the cursor.
+            // Else the ray's entry into the particles' bounding box.
+            const float pick = 2.0f * scene_.cell_size;
+            glm::vec3 lo(1e30f), hi(-1e30f);
+            float best = 1e30f;
+            for (size_t i = 0; i < xyz.size(); i += 3) {
+                const glm::vec3 p(xyz[i], xyz[i + 1], xyz[i + 2]);
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+                const glm::vec3 op = p - o;
+                const float tp = glm::dot(op, d);
+                if (tp > 0 && tp < best && glm::dot(op, op) - tp * tp < pick * pick) best = tp;
+            }
+            t = best < 1e30f ? best : ray_box(o, d, lo, hi);
+        }
+    }
+    if (t < 0) {
+        glm::vec3 n = camera_.forward();
+        n.y = 0;
+        n = glm::length(n) > 1e-4f ? glm::normalize(n) : glm::vec3(0, 0, 1);
+        t = ray_plane(o, d, 0.5f * (tlo + thi), n);
+    }
+    if (t < 0) return;
+    grab_point_ = glm::clamp(o + t * d, tlo, thi);
+    grab_normal_ = camera_.forward();
+    drag_ = Drag::push;
+}
+
+void Viewer::handle_mouse(int fb_w, int fb_h, uint64_t frame_index) {
+    ImGuiIO& io = ImGui::GetIO();
+    double x = 0, y = 0;
+    glfwGetCursorPos(window_, &x, &y);
+    bool left = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    bool scripted = false;
+    if (opt_.drag && frame_index >= opt_.drag_first && frame_index <= opt_.drag_last) {
+        // --drag: the cursor moves linearly from drag_from to drag_to with the left button held.
+        const double t = double(frame_index - opt_.drag_first) / double(opt_.drag_last - opt_.drag_first);
+        x = opt_.drag_from[0] + t * (opt_.drag_to[0] - opt_.drag_from[0]);
+        y = opt_.drag_from[1] + t * (opt_.drag_to[1] - opt_.drag_from[1]);
+        left = scripted = true;
+    }
+    const bool right = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    const bool middle = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+    const bool alt = glfwGetKey(window_, GLFW_KEY_LEFT_ALT) == GLFW_PRESS || glfwGetKey(window_, GLFW_KEY_RIGHT_ALT) == GLFW_PRESS;
+    const bool shift =
+        glfwGetKey(window_, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(window_, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+    push_active_ = false;
+    const double dx = x - last_x_, dy = y - last_y_;
+
+    if (drag_ == Drag::none && (scripted || !io.WantCaptureMouse)) {
+        if ((left && alt) || (right && !shift)) drag_ = Drag::orbit;
+        else if (middle || (right && shift)) drag_ = Drag::pan;
+        else if (left) begin_push(x, y, fb_w, fb_h);
+    }
+    if ((drag_ == Drag::orbit && !(left || right)) || (drag_ == Drag::pan && !(middle || right)) ||
+        (drag_ == Drag::push && !left))
+        drag_ = Drag::none;
+
+    int win_w = 0, win_h = 0;
+    glfwGetWindowSize(window_, &win_w, &win_h);
+    switch (drag_) {
+    case Drag::orbit: camera_.orbit(float(dx), float(dy)); break;
+    case Drag::pan: camera_.pan(float(dx), float(dy), win_h); break;
+    case Drag::push: {
+        glm::vec3 o, d;
+        camera_.ray(x, y, win_w, win_h, o, d);
+        const float t = ray_plane(o, d, grab_point_, grab_normal_);
+        if (t < 0) break;
+        const glm::vec3 p = o + t * d;
+        const glm::vec3 delta = p - grab_point_;
+        const glm::vec3 tlo = world_->tank_min(), thi = world_->tank_max();
+        const glm::vec3 ext = thi - tlo;
+        const float radius = push_radius_frac_ * std::max({ext.x, ext.y, ext.z});
+        push_center_ = glm::clamp(p, tlo, thi);
+        push_active_ = true;
+        if (glm::length(delta) > 1e-6f) {
+            // The drag speed in world metres per simulated frame, as a velocity change.
+            glm::vec3 dv = delta / std::max(scene_.frame_dt, 1e-4f) * push_gain_;
+            const float len = glm::length(dv);
+            if (len > push_max_dv_) dv *= push_max_dv_ / len;
+            push_dv_ = dv;
+            const float c[3] = {push_center_.x, push_center_.y, push_center_.z};
+            const float v[3] = {dv.x, dv.y, dv.z};
+            const pf_result r = pf_push(sim_.get(), c, radius, v);
+            if (r != PF_OK) last_error_ = std::string("pf_push: ") + pf_result_string(r);
+            grab_point_ = p;
+        }
+        break;
+    }
+    default: break;
+    }
+    if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) camera_.zoom(std::pow(0.9f, io.MouseWheel));
+    last_x_ = x;
+    last_y_ = y;
+
+    if (!io.WantCaptureKeyboard) {
+        if (key_pressed(GLFW_KEY_SPACE)) paused_ = !paused_;
+        if (key_pressed(GLFW_KEY_S)) step_once_ = true;
+        if (key_pressed(GLFW_KEY_R)) reset_scene();
+        if (key_pressed(GLFW_KEY_P)) look_.ssf = !look_.ssf;
+        if (key_pressed(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window_, 1);
+    }
+    for (int k : {GLFW_KEY_SPACE, GLFW_KEY_S, GLFW_KEY_R, GLFW_KEY_P, GLFW_KEY_ESCAPE})
+        key_down_[k] = glfwGetKey(window_, k) == GLFW_PRESS;
+}
+
+void Viewer::draw_push_marker(int fb_w, int fb_h) {
+    if (!push_active_) return;
+    int win_w = 0, win_h = 0;
+    glfwGetWindowSize(window_, &win_w, &win_h);
+    const glm::mat4 vp = camera_.proj(float(fb_w) / float(std::max(fb_h, 1))) * camera_.view();
+    const glm::vec3 tlo = world_->tank_min(), thi = world_->tank_max();
+    const glm::vec3 ext = thi - tlo;
+    const float radius = push_radius_frac_ * std::max({ext.x, ext.y, ext.z});
+    auto to_screen = [&](const glm::vec3& p, ImVec2& s) {
+        const glm::vec4 c = vp * glm::vec4(p, 1.0f);
+        if (c.w <= 0) return false;
+        s = ImVec2(float((c.x / c.w * 0.5 + 0.5) * win_w), float((0.5 - c.y / c.w * 0.5) * win_h));
+        return true;
+    };
+    ImVec2 c, e, a;
+    if (!to_screen(push_center_, c) || !to_screen(push_center_ + camera_.right() * radius, e)) return;
+    const float r = std::hypot(e.x - c.x, e.y - c.y);
+    ImDrawList* dl = ImGui::GetForegroundDrawList();
+    dl->AddCircle(c, r, IM_COL32(255, 220, 80, 200), 48, 2.0f);
+    const float len = glm::length(push_dv_);
+    if (len > 1e-4f && to_screen(push_center_ + push_dv_ / push_max_dv_ * radius * 1.5f, a))
+        dl->AddLine(c, a, IM_COL32(255, 220, 80, 230), 2.0f);
+}
+
+bool Viewer::frame(uint64_t frame_index) {
+    const double now = pfs::now_ms();
+    if (last_frame_time_ > 0) {
+        frame_ms_.push_back(float(now - last_frame_time_));
+        if (frame_ms_.size() > 120) frame_ms_.pop_front();
+    }
+    last_frame_time_ = now;
+
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+
+    int fb_w = 0, fb_h = 0;
+    glfwGetFramebufferSize(window_, &fb_w, &fb_h);
+    if (fb_w < 1 || fb_h < 1) { // minimised
+        ImGui::Render();
+        return true;
+    }
+    handle_mouse(fb_w, fb_h, frame_index);
+
+    // Simulate.
+    if (!paused_ || step_once_) {
+        const double s0 = pfs::now_ms();
+        for (int i = 0; i < steps_per_frame_; ++i) {
+            const pf_result r = pf_step(sim_.get(), scene_.frame_dt);
+            if (r != PF_OK) {
+                last_error_ = std::string("pf_step: ") + pf_result_string(r);
+                paused_ = true;
+                break;
+            }
+        }
+        step_wall_ms_ = pfs::now_ms() - s0;
+        step_once_ = false;
+    }
+    pf_get_stats(sim_.get(), &stats_);
+
+    // Render: world, then the liquid into the world's framebuffer, then to the window.
+    world_->resize(fb_w, fb_h);
+    world_->fit_clip_planes(camera_);
+    camera_.depth = camera_depth_;
+    const pf_result r = pfs::draw_frame(*world_, sim_.get(), camera_, look_);
+    if (r != PF_OK) last_error_ = std::string(look_.ssf ? "pf_render_ssf: " : "pf_render_particles: ") + pf_result_string(r);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, world_->framebuffer());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, fb_w, fb_h, 0, 0, fb_w, fb_h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    draw_push_marker(fb_w, fb_h);
+    ui(fb_w, fb_h);
+    ImGui::Render();
+    glViewport(0, 0, fb_w, fb_h);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    return true;
+}
+
+// ---- UI -------------------------------------------------------------------------------------
+
+void Viewer::ui(int fb_w, int fb_h) {
+    (void)fb_w;
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, float(std::max(200, fb_h - 16))), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.82f);
+    ImGui::Begin("pflip");
+    ImGui::Text("pflip %s  |  %s", pfs::pf_version_string().c_str(), reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+    if (!last_error_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", last_error_.c_str());
+    ui_scene();
+    ui_simulation();
+    ui_rendering();
+    ui_stats();
+    ImGui::End();
+}
+
+void Viewer::ui_scene() {
+    if (!ImGui::CollapsingHeader("Scene", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const std::string current = std::filesystem::path(scene_path_).stem().string();
+    if (ImGui::BeginCombo("scene", current.c_str())) {
+        for (const auto& f : scene_files_) {
+            const std::string name = std::filesystem::path(f).stem().string();
+            if (ImGui::Selectable(name.c_str(), f == scene_path_)) {
+                try {
+                    load_scene(f);
+                } catch (const std::exception& e) {
+                    last_error_ = e.what();
+                }
+            }
+        }
+        ImGui::EndCombo();
+    }
+    if (ImGui::Button("Reload file")) {
+        try {
+            load_scene(scene_path_);
+        } catch (const std::exception& e) {
+            last_error_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Reset (R)")) reset_scene();
+    ImGui::SameLine();
+    ImGui::Checkbox("Pause (Space)", &paused_);
+    ImGui::SameLine();
+    if (ImGui::Button("Step (S)")) step_once_ = true;
+    ImGui::SliderInt("steps / frame", &steps_per_frame_, 1, 8);
+    ImGui::TextDisabled("%s", scene_.description.c_str());
+    ImGui::TextDisabled("grid %ux%ux%u, cell %.4g m, dt %.4g s", scene_.grid_size[0], scene_.grid_size[1],
+                        scene_.grid_size[2], double(scene_.cell_size), double(scene_.frame_dt));
+    if (ImGui::TreeNode("Push (left drag)")) {
+        ImGui::SliderFloat("radius (of tank)", &push_radius_frac_, 0.02f, 0.5f, "%.2f");
+        ImGui::SliderFloat("gain", &push_gain_, 0.05f, 4.0f, "%.2f");
+        ImGui::SliderFloat("max dv m/s", &push_max_dv_, 0.1f, 20.0f, "%.1f");
+        ImGui::TreePop();
+    }
+}
+
+void Viewer::ui_simulation() {
+    if (!ImGui::CollapsingHeader("Simulation parameters")) return;
+    pf_sim_params p = params_;
+    bool changed = false;
+    changed |= ImGui::DragFloat3("gravity", p.gravity, 0.05f, -50.0f, 50.0f, "%.2f");
+    changed |= ImGui::SliderFloat("flip ratio", &p.flip_ratio, 0.0f, 1.0f, "%.3f");
+    int iters = int(p.pressure_iterations);
+    if (ImGui::SliderInt("Jacobi iterations", &iters, 1, 400)) {
+        p.pressure_iterations = uint32_t(iters);
+        changed = true;
+    }
+    changed |= ImGui::SliderFloat("Jacobi omega", &p.jacobi_omega, 0.05f, 1.0f, "%.3f");
+    changed |= ImGui::SliderFloat("cfl", &p.cfl, 0.1f, 8.0f, "%.2f");
+    int subs = int(p.max_substeps);
+    if (ImGui::SliderInt("max substeps", &subs, 1, 64)) {
+        p.max_substeps = uint32_t(subs);
+        changed = true;
+    }
+    int layers = int(p.extrapolation_layers);
+    if (ImGui::SliderInt("extrapolation layers", &layers, 1, 16)) {
+        p.extrapolation_layers = uint32_t(layers);
+        changed = true;
+    }
+    if (ImGui::Button("Scene values")) {
+        p = scene_.params;
+        changed = true;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Library defaults")) {
+        p = pf_default_sim_params();
+        changed = true;
+    }
+    if (changed) {
+        const pf_result r = pf_set_params(sim_.get(), &p);
+        if (r != PF_OK) last_error_ = std::string("pf_set_params: ") + pf_result_string(r);
+        pf_get_params(sim_.get(), &params_); // what the library holds now
+    }
+}
+
+void Viewer::ui_rendering() {
+    if (!ImGui::CollapsingHeader("Rendering")) return;
+    int mode = look_.ssf ? 0 : 1;
+    ImGui::RadioButton("screen-space fluid", &mode, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("particles (P)", &mode, 1);
+    look_.ssf = mode == 0;
+    {
+        const char* names[] = {"standard", "zero_to_one", "reversed_z"};
+        int d = int(camera_depth_);
+        if (ImGui::Combo("depth convention", &d, names, world_->has_clip_control() ? 3 : 1))
+            camera_depth_ = pf_depth_convention(d);
+    }
+    if (look_.ssf) {
+        pf_ssf_params& s = look_.ssf_params;
+        const char* filters[] = {"bilateral", "narrow range", "none"};
+        int f = int(s.filter);
+        if (ImGui::Combo("filter", &f, filters, 3)) s.filter = pf_ssf_filter(f);
+        const char* paths[] = {"compute", "raster"};
+        int pth = int(s.path);
+        if (ImGui::Combo("path", &pth, paths, 2)) s.path = pf_ssf_path(pth);
+        ImGui::SliderFloat("particle radius", &s.particle_radius, 0.0f, 4.0f * scene_.cell_size, "%.4f m (0 = default)");
+        int fr = int(s.filter_radius), fi = int(s.filter_iterations);
+        if (ImGui::SliderInt("filter radius px", &fr, 0, 64, fr ? "%d" : "%d (default)")) s.filter_radius = uint32_t(fr);
+        if (ImGui::SliderInt("filter iterations", &fi, 0, 16, fi ? "%d" : "%d (default)")) s.filter_iterations = uint32_t(fi);
+        ImGui::SliderFloat("depth range", &s.filter_depth_range, 0.0f, 8.0f * scene_.cell_size, "%.4f m (0 = default)");
+        ImGui::DragFloat3("absorption /m", s.absorption, 0.02f, 0.0f, 100.0f, "%.2f");
+        ImGui::SliderFloat("refraction", &s.refraction, 0.0f, 0.2f, "%.3f");
+        ImGui::SliderFloat("fresnel f0", &s.fresnel_f0, 0.0f, 1.0f, "%.3f");
+        ImGui::SliderFloat("specular", &s.specular, 0.0f, 10.0f, "%.2f");
+        ImGui::SliderFloat("shininess", &s.shininess, 1.0f, 2000.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+        if (ImGui::DragFloat3("light direction", s.light_direction, 0.01f, -1.0f, 1.0f, "%.2f")) {
+            if (glm::length(glm::vec3(s.light_direction[0], s.light_direction[1], s.light_direction[2])) < 1e-3f)
+                s.light_direction[1] = 1.0f;
+            world_->set_sun(glm::vec3(s.light_direction[0], s.light_direction[1], s.light_direction[2]));
+        }
+        ImGui::Checkbox("reflect the world's sky cube map", &look_.sky_cubemap);
+        if (ImGui::Button("Defaults")) {
+            s = pf_default_ssf_params();
+            world_->set_sun(glm::vec3(s.light_direction[0], s.light_direction[1], s.light_direction[2]));
+        }
+    } else {
+        pf_particle_params& p = look_.particle_params;
+        const char* colors[] = {"speed", "velocity x", "velocity y", "velocity z", "height", "uniform"};
+        int c = int(p.color_by);
+        if (ImGui::Combo("colour by", &c, colors, 6)) p.color_by = pf_particle_color(c);
+        ImGui::SliderFloat("sprite radius", &p.particle_radius, 0.0f, 4.0f * scene_.cell_size, "%.4f m (0 = default)");
+        ImGui::DragFloat2("range", p.range, 0.01f, -100.0f, 100.0f, "%.2f");
+        if (p.range[0] == p.range[1]) p.range[1] = p.range[0] + 0.01f;
+        ImGui::ColorEdit3("low", p.color_low);
+        ImGui::ColorEdit3("high", p.color_high);
+        if (ImGui::Button("Defaults")) p = pf_default_particle_params();
+    }
+}
+
+void Viewer::ui_stats() {
+    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const pf_stats& s = stats_;
+    float avg = 0;
+    for (float v : frame_ms_) avg += v;
+    avg = frame_ms_.empty() ? 0 : avg / float(frame_ms_.size());
+    ImGui::Text("frame %.1f ms (%.1f fps), pf_step wall %.1f ms", double(avg), avg > 0 ? 1000.0 / double(avg) : 0.0,
+                step_wall_ms_);
+    if (!frame_ms_.empty()) {
+        std::vector<float> v(frame_ms_.begin(), frame_ms_.end());
+        ImGui::PlotLines("##frame", v.data(), int(v.size()), 0, "frame ms", 0.0f, 2.0f * avg,
+                         ImVec2(ImGui::GetContentRegionAvail().x, 32)); // 1.86: no negative sizes here
+    }
+    ImGui::Text("particles %u / %u, step %llu, substeps %u", s.particle_count, s.max_particles,
+                static_cast<unsigned long long>(s.steps), s.substeps);
+    ImGui::Text("max speed %.2f m/s", double(s.max_speed));
+    ImGui::Text("flags: %s", pfs::flag_names(s.flags).c_str());
+    if (s.flags) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton("clear")) pf_clear_flags(sim_.get());
+    }
+    // Simulation passes (GPU ms of one step, dispatches) beside the render passes (GPU ms of one
+    // pf_render_* call). GPU figures lag a few frames: the timers are read without stalling.
+    ImGui::Text("GPU ms: step %llu (%u substeps) | render call %llu", static_cast<unsigned long long>(s.gpu_step),
+                s.gpu_substeps, static_cast<unsigned long long>(s.render_frame));
+    const ImGuiTableFlags tf = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+    if (ImGui::BeginTable("passes", 5, tf)) {
+        ImGui::TableSetupColumn("sim pass", ImGuiTableColumnFlags_WidthStretch, 3.0f);
+        ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthStretch, 1.6f);
+        ImGui::TableSetupColumn("disp", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+        ImGui::TableSetupColumn("render pass", ImGuiTableColumnFlags_WidthStretch, 2.4f);
+        ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthStretch, 1.6f);
+        ImGui::TableHeadersRow();
+        for (int row = 0; row <= PF_PASS_COUNT; ++row) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            if (row < PF_PASS_COUNT) {
+                ImGui::TextUnformatted(pf_pass_name(pf_pass(row)));
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", double(s.gpu_ms[row]));
+                ImGui::TableNextColumn();
+                ImGui::Text("%u", s.dispatches[row]);
+            } else {
+                ImGui::TextUnformatted("total");
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", double(s.gpu_total_ms));
+                ImGui::TableNextColumn();
+            }
+            ImGui::TableNextColumn();
+            if (row < PF_RENDER_PASS_COUNT) {
+                ImGui::TextUnformatted(pf_render_pass_name(pf_render_pass(row)));
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", double(s.render_gpu_ms[row]));
+            } else if (row == PF_PASS_COUNT) {
+                ImGui::TextUnformatted("total");
+                ImGui::TableNextColumn();
+                ImGui::Text("%.3f", double(s.render_gpu_total_ms));
+            } else {
+                ImGui::TableNextColumn();
+            }
+        }
+        ImGui::EndTable();
+    }
+    ImGui::Text("host ms: pf_step %.2f, render call %.2f", double(s.cpu_ms), double(s.render_cpu_ms));
+}
+
+// ---- main -----------------------------------------------------------------------------------
+
+void glfw_error(int code, const char* message) { std::fprintf(stderr, "pf_viewer: GLFW error %d: %s\n", code, message); }
+
+int run(int argc, char** argv) {
+    const Options opt = parse_args(argc, argv);
+    pfs::resolve_scene_path(opt.scene); // fail early on a typo
+
+    glfwSetErrorCallback(glfw_error);
+    if (!glfwInit()) throw Error("glfwInit failed (no display? try xvfb-run -s '-screen 0 1280x720x24')");
+    struct GlfwGuard {
+        ~GlfwGuard() { glfwTerminate(); }
+    } glfw_guard;
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_DEPTH_BITS, 0);   // the world has its own depth texture
+    glfwWindowHint(GLFW_SAMPLES, 0);
+    GLFWwindow* window = glfwCreateWindow(int(opt.width), int(opt.height), "pflip viewer", nullptr, nullptr);
+    if (!window) throw Error("could not create a GL 4.3 core window");
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(opt.vsync ? 1 : 0);
+
+    const int glv = gladLoadGL(glad_get_proc);
+    if (!glv || GLAD_VERSION_MAJOR(glv) * 100 + GLAD_VERSION_MINOR(glv) < 403)
+        throw Error("gladLoadGL: OpenGL 4.3 core functions not available");
+    std::printf("pflip %s viewer: %s, %s\n", pfs::pf_version_string().c_str(),
+                reinterpret_cast<const char*>(glGetString(GL_RENDERER)),
+                reinterpret_cast<const char*>(glGetString(GL_VERSION)));
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini in the working directory
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 430 core");
+
+    int rc = 0;
+    {
+        Viewer viewer(opt, window);
+        for (uint64_t f = 1; !glfwWindowShouldClose(window); ++f) {
+            glfwPollEvents();
+            viewer.frame(f);
+            if (opt.frames && f >= opt.frames) {
+                if (!opt.screenshot.empty()) {
+                    int w = 0, h = 0;
+                    glfwGetFramebufferSize(window, &w, &h);
+                    std::vector<uint8_t> px;
+                    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+                    glReadBuffer(GL_BACK);
+                    pfs::read_rgba(w, h, px);
+                    pfs::check_gl("screenshot");
+                    if (!pfs::write_image_rgba(opt.screenshot, uint32_t(w), uint32_t(h), px.data(), true))
+                        throw Error("writing " + opt.screenshot + " failed: " + std::strerror(errno));
+                    std::printf("screenshot: %s (%dx%d, frame %llu)\n", opt.screenshot.c_str(), w, h,
+                                static_cast<unsigned long long>(f));
+                }
+                glfwSwapBuffers(window);
+                break;
+            }
+            glfwSwapBuffers(window);
+        }
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    glfwDestroyWindow(window);
+    return rc;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "pf_viewer: error: %s\n", e.what());
+        return 1;
+    }
+}
