@@ -1,0 +1,241 @@
+// pf_render_bench — per-pass GPU cost of pflip's liquid rendering.
+//
+// For each scene: simulate W frames so the liquid is in motion, then hold the simulation
+// still and, for every resolution x filter x path (and the particle view), draw M frames the
+// way an engine does (world first, then pf_render_ssf into the world's framebuffer). Per
+// configuration it reports the median of pf_stats.render_gpu_ms per pass over the distinct
+// measured render calls, and the wall time of a frame (glFinish around the world + liquid).
+// Output: a table on stdout, optionally JSON (--json) and CSV (--csv).
+
+#include <glad/gl.h>
+
+#include <pf/pf.h>
+
+#include "camera.h"
+#include "egl_context.h"
+#include "scene.h"
+#include "util.h"
+#include "world.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+
+using pfs::Error;
+using ojson = nlohmann::ordered_json;
+
+struct Options {
+    std::vector<std::string> scenes{"original_24", "dam_break_1m"};
+    std::vector<std::pair<uint32_t, uint32_t>> sizes{{1280, 720}, {1920, 1080}};
+    uint32_t warmup = 60;   // simulated frames before rendering
+    uint32_t frames = 60;   // measured render calls per configuration
+    std::string json_path, csv_path;
+};
+
+struct Config {
+    uint32_t width, height;
+    bool ssf;
+    pf_ssf_filter filter;
+    pf_ssf_path path;
+    std::string name() const {
+        if (!ssf) return "particles";
+        const char* f = filter == PF_SSF_FILTER_BILATERAL ? "bilateral" : filter == PF_SSF_FILTER_NARROW_RANGE ? "narrow" : "none";
+        return std::string("ssf/") + f + "/" + (path == PF_SSF_PATH_COMPUTE ? "compute" : "raster");
+    }
+};
+
+struct Measurement {
+    std::string scene;
+    uint32_t particles = 0;
+    Config config{};
+    pfs::Summary pass[PF_RENDER_PASS_COUNT];
+    pfs::Summary total, wall;
+};
+
+void print_usage() {
+    std::printf("usage: pf_render_bench [--warmup W] [--frames M] [--sizes 1280x720,1920x1080] [--json F] [--csv F] [SCENE ...]\n"
+                "  default scenes: original_24 dam_break_1m; every size x {bilateral, narrow, none} x\n"
+                "  {compute, raster} plus the particle view\n");
+}
+
+Options parse_args(int argc, char** argv) {
+    Options o;
+    std::vector<std::string> scenes;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) throw Error(a + " needs a value (see --help)");
+            return argv[++i];
+        };
+        if (a == "-h" || a == "--help") {
+            print_usage();
+            std::exit(0);
+        } else if (a == "--warmup") {
+            o.warmup = pfs::parse_u32(value(), "--warmup", 0, 100000);
+        } else if (a == "--frames") {
+            o.frames = pfs::parse_u32(value(), "--frames", 1, 100000);
+        } else if (a == "--sizes") {
+            o.sizes.clear();
+            std::string list = value();
+            for (size_t start = 0; start <= list.size();) {
+                const size_t comma = std::min(list.find(',', start), list.size());
+                uint32_t w = 0, h = 0;
+                pfs::parse_size(list.substr(start, comma - start), "--sizes", w, h);
+                o.sizes.emplace_back(w, h);
+                start = comma + 1;
+            }
+        } else if (a == "--json") {
+            o.json_path = value();
+        } else if (a == "--csv") {
+            o.csv_path = value();
+        } else if (!a.empty() && a[0] == '-') {
+            throw Error("unknown option '" + a + "' (see --help)");
+        } else {
+            scenes.push_back(a);
+        }
+    }
+    if (!scenes.empty()) o.scenes = scenes;
+    return o;
+}
+
+std::vector<Config> configs(const Options& o) {
+    std::vector<Config> c;
+    for (const auto& [w, h] : o.sizes) {
+        for (pf_ssf_filter f : {PF_SSF_FILTER_BILATERAL, PF_SSF_FILTER_NARROW_RANGE, PF_SSF_FILTER_NONE})
+            for (pf_ssf_path p : {PF_SSF_PATH_COMPUTE, PF_SSF_PATH_RASTER}) c.push_back({w, h, true, f, p});
+        c.push_back({w, h, false, PF_SSF_FILTER_NONE, PF_SSF_PATH_COMPUTE});
+    }
+    return c;
+}
+
+struct SimDeleter {
+    void operator()(pf_sim* s) const { pf_destroy(s); }
+};
+
+void bench_scene(const Options& opt, const std::string& arg, std::vector<Measurement>& out) {
+    const pfs::Scene scene = pfs::load_scene(pfs::resolve_scene_path(arg));
+    std::unique_ptr<pf_sim, SimDeleter> sim(pfs::create_scene_sim(scene, pfs::get_proc, pfs::stderr_logger(false)));
+    for (uint32_t i = 0; i < opt.warmup; ++i) pfs::check(pf_step(sim.get(), scene.frame_dt), "pf_step");
+    pf_stats st{};
+    pf_get_stats(sim.get(), &st);
+    std::printf("\n[%s] %u particles, %u frames simulated\n", scene.name.c_str(), st.particle_count, opt.warmup);
+
+    pfs::World world(scene, pfs::get_proc);
+    pfs::OrbitCamera camera;
+    camera.set_from_scene(scene.has_camera ? scene.camera : scene.default_camera());
+    world.fit_clip_planes(camera);
+    for (const Config& c : configs(opt)) {
+        world.resize(int(c.width), int(c.height));
+        pfs::LiquidLook look;
+        look.ssf = c.ssf;
+        look.ssf_params.filter = c.filter;
+        look.ssf_params.path = c.path;
+        std::map<uint64_t, pf_stats> by_frame;
+        std::vector<double> wall;
+        for (uint32_t i = 0; i < opt.frames + 8; ++i) {  // 8 extra calls let the last timings arrive
+            glFinish();
+            const double t0 = pfs::now_ms();
+            pfs::check(pfs::draw_frame(world, sim.get(), camera, look), "render");
+            glFinish();
+            if (i < opt.frames) wall.push_back(pfs::now_ms() - t0);
+            pf_get_stats(sim.get(), &st);
+            if (st.render_frame != 0) by_frame[st.render_frame] = st;
+        }
+        // Keep the last `frames` measured calls (the first ones include program compilation).
+        while (by_frame.size() > opt.frames) by_frame.erase(by_frame.begin());
+        Measurement m;
+        m.scene = scene.name;
+        m.particles = st.particle_count;
+        m.config = c;
+        std::vector<double> pass[PF_RENDER_PASS_COUNT], total;
+        for (const auto& [frame, s] : by_frame) {
+            for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) pass[p].push_back(s.render_gpu_ms[p]);
+            total.push_back(s.render_gpu_total_ms);
+        }
+        for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) m.pass[p] = pfs::summarize(pass[p]);
+        m.total = pfs::summarize(total);
+        m.wall = pfs::summarize(wall);
+        std::printf("  %4ux%-4u %-22s gpu %8.3f ms (median of %zu)  frame wall %8.3f ms\n", c.width, c.height,
+                    c.name().c_str(), m.total.median, total.size(), m.wall.median);
+        out.push_back(m);
+    }
+}
+
+void write_outputs(const Options& opt, const std::vector<Measurement>& ms, const pfs::EglContext& ctx) {
+    if (!opt.json_path.empty()) {
+        ojson root;
+        root["tool"] = "pf_render_bench";
+        root["date"] = pfs::utc_timestamp();
+        root["renderer"] = ctx.gl_renderer();
+        root["gl_version"] = ctx.gl_version();
+        root["frames_per_config"] = opt.frames;
+        for (const Measurement& m : ms) {
+            ojson j;
+            j["scene"] = m.scene;
+            j["particles"] = m.particles;
+            j["size"] = {m.config.width, m.config.height};
+            j["config"] = m.config.name();
+            for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p)
+                j["gpu_ms_median"][pf_render_pass_name(pf_render_pass(p))] = m.pass[p].median;
+            j["gpu_total_ms_median"] = m.total.median;
+            j["frame_wall_ms_median"] = m.wall.median;
+            j["samples"] = m.total.n;
+            root["results"].push_back(j);
+        }
+        std::ofstream(opt.json_path) << root.dump(2) << "\n";
+    }
+    if (!opt.csv_path.empty()) {
+        std::ofstream f(opt.csv_path);
+        f << "scene,particles,width,height,config";
+        for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) f << ",gpu_" << pf_render_pass_name(pf_render_pass(p));
+        f << ",gpu_total,frame_wall\n";
+        for (const Measurement& m : ms) {
+            f << m.scene << "," << m.particles << "," << m.config.width << "," << m.config.height << "," << m.config.name();
+            for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) f << "," << m.pass[p].median;
+            f << "," << m.total.median << "," << m.wall.median << "\n";
+        }
+    }
+}
+
+void print_table(const std::vector<Measurement>& ms) {
+    std::printf("\nGPU ms per render call (median), by pass:\n%-14s %-10s %-22s", "scene", "size", "config");
+    for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) std::printf(" %10.10s", pf_render_pass_name(pf_render_pass(p)));
+    std::printf(" %10s\n", "total");
+    for (const Measurement& m : ms) {
+        char size[32];
+        std::snprintf(size, sizeof(size), "%ux%u", m.config.width, m.config.height);
+        std::printf("%-14.14s %-10s %-22s", m.scene.c_str(), size, m.config.name().c_str());
+        for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) std::printf(" %10.3f", m.pass[p].median);
+        std::printf(" %10.3f\n", m.total.median);
+    }
+}
+
+int run(int argc, char** argv) {
+    const Options opt = parse_args(argc, argv);
+    pfs::EglContext ctx;
+    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(pfs::get_proc))) throw Error("gladLoadGL failed");
+    std::printf("pf_render_bench, %s\n%s\n", pfs::utc_timestamp().c_str(), ctx.describe().c_str());
+    std::vector<Measurement> ms;
+    for (const std::string& s : opt.scenes) bench_scene(opt, s, ms);
+    print_table(ms);
+    write_outputs(opt, ms, ctx);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "pf_render_bench: %s\n", e.what());
+        return 1;
+    }
+}
