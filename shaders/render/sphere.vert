@@ -13,11 +13,14 @@
 layout(location = PF_ATTR_POSITION) in vec4 a_position;
 #if PF_SPHERE_VALUE
 layout(location = PF_ATTR_VELOCITY) in vec4 a_velocity;
-layout(location = PF_VARY_VALUE) flat out float v_value;  // the scalar the debug view colours by
+// the scalar the debug view colours by
+layout(location = PF_VARY_VALUE) flat out float v_value;
 #endif
 
-layout(location = PF_VARY_THROUGH) out vec3 v_through;      // eye-space point on the quad: the camera ray passes through it
-layout(location = PF_VARY_CENTER) flat out vec3 v_center;  // sphere centre, eye space
+// eye-space point on the quad (the camera ray through the fragment passes through it), and
+// the sphere centre in eye space
+layout(location = PF_VARY_THROUGH) out vec3 v_through;
+layout(location = PF_VARY_CENTER) flat out vec3 v_center;
 
 // Outside every clip volume: the quad is dropped.
 const vec4 kCulled = vec4(2.0, 2.0, 2.0, 1.0);
