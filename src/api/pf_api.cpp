@@ -12,18 +12,8 @@
 namespace {
 const pf::Log kSilent{};
 
-bool live(const pf_sim* sim) { return sim && sim->magic == pf::kLiveMagic && sim->impl; }
-
-template <typename Fn>
-pf_result guarded(const pf::Log& log, const char* fn, Fn&& body) {
-    try {
-        return body();
-    } catch (const std::bad_alloc&) {
-        return log.error(PF_ERROR_OUT_OF_MEMORY, std::string(fn) + ": out of host memory");
-    } catch (const std::exception& e) {
-        return log.error(PF_ERROR_INVALID_STATE, std::string(fn) + ": " + e.what());
-    }
-}
+using pf::guarded;
+using pf::live;
 
 #define PF_CHECK_SIM(sim, fn)                                                                  \
     do {                                                                                       \

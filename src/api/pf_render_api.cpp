@@ -12,19 +12,8 @@
 
 namespace {
 
-// As in pf_api.cpp: no exception crosses the C boundary.
-template <typename Fn>
-pf_result guarded(const pf::Log& log, const char* fn, Fn&& body) {
-    try {
-        return body();
-    } catch (const std::bad_alloc&) {
-        return log.error(PF_ERROR_OUT_OF_MEMORY, std::string(fn) + ": out of host memory");
-    } catch (const std::exception& e) {
-        return log.error(PF_ERROR_INVALID_STATE, std::string(fn) + ": " + e.what());
-    }
-}
-
-bool live(const pf_sim* sim) { return sim && sim->magic == pf::kLiveMagic && sim->impl; }
+using pf::guarded;
+using pf::live;
 
 std::string str(double v) {
     char buf[32];
