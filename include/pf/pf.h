@@ -260,8 +260,10 @@ typedef enum pf_ssf_filter {
 
 /** Which GPU path runs the screen-space passes (both give the same image). */
 typedef enum pf_ssf_path {
-    PF_SSF_PATH_COMPUTE = 0,     /**< compute shaders for filters and shading (fast on compute-heavy GPUs) */
-    PF_SSF_PATH_RASTER = 1,      /**< fragment shaders on full-screen triangles */
+    PF_SSF_PATH_COMPUTE = 0,     /**< compute shaders: splatting with image atomics, filters, shading
+                                      (fast on compute-heavy GPUs) */
+    PF_SSF_PATH_RASTER = 1,      /**< sphere sprites for splatting, fragment shaders on full-screen
+                                      triangles for filters and shading */
     PF_SSF_PATH_FORCE32 = 0x7fffffff
 } pf_ssf_path;
 

@@ -23,7 +23,20 @@
 #define PF_IMG_SMOOTH_OUT 0
 #define PF_IMG_SHADE_COLOR 0
 #define PF_IMG_SHADE_DEPTH 1
-#define PF_RENDER_IMAGE_UNITS 2
+#define PF_IMG_SPLAT_DEPTH 0      /* r32ui: nearest eye depth as float bits */
+#define PF_IMG_SPLAT_THICKNESS 1  /* r32ui: thickness in fixed point */
+#define PF_IMG_RAW_DEPTH 2        /* r32f outputs of the splat resolve */
+#define PF_IMG_THICKNESS 3
+#define PF_RENDER_IMAGE_UNITS 4
+
+/* storage block of the compute splats: the simulation's particle positions */
+#define PF_SSBO_PARTICLE_POS 0
+/* invocations per workgroup of the compute splats (one particle each) */
+#define PF_SPLAT_WORKGROUP 64
+/* thickness fixed point: 2^16 per metre (15 um steps, 65 km range) */
+#define PF_THICKNESS_FIXED_SCALE 65536.0
+/* splat depth image value where no sphere covers a pixel: the bits of +infinity */
+#define PF_SPLAT_NO_DEPTH_BITS 0x7F800000u
 
 /* vertex attributes of the sphere sprites: one vec4 per particle (instanced) */
 #define PF_ATTR_POSITION 0
@@ -36,6 +49,7 @@
 
 /* explicit uniform locations */
 #define PF_LOC_SMOOTH_DIRECTION 0 /* ivec2: (1,0) horizontal pass, (0,1) vertical pass */
+#define PF_LOC_SPLAT_COUNT 0      /* uint: particles to splat */
 
 /* compute tiles of the screen-space passes */
 #define PF_RENDER_TILE 8

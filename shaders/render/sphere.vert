@@ -4,7 +4,7 @@
 // (spheres at the screen edge would pop) and their size is capped by GL_POINT_SIZE_RANGE.
 // gl_Position.z is 0.5 w, inside the clip range of both glClipControl depth modes: the
 // fragment shaders write gl_FragDepth themselves and cull by near/far.
-#include "common/render.glsl"
+#include "common/ssf_sphere.glsl"
 
 #ifndef PF_SPHERE_VALUE
 #define PF_SPHERE_VALUE 0
@@ -26,8 +26,8 @@ layout(location = PF_VARY_CENTER) flat out vec3 v_center;
 const vec4 kCulled = vec4(2.0, 2.0, 2.0, 1.0);
 
 void main() {
-    float r = rnd.sphere.x;
-    vec3 c = (rnd.view * vec4(a_position.xyz, 1.0)).xyz;
+    vec3 c;
+    bool visible = sphere_visible(a_position.xyz, c);
     v_center = c;
 #if PF_SPHERE_VALUE
     int mode = rnd.modes.x;
@@ -37,20 +37,14 @@ void main() {
             : mode == PF_COLOR_VELOCITY_Z_ID ? a_velocity.z
             : mode == PF_COLOR_HEIGHT_ID ? a_position.y : rnd.color_low.w;
 #endif
-    // Wholly outside [near, far], or the camera inside the sphere: nothing to draw.
-    float dist = length(c);
-    if (-c.z + r < rnd.planes.x || -c.z - r > rnd.planes.y || (!render_orthographic() && dist <= r * 1.0001)) {
+    if (!visible) {
         gl_Position = kCulled;
         v_through = vec3(0.0);
         return;
     }
-    // Perspective: a quad through the centre, normal to the eye-centre axis, with half size
-    // r d / sqrt(d^2 - r^2): the section of the silhouette cone there. Orthographic: facing -z.
-    vec3 axis = render_orthographic() ? vec3(0.0, 0.0, 1.0) : c / dist;
-    float half_size = render_orthographic() ? r : r * dist / sqrt(dist * dist - r * r);
-    vec3 helper = abs(axis.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-    vec3 t = normalize(cross(helper, axis));
-    vec3 b = cross(axis, t);
+    float half_size;
+    vec3 t, b;
+    sphere_quad(c, half_size, t, b);
     vec2 corner = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1)) * 2.0 - 1.0;
     vec3 p = c + half_size * (corner.x * t + corner.y * b);
     v_through = p;

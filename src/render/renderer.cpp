@@ -159,11 +159,18 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
 
     const bool compute = params.path == PF_SSF_PATH_COMPUTE;
     const bool narrow = params.filter == PF_SSF_FILTER_NARROW_RANGE;
-    GLuint thickness = 0, depth = 0, smooth = 0, shade = 0, resolve = 0;
-    for (auto [id, out] : {std::pair{ProgramId::ssf_thickness, &thickness}, std::pair{ProgramId::ssf_depth, &depth},
+    // Raster path: sphere sprites for THICKNESS / DEPTH. Compute path: splat clear, the two
+    // splats and the splat resolve.
+    GLuint thickness = 0, depth = 0, splat_clear = 0, splat_resolve = 0, smooth = 0, shade = 0, resolve = 0;
+    for (auto [id, out] : {std::pair{compute ? ProgramId::ssf_splat_thickness_cs : ProgramId::ssf_thickness, &thickness},
+                           std::pair{compute ? ProgramId::ssf_splat_depth_cs : ProgramId::ssf_depth, &depth},
                            std::pair{compute ? ProgramId::ssf_shade_cs : ProgramId::ssf_shade_fs, &shade},
                            std::pair{ProgramId::ssf_resolve, &resolve}}) {
         if (pf_result r = program(id, fn, *out); r != PF_OK) return r;
+    }
+    if (compute) {
+        if (pf_result r = program(ProgramId::ssf_splat_clear_cs, fn, splat_clear); r != PF_OK) return r;
+        if (pf_result r = program(ProgramId::ssf_splat_resolve_cs, fn, splat_resolve); r != PF_OK) return r;
     }
     if (params.filter != PF_SSF_FILTER_NONE) {
         const ProgramId id = compute ? (narrow ? ProgramId::ssf_smooth_narrow_cs : ProgramId::ssf_smooth_bilateral_cs)
@@ -191,8 +198,13 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
     bind_particles();
 
     pass_scene_copy(camera, target, target.scene_depth != 0);
-    pass_thickness(thickness, w, h);
-    pass_depth(depth, w, h);
+    if (compute) {
+        pass_splat_thickness(splat_clear, thickness, w, h);
+        pass_splat_depth(depth, splat_resolve, w, h);
+    } else {
+        pass_thickness(thickness, w, h);
+        pass_depth(depth, w, h);
+    }
     const SsfTargets::Texture surface = pass_smooth(smooth, params, w, h);
     pass_shade(shade, params, surface, target.environment_cubemap, w, h);
     pass_resolve(resolve, camera, target.framebuffer);
@@ -247,6 +259,42 @@ void Renderer::pass_depth(GLuint program, int w, int h) {
     gl_.UseProgram(program);
     draw_spheres();
     gl_.Disable(GL_DEPTH_TEST);
+}
+
+void Renderer::dispatch_particles(GLuint program) {
+    const uint32_t n = sim_.particle_count();
+    gl_.UseProgram(program);
+    gl_.ProgramUniform1ui(program, PF_LOC_SPLAT_COUNT, n);
+    const int64_t groups = ceil_div(int64_t(n), PF_SPLAT_WORKGROUP);
+    const int64_t gx = std::min<int64_t>(groups, 65535), gy = ceil_div(groups, gx);
+    if (n > 0) gl_.DispatchCompute(GLuint(gx), GLuint(gy), 1);
+    gl_.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+void Renderer::pass_splat_thickness(GLuint clear, GLuint splat, int w, int h) {
+    TimedPass timed(timers_, PF_RENDER_PASS_THICKNESS);
+    const GLuint depth_bits = targets_->texture(SsfTargets::splat_depth_bits);
+    const GLuint thickness_bits = targets_->texture(SsfTargets::splat_thickness_bits);
+    gl_.BindImageTexture(PF_IMG_SPLAT_DEPTH, depth_bits, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    gl_.BindImageTexture(PF_IMG_SPLAT_THICKNESS, thickness_bits, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    gl_.UseProgram(clear);
+    dispatch_screen(w, h);
+    pf_gl_buffers b{};
+    sim_.gl_buffers(b);
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_POS, b.positions);
+    bind_texture(PF_TEX_SCENE_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_depth), false);
+    dispatch_particles(splat);
+}
+
+void Renderer::pass_splat_depth(GLuint splat, GLuint resolve, int w, int h) {
+    TimedPass timed(timers_, PF_RENDER_PASS_DEPTH);
+    dispatch_particles(splat);
+    gl_.BindImageTexture(PF_IMG_RAW_DEPTH, targets_->texture(SsfTargets::raw_depth), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                         GL_R32F);
+    gl_.BindImageTexture(PF_IMG_THICKNESS, targets_->texture(SsfTargets::thickness), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                         GL_R32F);
+    gl_.UseProgram(resolve);
+    dispatch_screen(w, h);
 }
 
 // Alternating horizontal and vertical 1D passes, filter_iterations times, ping-ponging

@@ -55,6 +55,10 @@ private:
     void pass_scene_copy(const pf_camera& camera, const pf_render_target& target, bool depth);
     void pass_thickness(GLuint program, int w, int h);
     void pass_depth(GLuint program, int w, int h);
+    // Compute path of THICKNESS and DEPTH: clear + thickness splat, depth splat + resolve.
+    void pass_splat_thickness(GLuint clear, GLuint splat, int w, int h);
+    void pass_splat_depth(GLuint splat, GLuint resolve, int w, int h);
+    void dispatch_particles(GLuint program);
     SsfTargets::Texture pass_smooth(GLuint program, const pf_ssf_params& params, int w, int h);
     void pass_shade(GLuint program, const pf_ssf_params& params, SsfTargets::Texture depth,
                     GLuint environment, int w, int h);

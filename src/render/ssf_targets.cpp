@@ -5,7 +5,7 @@ namespace pf {
 namespace {
 constexpr GLenum kFormats[SsfTargets::texture_count] = {
     GL_RGBA16F, 0 /* engine's depth format */, GL_R32F, GL_R32F, GL_DEPTH_COMPONENT32F,
-    GL_R32F,    GL_R32F, GL_RGBA16F, GL_R32F};
+    GL_R32F,    GL_R32F, GL_RGBA16F, GL_R32F, GL_R32UI, GL_R32UI};
 }  // namespace
 
 SsfTargets::SsfTargets(const gl::Api& gl) : gl_(gl) {

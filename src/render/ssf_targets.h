@@ -21,6 +21,8 @@ public:
         smooth_b,
         shaded_color,  // RGBA16F liquid colour, alpha 1 where there is liquid
         shaded_depth,  // R32F liquid window depth, engine convention
+        splat_depth_bits,      // R32UI compute splat: nearest eye depth as float bits
+        splat_thickness_bits,  // R32UI compute splat: thickness in fixed point
         texture_count
     };
     enum Framebuffer {

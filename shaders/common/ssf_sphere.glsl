@@ -1,0 +1,58 @@
+// One particle's sphere as the screen-space passes see it, shared by the raster sprites
+// (render/sphere.vert + fragment shaders) and the compute splats (render/ssf_splat.comp), so
+// both paths cover the same pixels with the same depths: the camera ray through a pixel
+// centre, intersected with the sphere.
+#include "common/render.glsl"
+#include "common/ssf_scene.glsl"
+
+// Eye-space sphere centre of a world position; false when nothing of the sphere can be drawn
+// (wholly outside [near, far], or the camera inside it).
+bool sphere_visible(vec3 world, out vec3 center) {
+    float r = rnd.sphere.x;
+    center = (rnd.view * vec4(world, 1.0)).xyz;
+    float dist = length(center);
+    return !(-center.z + r < rnd.planes.x || -center.z - r > rnd.planes.y ||
+             (!render_orthographic() && dist <= r * 1.0001));
+}
+
+// Half size and in-plane axes of a quad through the centre, normal to the eye-centre axis,
+// that holds the sphere's projected silhouette: perspective r d / sqrt(d^2 - r^2) (the
+// section of the silhouette cone there); orthographic r, facing -z.
+void sphere_quad(vec3 center, out float half_size, out vec3 t, out vec3 b) {
+    float r = rnd.sphere.x;
+    float dist = length(center);
+    vec3 axis = render_orthographic() ? vec3(0.0, 0.0, 1.0) : center / dist;
+    half_size = render_orthographic() ? r : r * dist / sqrt(dist * dist - r * r);
+    vec3 helper = abs(axis.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
+    t = normalize(cross(helper, axis));
+    b = cross(axis, t);
+}
+
+// The camera ray through the centre of own-texture pixel `frag` (texel index + 0.5).
+void pixel_ray(vec2 frag, out vec3 origin, out vec3 dir) {
+    camera_ray(eye_point(pixel_ndc(frag), 1.0), origin, dir);
+}
+
+// Eye depth of the sphere's front surface seen through pixel `frag`, if the ray hits it in
+// [near, far] and in front of the engine's scene.
+bool sphere_depth_at(vec2 frag, vec3 center, out float depth) {
+    vec3 origin, dir;
+    pixel_ray(frag, origin, dir);
+    float t_front, t_back;
+    if (!sphere_hit(origin, dir, center, rnd.sphere.x, t_front, t_back)) return false;
+    depth = -(origin.z + t_front * dir.z);
+    return depth >= rnd.planes.x && depth <= rnd.planes.y && depth < scene_eye_depth(ivec2(frag));
+}
+
+// Length of the ray through pixel `frag` inside the sphere, between the near plane and the
+// nearer of the far plane and the engine's scene surface (0 when none).
+float sphere_chord_at(vec2 frag, vec3 center) {
+    vec3 origin, dir;
+    pixel_ray(frag, origin, dir);
+    float t_front, t_back;
+    if (!sphere_hit(origin, dir, center, rnd.sphere.x, t_front, t_back)) return 0.0;
+    float front = -(origin.z + t_front * dir.z), back = -(origin.z + t_back * dir.z);
+    float lo = max(front, rnd.planes.x);
+    float hi = min(min(back, rnd.planes.y), scene_eye_depth(ivec2(frag)));
+    return hi > lo ? (hi - lo) / -dir.z : 0.0;  // eye depth runs along -z: length along the ray
+}

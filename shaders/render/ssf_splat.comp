@@ -1,0 +1,58 @@
+// THICKNESS / DEPTH passes, compute path: one invocation per particle walks the pixels of
+// its sphere's projected quad and, for each pixel whose centre ray hits the sphere (the
+// same test the raster sprites make per fragment), adds the chord length to the thickness
+// image in fixed point (PF_SPLAT_DEPTH 0) or keeps the nearest eye depth with an atomic
+// minimum on its float bits (PF_SPLAT_DEPTH 1; positive floats order like their bits).
+// Compute instead of raster because fragment work is slow on compute-heavy GPUs (H100).
+#include "common/ssf_sphere.glsl"
+
+layout(local_size_x = PF_SPLAT_WORKGROUP) in;
+layout(std430, binding = PF_SSBO_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
+#if PF_SPLAT_DEPTH
+layout(binding = PF_IMG_SPLAT_DEPTH, r32ui) uniform coherent uimage2D io_bits;
+#else
+layout(binding = PF_IMG_SPLAT_THICKNESS, r32ui) uniform coherent uimage2D io_bits;
+#endif
+layout(location = PF_LOC_SPLAT_COUNT) uniform uint u_count;
+
+// Own-texture pixel of an eye-space point (may lie outside the texture).
+vec2 eye_to_pixel(vec3 p) {
+    vec4 clip = rnd.proj * vec4(p, 1.0);
+    vec2 ndc = clip.xy / clip.w;
+    return (vec2(ndc.x, ndc.y * rnd.surface.w) + 1.0) * 0.5 * rnd.viewport.xy;
+}
+
+void main() {
+    uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * uint(PF_SPLAT_WORKGROUP);
+    if (i >= u_count) return;
+    vec3 center;
+    if (!sphere_visible(pos[i].xyz, center)) return;
+    float half_size;
+    vec3 t, b;
+    sphere_quad(center, half_size, t, b);
+    // Pixel bounds of the quad's corners (all in front of the camera: the quad is culled
+    // otherwise, as the raster sprites are).
+    vec2 lo = vec2(1e30), hi = vec2(-1e30);
+    for (int k = 0; k < 4; ++k) {
+        vec2 corner = vec2(float(k & 1), float(k >> 1)) * 2.0 - 1.0;
+        vec3 p = center + half_size * (corner.x * t + corner.y * b);
+        if (!render_orthographic() && p.z >= 0.0) return;
+        vec2 px = eye_to_pixel(p);
+        lo = min(lo, px);
+        hi = max(hi, px);
+    }
+    ivec2 first = max(ivec2(floor(lo - 0.5)), ivec2(0));
+    ivec2 last = min(ivec2(ceil(hi + 0.5)), ivec2(rnd.viewport.xy) - 1);
+    for (int y = first.y; y <= last.y; ++y) {
+        for (int x = first.x; x <= last.x; ++x) {
+            vec2 frag = vec2(x, y) + 0.5;
+#if PF_SPLAT_DEPTH
+            float depth;
+            if (sphere_depth_at(frag, center, depth)) imageAtomicMin(io_bits, ivec2(x, y), floatBitsToUint(depth));
+#else
+            float chord = sphere_chord_at(frag, center);
+            if (chord > 0.0) imageAtomicAdd(io_bits, ivec2(x, y), uint(chord * PF_THICKNESS_FIXED_SCALE + 0.5));
+#endif
+        }
+    }
+}
