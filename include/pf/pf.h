@@ -74,7 +74,7 @@ typedef void (*pf_gl_proc)(void);
 typedef pf_gl_proc (*pf_gl_get_proc_address_fn)(const char* name);
 
 /** Parameters that may change between steps (pf_set_params). Fields marked "0 = default"
- *  take their default when zero; gravity and flip_ratio take zero literally. */
+ *  take their default when zero; gravity, flip_ratio and separation take zero literally. */
 typedef struct pf_sim_params {
     float gravity[3];             /**< body acceleration in m/s^2; default (0, -9.81, 0) */
     float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 */
@@ -83,6 +83,10 @@ typedef struct pf_sim_params {
     float cfl;                    /**< max cells a particle may cross per substep, (0, 16]; 0 = default 1 */
     uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; 0 = default 8 */
     uint32_t extrapolation_layers;/**< face layers velocity is extended into air, 1..16; 0 = default 2 */
+    uint32_t separation;          /**< 1: pressure is kept >= 0 (projected Jacobi, Gerszewski & Bargteil
+                                       2013), so liquid can pull away from walls and the lid instead of
+                                       clinging to them by suction; 0: the original's plain Jacobi.
+                                       0 or 1; default 1 (a zero value is taken literally) */
 } pf_sim_params;
 
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */

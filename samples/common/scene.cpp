@@ -228,7 +228,7 @@ Scene parse_scene(const std::string& text, const std::string& path) {
     if (auto it = root.find("params"); it != root.end()) {
         const json& pr = p.object(*it, "params");
         p.check_keys(pr, "params", {"gravity", "flip_ratio", "pressure_iterations", "jacobi_omega", "cfl",
-                                    "max_substeps", "extrapolation_layers"});
+                                    "max_substeps", "extrapolation_layers", "separation"});
         if (auto v = pr.find("gravity"); v != pr.end()) {
             const vec3f g = p.vec3(*v, "params.gravity");
             for (int a = 0; a < 3; ++a) s.params.gravity[a] = g[a];
@@ -242,6 +242,7 @@ Scene parse_scene(const std::string& text, const std::string& path) {
         if (auto v = pr.find("max_substeps"); v != pr.end()) s.params.max_substeps = p.u32(*v, "params.max_substeps", 1, 64);
         if (auto v = pr.find("extrapolation_layers"); v != pr.end())
             s.params.extrapolation_layers = p.u32(*v, "params.extrapolation_layers", 1, 16);
+        if (auto v = pr.find("separation"); v != pr.end()) s.params.separation = p.u32(*v, "params.separation", 0, 1);
     }
 
     if (auto it = root.find("frame_dt"); it != root.end()) s.frame_dt = p.real(*it, "frame_dt", 0.0, 1.0, true);

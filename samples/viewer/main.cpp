@@ -582,6 +582,11 @@ void Viewer::ui_simulation() {
         p.extrapolation_layers = uint32_t(layers);
         changed = true;
     }
+    bool separation = p.separation != 0;
+    if (ImGui::Checkbox("separation (pressure >= 0)", &separation)) {
+        p.separation = separation ? 1u : 0u;
+        changed = true;
+    }
     if (ImGui::Button("Scene values")) {
         p = scene_.params;
         changed = true;

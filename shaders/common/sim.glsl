@@ -11,7 +11,7 @@ layout(std140, binding = PF_UBO_SIM) uniform SimUniforms {
     vec4 gravity_dt;    // body acceleration (xyz), substep length (w)
     vec4 fixed_scale;   // S_m, S_w, 1/S_m, 1/S_w (fixed-point P2G)
     vec4 solve;         // density, jacobi omega, flip ratio, max speed
-    uvec4 counts;       // particle count, -, -, -
+    uvec4 counts;       // particle count, separation (pressure >= 0 when 1), -, -
 } sim;
 
 int cell_index(ivec3 c) { return c.x + sim.grid.x * (c.y + sim.grid.y * c.z); }

@@ -1,5 +1,8 @@
 // One (weighted) Jacobi iteration of the pressure Poisson equation on FLUID cells:
 //   sum over in-domain neighbours j of (p_i - p_j) = b_i,  p = 0 in AIR, walls excluded.
+// With separation on, each iterate is projected onto p >= 0 (projected Jacobi for the
+// complementarity problem of Gerszewski & Bargteil 2013): liquid may expand into air
+// (leave a wall, the lid, or itself) but is never held by suction.
 // Ping-pong: reads PF_SLOT_PRESSURE, writes PF_SLOT_PRESSURE_OUT.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
@@ -30,5 +33,6 @@ void main() {
     }
     float sum = (pair_sum.x + pair_sum.y) + pair_sum.z;
     float omega = sim.solve.y;
-    p_out[c] = (1.0 - omega) * p_in[c] + omega * (rhs[c] + sum) / diag;
+    float p = (1.0 - omega) * p_in[c] + omega * (rhs[c] + sum) / diag;
+    p_out[c] = sim.counts.y != 0u ? max(p, 0.0) : p;
 }

@@ -56,6 +56,7 @@ pf_sim_params pf_default_sim_params(void) {
     p.cfl = 1.0f;
     p.max_substeps = 8;
     p.extrapolation_layers = 2;
+    p.separation = 1;
     return p;
 }
 

@@ -13,7 +13,7 @@ struct SimUniforms {
     float gravity_dt[4];     // gravity xyz, substep dt
     float fixed_scale[4];    // S_m, S_w, 1/S_m, 1/S_w
     float solve[4];          // density, jacobi omega, flip ratio, max speed
-    uint32_t counts[4];      // particle count, -, -, -
+    uint32_t counts[4];      // particle count, separation (0/1), -, -
 };
 static_assert(sizeof(SimUniforms) == 7 * 16, "SimUniforms must match the std140 block");
 

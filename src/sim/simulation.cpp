@@ -190,6 +190,7 @@ void Simulation::upload_uniforms(float dt) {
     u.solve[2] = desc_.params.flip_ratio;
     u.solve[3] = desc_.max_speed;
     u.counts[0] = particle_count_;
+    u.counts[1] = desc_.params.separation;
     uniforms_.upload(0, sizeof(SimUniforms), &u);
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, PF_UBO_SIM, uniforms_.id());
 }

@@ -70,6 +70,7 @@ std::vector<ParamCase> bad_param_cases() {
         {"cfl Inf", "cfl", [](pf_sim_params& p) { p.cfl = kInf; }},
         {"max_substeps 65", "max_substeps", [](pf_sim_params& p) { p.max_substeps = 65; }},
         {"extrapolation_layers 17", "extrapolation_layers", [](pf_sim_params& p) { p.extrapolation_layers = 17; }},
+        {"separation 2", "separation", [](pf_sim_params& p) { p.separation = 2; }},
         {"gravity[0] +Inf", "gravity", [](pf_sim_params& p) { p.gravity[0] = kInf; }},
         {"gravity[1] -Inf", "gravity", [](pf_sim_params& p) { p.gravity[1] = -kInf; }},
         {"gravity[2] NaN", "gravity", [](pf_sim_params& p) { p.gravity[2] = kNaN; }},
@@ -534,6 +535,7 @@ TEST_F(CreateValidation, ZeroedDescParamsTakeDefaults) {
     EXPECT_EQ(got.extrapolation_layers, def.extrapolation_layers);
     EXPECT_EQ(got.gravity[1], 0.0f);
     EXPECT_EQ(got.flip_ratio, 0.0f);
+    EXPECT_EQ(got.separation, 0u);  // taken literally: the original's plain Jacobi
     EXPECT_EQ(pf_step(s.get(), kDt), PF_OK) << last_log();
 }
 

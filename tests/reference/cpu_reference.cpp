@@ -152,7 +152,7 @@ std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type
 
 std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
                            const std::vector<double>& rhs, std::vector<double> p0,
-                           int iterations, double omega) {
+                           int iterations, double omega, bool no_tension) {
     assert(p0.size() == size_t(grid.cells()));
     for (int id = 0; id < grid.cells(); ++id)
         if (!is_fluid(type, id)) p0[id] = 0.0;
@@ -168,6 +168,7 @@ std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
             });
             // diag = 0 only for a 1x1x1 grid, which the stencil does not support anyway.
             next[id] = diag ? (1.0 - omega) * p0[id] + omega * (rhs[id] + sum) / diag : 0.0;
+            if (no_tension) next[id] = std::max(next[id], 0.0); // projected Jacobi: p >= 0 (design.md §4.6)
         });
         std::swap(p0, next); // ping-pong: every cell of a sweep reads the previous sweep
     }
@@ -302,14 +303,14 @@ void advect(const Grid& grid, Particles& particles, double dt) {
 
 void substep(const Grid& grid, Particles& particles, SubstepState& state, glm::dvec3 gravity,
              double dt, double density, double flip_ratio, int jacobi_iterations, double omega,
-             int extrapolation_layers, double max_speed) {
+             int extrapolation_layers, double max_speed, bool no_tension) {
     if (state.pressure.size() != size_t(grid.cells())) state.pressure.assign(grid.cells(), 0.0);
     const P2GResult acc = p2g(grid, particles);                                 // 1-2
     const GridForces forces = grid_forces(grid, acc, gravity, dt);              // 3
     const std::vector<uint8_t> type = classify(grid, acc.count);                // 4
     const std::vector<double> b = pressure_rhs(grid, type, forces.vel, density, dt); // 5
     state.pressure = jacobi_iterations >= 0                                     // 6
-                         ? jacobi(grid, type, b, state.pressure, jacobi_iterations, omega)
+                         ? jacobi(grid, type, b, state.pressure, jacobi_iterations, omega, no_tension)
                          : solve_pressure_exact(grid, type, b);
     VelocityUpdate upd = velocity_update(grid, type, forces.vel, state.pressure, density, dt); // 7
     extrapolate(grid, upd, extrapolation_layers);                               // 8

@@ -89,7 +89,8 @@ std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type
 // treated as 0; the result is 0 in non-FLUID cells.
 std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
                            const std::vector<double>& rhs, std::vector<double> p0,
-                           int iterations, double omega);
+                           int iterations, double omega,
+                           bool no_tension = false); // no_tension: projected Jacobi, p >= 0
 
 // Converged solve of the same system (conjugate gradients to ‖b - A p‖ <= 1e-12·‖b‖).
 std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uint8_t>& type,
@@ -129,6 +130,7 @@ struct SubstepState {
 // solve_pressure_exact (a reference-only switch for tests that need a converged pressure).
 void substep(const Grid& grid, Particles& particles, SubstepState& state, glm::dvec3 gravity,
              double dt, double density, double flip_ratio, int jacobi_iterations, double omega,
-             int extrapolation_layers, double max_speed);
+             int extrapolation_layers, double max_speed,
+             bool no_tension = false);
 
 } // namespace pf::ref
