@@ -6,14 +6,6 @@
 #include <cstring>
 #include <initializer_list>
 
-// GL 4.4 (ARB_query_buffer_object); the app GLAD is generated for 4.3.
-#ifndef GL_QUERY_BUFFER
-#define GL_QUERY_BUFFER 0x9192
-#endif
-#ifndef GL_QUERY_BUFFER_BINDING
-#define GL_QUERY_BUFFER_BINDING 0x9193
-#endif
-
 namespace pf::test {
 
 namespace {

@@ -4,6 +4,14 @@
 // (and, for pflip's draws, hostile) way. Uses the app's GLAD, as an engine would.
 #pragma once
 #include <glad/gl.h>
+
+// GL 4.4 (ARB_query_buffer_object); the app GLAD is generated for 4.3.
+#ifndef GL_QUERY_BUFFER
+#define GL_QUERY_BUFFER 0x9192
+#endif
+#ifndef GL_QUERY_BUFFER_BINDING
+#define GL_QUERY_BUFFER_BINDING 0x9193
+#endif
 #include <gtest/gtest.h>
 
 #include <cstdint>
