@@ -3,6 +3,16 @@
 #pragma once
 #include <glad/gl.h>
 
+#include <cstdio>
+#include <string>
+
 namespace pf::gl {
 using Api = GladGLContext;
+
+// "0x0505": how GL enums and error codes appear in log messages.
+inline std::string hex(GLenum value) {
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "0x%04X", unsigned(value));
+    return buf;
 }
+}  // namespace pf::gl

@@ -52,7 +52,7 @@ pf_result Renderer::begin(const char* fn, const pf_camera& camera, const pf_rend
     if (GLenum pending = gl_.GetError(); pending != GL_NO_ERROR) {
         while (gl_.GetError() != GL_NO_ERROR) {
         }
-        sim_.log().warning(std::string(fn) + ": a GL error (0x" + std::to_string(pending) +
+        sim_.log().warning(std::string(fn) + ": a GL error (" + gl::hex(pending) +
                            ") was pending before the call; it was consumed");
     }
     if (pf_result r = check_render_target(gl_, sim_.log(), fn, target, camera, ssf, info); r != PF_OK) return r;
@@ -143,7 +143,7 @@ pf_result Renderer::finish(const char* fn, std::chrono::steady_clock::time_point
     while (gl_.GetError() != GL_NO_ERROR) {
     }
     return sim_.log().error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                            std::string(fn) + ": the GL reported error 0x" + std::to_string(err));
+                            std::string(fn) + ": the GL reported error " + gl::hex(err));
 }
 
 // ---- pf_render_ssf -----------------------------------------------------------------------------
@@ -185,7 +185,7 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return sim_.log().error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
                                 std::string(fn) + ": allocating " + std::to_string(w) + "x" + std::to_string(h) +
-                                    " render targets failed (GL error 0x" + std::to_string(err) + ")");
+                                    " render targets failed (GL error " + gl::hex(err) + ")");
     }
 
     RenderUniforms u{};

@@ -8,11 +8,7 @@
 namespace pf {
 
 namespace {
-std::string hex(GLenum v) {
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "0x%04x", unsigned(v));
-    return buf;
-}
+using gl::hex;
 
 struct Check {
     const gl::Api& gl;

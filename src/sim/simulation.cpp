@@ -34,11 +34,7 @@ GLADapiproc load_gl(void* user, const char* name) {
 
 int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
 
-std::string hex(GLenum e) {
-    char buf[16];
-    std::snprintf(buf, sizeof(buf), "0x%04X", unsigned(e));
-    return buf;
-}
+using gl::hex;
 }  // namespace
 
 Simulation::Simulation(const pf_sim_desc& desc) : desc_(desc), log_(desc.logger) {}
