@@ -67,29 +67,25 @@ void print_usage(std::FILE* f) {
 Options parse_args(int argc, char** argv) {
     Options o;
     for (int i = 0; i < argc; ++i) o.command_line += std::string(i ? " " : "") + argv[i];
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) throw Error(a + " needs a value (see --help)");
-            return argv[++i];
-        };
+    for (pfs::ArgCursor args(argc, argv); args.next();) {
+        const std::string& a = args.option();
         if (a == "-h" || a == "--help") {
             print_usage(stdout);
             std::exit(0);
         } else if (a == "--warmup") {
-            o.warmup = pfs::parse_u32(value(), "--warmup", 0, 1000000);
+            o.warmup = pfs::parse_u32(args.value(), "--warmup", 0, 1000000);
         } else if (a == "--steps") {
-            o.steps = pfs::parse_u32(value(), "--steps", 1, 1000000);
+            o.steps = pfs::parse_u32(args.value(), "--steps", 1, 1000000);
         } else if (a == "--pressure-iterations") {
-            o.pressure_iterations = pfs::parse_u32(value(), "--pressure-iterations", 1, 10000);
+            o.pressure_iterations = pfs::parse_u32(args.value(), "--pressure-iterations", 1, 10000);
         } else if (a == "--max-substeps") {
-            o.max_substeps = pfs::parse_u32(value(), "--max-substeps", 1, 64);
+            o.max_substeps = pfs::parse_u32(args.value(), "--max-substeps", 1, 64);
         } else if (a == "--frame-dt") {
-            o.frame_dt = pfs::parse_float(value(), "--frame-dt", 1e-6f, 1.0f);
+            o.frame_dt = pfs::parse_float(args.value(), "--frame-dt", 1e-6f, 1.0f);
         } else if (a == "--json") {
-            o.json_path = value();
+            o.json_path = args.value();
         } else if (a == "--csv") {
-            o.csv_path = value();
+            o.csv_path = args.value();
         } else if (a == "--verbose") {
             o.verbose = true;
         } else if (!a.empty() && a[0] == '-') {

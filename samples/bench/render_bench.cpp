@@ -68,22 +68,18 @@ void print_usage() {
 Options parse_args(int argc, char** argv) {
     Options o;
     std::vector<std::string> scenes;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) throw Error(a + " needs a value (see --help)");
-            return argv[++i];
-        };
+    for (pfs::ArgCursor args(argc, argv); args.next();) {
+        const std::string& a = args.option();
         if (a == "-h" || a == "--help") {
             print_usage();
             std::exit(0);
         } else if (a == "--warmup") {
-            o.warmup = pfs::parse_u32(value(), "--warmup", 0, 100000);
+            o.warmup = pfs::parse_u32(args.value(), "--warmup", 0, 100000);
         } else if (a == "--frames") {
-            o.frames = pfs::parse_u32(value(), "--frames", 1, 100000);
+            o.frames = pfs::parse_u32(args.value(), "--frames", 1, 100000);
         } else if (a == "--sizes") {
             o.sizes.clear();
-            std::string list = value();
+            std::string list = args.value();
             for (size_t start = 0; start <= list.size();) {
                 const size_t comma = std::min(list.find(',', start), list.size());
                 uint32_t w = 0, h = 0;
@@ -92,9 +88,9 @@ Options parse_args(int argc, char** argv) {
                 start = comma + 1;
             }
         } else if (a == "--json") {
-            o.json_path = value();
+            o.json_path = args.value();
         } else if (a == "--csv") {
-            o.csv_path = value();
+            o.csv_path = args.value();
         } else if (!a.empty() && a[0] == '-') {
             throw Error("unknown option '" + a + "' (see --help)");
         } else {

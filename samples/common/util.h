@@ -46,6 +46,31 @@ struct Summary {
 };
 Summary summarize(std::vector<double> values);
 
+/// Walks a command line option by option:
+///     for (ArgCursor args(argc, argv); args.next();) { if (args.option() == "--x") x = args.value(); }
+class ArgCursor {
+public:
+    ArgCursor(int argc, char** argv) : argc_(argc), argv_(argv) {}
+    /// Moves to the next argument; false after the last.
+    bool next() {
+        if (++i_ >= argc_) return false;
+        option_ = argv_[i_];
+        return true;
+    }
+    const std::string& option() const { return option_; }
+    /// The argument after the current option (consumed); throws Error if there is none.
+    std::string value() {
+        if (i_ + 1 >= argc_) throw Error(option_ + " needs a value (see --help)");
+        return argv_[++i_];
+    }
+
+private:
+    int argc_;
+    char** argv_;
+    int i_ = 0;
+    std::string option_;
+};
+
 /// Strict number parsing for command-line options; throw Error naming the option.
 uint32_t parse_u32(const std::string& text, const char* option, uint32_t lo, uint32_t hi);
 float parse_float(const std::string& text, const char* option, float lo, float hi);

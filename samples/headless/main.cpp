@@ -90,51 +90,47 @@ void print_usage(std::FILE* f) {
 
 Options parse_args(int argc, char** argv) {
     Options o;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) throw Error(a + " needs a value (see --help)");
-            return argv[++i];
-        };
+    for (pfs::ArgCursor args(argc, argv); args.next();) {
+        const std::string& a = args.option();
         if (a == "-h" || a == "--help") {
             print_usage(stdout);
             std::exit(0);
         } else if (a == "--scene") {
-            o.scene = value();
+            o.scene = args.value();
         } else if (a == "--frames") {
-            o.frames = pfs::parse_u32(value(), "--frames", 0, 10000000);
+            o.frames = pfs::parse_u32(args.value(), "--frames", 0, 10000000);
             o.frames_set = true;
         } else if (a == "--out") {
-            o.out = value();
+            o.out = args.value();
         } else if (a == "--size") {
-            pfs::parse_size(value(), "--size", o.width, o.height);
+            pfs::parse_size(args.value(), "--size", o.width, o.height);
         } else if (a == "--every") {
-            o.every = pfs::parse_u32(value(), "--every", 0, 1000000);
+            o.every = pfs::parse_u32(args.value(), "--every", 0, 1000000);
         } else if (a == "--render") {
-            const std::string v = value();
+            const std::string v = args.value();
             if (v == "ssf") o.ssf = true;
             else if (v == "particles") o.ssf = false;
             else throw Error("--render: expected ssf or particles, got '" + v + "'");
         } else if (a == "--filter") {
-            const std::string v = value();
+            const std::string v = args.value();
             if (v == "bilateral") o.filter = PF_SSF_FILTER_BILATERAL;
             else if (v == "narrow" || v == "narrow_range") o.filter = PF_SSF_FILTER_NARROW_RANGE;
             else if (v == "none") o.filter = PF_SSF_FILTER_NONE;
             else throw Error("--filter: expected bilateral, narrow or none, got '" + v + "'");
             o.filter_set = true;
         } else if (a == "--path") {
-            const std::string v = value();
+            const std::string v = args.value();
             if (v == "compute") o.path = PF_SSF_PATH_COMPUTE;
             else if (v == "raster") o.path = PF_SSF_PATH_RASTER;
             else throw Error("--path: expected compute or raster, got '" + v + "'");
         } else if (a == "--depth") {
-            o.depth = pfs::parse_depth_convention(value(), "--depth");
+            o.depth = pfs::parse_depth_convention(args.value(), "--depth");
         } else if (a == "--builtin-sky") {
             o.builtin_sky = true;
         } else if (a == "--radius") {
-            o.radius = pfs::parse_float(value(), "--radius", 1e-5f, 100.0f);
+            o.radius = pfs::parse_float(args.value(), "--radius", 1e-5f, 100.0f);
         } else if (a == "--color-by") {
-            const std::string v = value();
+            const std::string v = args.value();
             static const char* names[] = {"speed", "vx", "vy", "vz", "height", "uniform"};
             bool found = false;
             for (int k = 0; k < 6 && !found; ++k)
@@ -145,9 +141,9 @@ Options parse_args(int argc, char** argv) {
             if (!found) throw Error("--color-by: expected speed, vx, vy, vz, height or uniform, got '" + v + "'");
             o.color_by_set = true;
         } else if (a == "--video") {
-            o.video = value();
+            o.video = args.value();
         } else if (a == "--fps") {
-            o.fps = pfs::parse_float(value(), "--fps", 0.1f, 1000.0f);
+            o.fps = pfs::parse_float(args.value(), "--fps", 0.1f, 1000.0f);
         } else if (a == "--verbose") {
             o.verbose = true;
         } else if (a == "--debug-context") {

@@ -92,37 +92,33 @@ void print_usage(std::FILE* f) {
 Options parse_args(int argc, char** argv) {
     Options o;
     bool frames_set = false;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) throw Error(a + " needs a value (see --help)");
-            return argv[++i];
-        };
+    for (pfs::ArgCursor args(argc, argv); args.next();) {
+        const std::string& a = args.option();
         if (a == "-h" || a == "--help") {
             print_usage(stdout);
             std::exit(0);
         } else if (a == "--scene") {
-            o.scene = value();
+            o.scene = args.value();
         } else if (a == "--size") {
-            pfs::parse_size(value(), "--size", o.width, o.height);
+            pfs::parse_size(args.value(), "--size", o.width, o.height);
         } else if (a == "--render") {
-            const std::string v = value();
+            const std::string v = args.value();
             if (v == "ssf") o.ssf = true;
             else if (v == "particles") o.ssf = false;
             else throw Error("--render: expected ssf or particles, got '" + v + "'");
         } else if (a == "--depth") {
-            o.depth = pfs::parse_depth_convention(value(), "--depth");
+            o.depth = pfs::parse_depth_convention(args.value(), "--depth");
         } else if (a == "--paused") {
             o.paused = true;
         } else if (a == "--no-vsync") {
             o.vsync = false;
         } else if (a == "--screenshot") {
-            o.screenshot = value();
+            o.screenshot = args.value();
         } else if (a == "--frames") {
-            o.frames = pfs::parse_u32(value(), "--frames", 1, 100000000);
+            o.frames = pfs::parse_u32(args.value(), "--frames", 1, 100000000);
             frames_set = true;
         } else if (a == "--drag") {
-            const std::string v = value();
+            const std::string v = args.value();
             float f[6] = {0, 0, 0, 0, 5, 15};
             const int n = std::sscanf(v.c_str(), "%f,%f,%f,%f,%f,%f", &f[0], &f[1], &f[2], &f[3], &f[4], &f[5]);
             if ((n != 4 && n != 6) || f[4] < 1 || f[5] <= f[4])

@@ -28,14 +28,6 @@ protected:
     }
 };
 
-double max_speed_of(const ParticleState& p) {
-    double m = 0;
-    for (size_t i = 0; i < p.count(); ++i)
-        m = std::max(m, std::sqrt(double(p.vel[i * 3]) * p.vel[i * 3] + double(p.vel[i * 3 + 1]) * p.vel[i * 3 + 1] +
-                                  double(p.vel[i * 3 + 2]) * p.vel[i * 3 + 2]));
-    return m;
-}
-
 // A tank filled to half height, at rest, stays at rest: the pressure solve must balance
 // gravity. Bounds: spurious speed below 2% of the free-fall speed over the depth
 // (sqrt(2 g H) = 2.8 m/s for H = 0.4 m), and the surface stays flat within half a cell.

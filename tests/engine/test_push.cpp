@@ -47,10 +47,7 @@ TEST_F(Push, ClampsToMaxSpeedAndRaisesTheFlag) {
     const float c[3] = {0.4f, 0.4f, 0.4f}, dv[3] = {0.0f, 40.0f, 0.0f};
     ASSERT_EQ(pf_push(sim.get(), c, 1.0f, dv), PF_OK);
     ParticleState p = read_all(sim.get());
-    double fastest = 0;
-    for (size_t i = 0; i < p.count(); ++i)
-        fastest = std::max(fastest, std::sqrt(double(p.vel[i * 3]) * p.vel[i * 3] + double(p.vel[i * 3 + 1]) * p.vel[i * 3 + 1] +
-                                              double(p.vel[i * 3 + 2]) * p.vel[i * 3 + 2]));
+    const double fastest = max_speed_of(p);
     EXPECT_LE(fastest, 5.0 * (1 + 1e-6));
     EXPECT_GT(fastest, 4.9);
     glFinish();

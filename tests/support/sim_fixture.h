@@ -3,6 +3,8 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -32,6 +34,15 @@ struct ParticleState {
     std::vector<float> pos, vel;  // 3 floats per particle
     size_t count() const { return pos.size() / 3; }
 };
+
+// Largest particle speed, m/s.
+inline double max_speed_of(const ParticleState& p) {
+    double m = 0;
+    for (size_t i = 0; i < p.count(); ++i)
+        m = std::max(m, std::sqrt(double(p.vel[i * 3]) * p.vel[i * 3] + double(p.vel[i * 3 + 1]) * p.vel[i * 3 + 1] +
+                                  double(p.vel[i * 3 + 2]) * p.vel[i * 3 + 2]));
+    return m;
+}
 
 inline ParticleState read_all(pf_sim* sim) {
     pf_stats st{};
