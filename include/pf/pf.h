@@ -73,6 +73,13 @@ typedef void (*pf_gl_proc)(void);
 /** The engine's GL loader: returns the entry point called name, or NULL. */
 typedef pf_gl_proc (*pf_gl_get_proc_address_fn)(const char* name);
 
+/** Pressure solvers, from cheapest to most accurate per iteration (docs/accuracy.md). */
+typedef enum pf_pressure_solver {
+    PF_PRESSURE_SOLVER_JACOBI = 0,   /**< weighted Jacobi, params.pressure_iterations sweeps (the original) */
+    PF_PRESSURE_SOLVER_COUNT = 1,
+    PF_PRESSURE_SOLVER_FORCE32 = 0x7fffffff
+} pf_pressure_solver;
+
 /** Parameters that may change between steps (pf_set_params). Fields marked "0 = default"
  *  take their default when zero; gravity, flip_ratio and separation take zero literally. */
 typedef struct pf_sim_params {
@@ -87,6 +94,7 @@ typedef struct pf_sim_params {
                                        2013), so liquid can pull away from walls and the lid instead of
                                        clinging to them by suction; 0: the original's plain Jacobi.
                                        0 or 1; default 1 (a zero value is taken literally) */
+    pf_pressure_solver pressure_solver; /**< which solver; default (0) PF_PRESSURE_SOLVER_JACOBI */
 } pf_sim_params;
 
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
@@ -167,6 +175,16 @@ typedef struct pf_stats {
     float render_cpu_ms;              /**< host time inside the last render call */
 } pf_stats;
 
+/** One entry of the per-pass statistics list (pf_get_pass_stats). The list is built at run
+ *  time: it holds the core passes and those of the active solver and effects, so new passes do
+ *  not change any struct. */
+typedef struct pf_pass_stats {
+    const char* name;             /**< stable short name ("p2g", "jacobi", ...); valid until pf_destroy */
+    pf_pass group;                /**< the pf_stats.gpu_ms / dispatches entry this pass adds to */
+    float gpu_ms;                 /**< GPU ms in the measured step (pf_stats.gpu_step), summed over substeps */
+    uint32_t dispatches;          /**< compute dispatches in the last pf_step (0: did not run) */
+} pf_pass_stats;
+
 /** The simulation's particle buffers, for engines that draw particles themselves. pf_step
  *  ends with glMemoryBarrier(VERTEX_ATTRIB_ARRAY | SHADER_STORAGE | BUFFER_UPDATE), so
  *  they may be read as vertex attributes, storage buffers or copied right after it. */
@@ -221,6 +239,10 @@ PF_API pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out);
 PF_API pf_result pf_get_stats(const pf_sim* sim, pf_stats* out);
 /** Clear the sticky PF_FLAG_* bits. */
 PF_API pf_result pf_clear_flags(pf_sim* sim);
+/** Number of entries in the per-pass statistics list (it may grow when parameters change). */
+PF_API pf_result pf_get_pass_count(const pf_sim* sim, uint32_t* out);
+/** Entry `index` (< pf_get_pass_count) of the per-pass statistics list; no stall. */
+PF_API pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_stats* out);
 
 
 /* ---- rendering into the engine's frame ----------------------------------------------------- */

@@ -5,13 +5,9 @@
 #include "common/dispatch.glsl"
 
 layout(std140, binding = PF_UBO_SIM) uniform SimUniforms {
-    ivec4 grid;         // nx, ny, nz, cell count
-    ivec4 face_count;   // NU, NV, NW, NU+NV+NW
-    vec4 origin_dx;     // grid minimum corner (xyz), cell size (w)
-    vec4 gravity_dt;    // body acceleration (xyz), substep length (w)
-    vec4 fixed_scale;   // S_m, S_w, 1/S_m, 1/S_w (fixed-point P2G)
-    vec4 solve;         // density, jacobi omega, flip ratio, max speed
-    uvec4 counts;       // particle count, separation (pressure >= 0 when 1), -, -
+#define PF_UNIFORM(type, name) type name;
+#include "common/sim_uniforms.h"
+#undef PF_UNIFORM
 } sim;
 
 int cell_index(ivec3 c) { return c.x + sim.grid.x * (c.y + sim.grid.y * c.z); }
@@ -47,7 +43,7 @@ void decode_face(int id, out int axis, out ivec3 f) {
 // Domain walls are the boundary faces of each lattice (free-slip: normal velocity 0).
 bool face_is_wall(int axis, ivec3 f) { return f[axis] == 0 || f[axis] == sim.grid[axis]; }
 
-vec3 grid_coord(vec3 world) { return (world - sim.origin_dx.xyz) / sim.origin_dx.w; }
+vec3 grid_coord(vec3 world) { return (world - sim.origin.xyz) / sim.dx; }
 
 // Clamped trilinear stencil of lattice `axis` at grid coordinate g.
 struct Stencil {

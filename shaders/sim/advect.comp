@@ -10,10 +10,10 @@ const float kWallMargin = 1e-3;  // cells
 
 void main() {
     uint i = flat_id();
-    if (i >= sim.counts.x) return;
-    vec3 x = pos[i].xyz + sim.gravity_dt.w * vel[i].xyz;
+    if (i >= sim.particle_count) return;
+    vec3 x = pos[i].xyz + sim.dt * vel[i].xyz;
     vec3 g = grid_coord(x);
     vec3 clamped = clamp(g, vec3(kWallMargin), vec3(sim.grid.xyz) - kWallMargin);
-    x = mix(x, sim.origin_dx.xyz + clamped * sim.origin_dx.w, notEqual(g, clamped));
+    x = mix(x, sim.origin.xyz + clamped * sim.dx, notEqual(g, clamped));
     pos[i] = vec4(x, 0.0);
 }

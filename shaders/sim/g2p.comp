@@ -14,7 +14,7 @@ layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
 
 void main() {
     uint i = flat_id();
-    if (i >= sim.counts.x) return;
+    if (i >= sim.particle_count) return;
     vec3 g = grid_coord(pos[i].xyz);
     vec3 v_pic = vec3(0.0);
     vec3 delta = vec3(0.0);
@@ -40,7 +40,7 @@ void main() {
 #if PF_PIC_ONLY
     vec3 v = v_pic;
 #else
-    float r = sim.solve.z;
+    float r = sim.flip_ratio;
     vec3 v = (1.0 - r) * v_pic + r * (vel[i].xyz + delta);
 #endif
     uint flags = 0u;
@@ -49,7 +49,7 @@ void main() {
         flags |= PF_GPU_FLAG_NONFINITE;
     }
     float speed = length(v);
-    float max_speed = sim.solve.w;
+    float max_speed = sim.max_speed;
     if (speed > max_speed) {
         v *= max_speed / speed;
         speed = max_speed;

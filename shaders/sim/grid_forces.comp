@@ -16,8 +16,8 @@ void main() {
 
     int momentum = accum[2 * id];
     int weight = accum[2 * id + 1];
-    float u_old = weight > 0 ? (float(momentum) * sim.fixed_scale.z) / (float(weight) * sim.fixed_scale.w) : 0.0;
-    float u = weight > 0 ? u_old + sim.gravity_dt.w * sim.gravity_dt[axis] : 0.0;
+    float u_old = weight > 0 ? (float(momentum) * sim.inv_momentum_scale) / (float(weight) * sim.inv_weight_scale) : 0.0;
+    float u = weight > 0 ? u_old + sim.dt * sim.gravity[axis] : 0.0;
     face_vel_old[id] = u_old;
     face_vel[id] = face_is_wall(axis, f) ? 0.0 : u;
 }

@@ -20,7 +20,7 @@ void accumulate(int word, int value) {
 
 void main() {
     uint i = flat_id();
-    if (i >= sim.counts.x) return;
+    if (i >= sim.particle_count) return;
     vec3 g = grid_coord(pos[i].xyz);
     vec3 v = vel[i].xyz;
 
@@ -34,8 +34,8 @@ void main() {
             float w = stencil_weight(st.frac, d);
             int face = face_index(axis, st.base + d);
             // roundEven is odd-symmetric: mirrored inputs give mirrored integers.
-            accumulate(2 * face, int(roundEven(w * v[axis] * sim.fixed_scale.x)));
-            accumulate(2 * face + 1, int(roundEven(w * sim.fixed_scale.y)));
+            accumulate(2 * face, int(roundEven(w * v[axis] * sim.momentum_scale)));
+            accumulate(2 * face + 1, int(roundEven(w * sim.weight_scale)));
         }
     }
 }

@@ -23,5 +23,5 @@ void main() {
         hi[axis] += 1;
         div += face_vel[face_index(axis, hi)] - face_vel[face_index(axis, ijk)];
     }
-    rhs[c] = -div * sim.solve.x * sim.origin_dx.w / sim.gravity_dt.w;
+    rhs[c] = -div * sim.density * sim.dx / sim.dt;
 }

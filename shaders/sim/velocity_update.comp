@@ -28,7 +28,7 @@ void main() {
     if (ta == PF_CELL_FLUID || tb == PF_CELL_FLUID) {
         float pa = ta == PF_CELL_FLUID ? pressure[a] : 0.0;
         float pb = tb == PF_CELL_FLUID ? pressure[b] : 0.0;
-        float scale = sim.gravity_dt.w / (sim.solve.x * sim.origin_dx.w);
+        float scale = sim.dt / (sim.density * sim.dx);
         face_vel[id] -= scale * (pb - pa);
         valid[id] = 1u;
     } else {

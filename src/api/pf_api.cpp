@@ -206,4 +206,24 @@ pf_result pf_clear_flags(pf_sim* sim) {
     return PF_OK;
 }
 
+pf_result pf_get_pass_count(const pf_sim* sim, uint32_t* out) {
+    PF_CHECK_SIM(sim, "pf_get_pass_count");
+    if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_pass_count: out must not be NULL");
+    *out = sim->impl->pass_count();
+    return PF_OK;
+}
+
+pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_stats* out) {
+    PF_CHECK_SIM(sim, "pf_get_pass_stats");
+    const pf::Simulation& s = *sim->impl;
+    if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_pass_stats: out must not be NULL");
+    if (index >= s.pass_count()) {
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_pass_stats: index " + std::to_string(index) +
+                                                            " is not below the pass count " +
+                                                            std::to_string(s.pass_count()));
+    }
+    s.pass_stats(index, *out);
+    return PF_OK;
+}
+
 }  // extern "C"

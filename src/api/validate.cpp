@@ -49,6 +49,8 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
     if (p.max_substeps < 1 || p.max_substeps > 64)
         return bad("params.max_substeps must be in [1, 64], got " + std::to_string(p.max_substeps));
     if (p.separation > 1) return bad("params.separation must be 0 or 1, got " + std::to_string(p.separation));
+    if (uint32_t(p.pressure_solver) >= PF_PRESSURE_SOLVER_COUNT)
+        return bad("params.pressure_solver is not a pf_pressure_solver value, got " + std::to_string(int(p.pressure_solver)));
     if (p.extrapolation_layers < 1 || p.extrapolation_layers > 16)
         return bad("params.extrapolation_layers must be in [1, 16], got " + std::to_string(p.extrapolation_layers));
     return PF_OK;

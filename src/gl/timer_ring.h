@@ -1,7 +1,8 @@
 // Per-pass GPU timing without stalls: each step records GL_TIMESTAMP queries around every
 // pass into one slot of a small ring; results are read only once the GPU reports them
 // available, a few steps later. glQueryCounter is used (not GL_TIME_ELAPSED) so an engine's
-// own elapsed-time query may stay active across pf_step.
+// own elapsed-time query may stay active across pf_step. Pass ids are small integers chosen
+// by the owner (a runtime list: the simulation's pass list grows when a solver is added).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -11,7 +12,6 @@
 
 namespace pf::gl {
 
-template <int PassCount>
 class TimerRing {
 public:
     static constexpr int kSlots = 4;
@@ -19,7 +19,8 @@ public:
     struct Result {
         uint64_t step = 0;  // 0: nothing measured yet
         uint32_t substeps = 0;
-        std::array<float, PassCount> ms{};
+        std::vector<float> ms;  // indexed by pass id; shorter when high ids did not run
+        float at(size_t pass) const { return pass < ms.size() ? ms[pass] : 0.0f; }
     };
 
     explicit TimerRing(const Api& gl) : gl_(gl) {
@@ -74,7 +75,9 @@ public:
                 GLuint64 t0 = 0, t1 = 0;
                 gl_.GetQueryObjectui64v(s.queries[2 * p], GL_QUERY_RESULT, &t0);
                 gl_.GetQueryObjectui64v(s.queries[2 * p + 1], GL_QUERY_RESULT, &t1);
-                r.ms[s.passes[p]] += static_cast<float>(static_cast<double>(t1 - t0) * 1e-6);
+                const size_t id = static_cast<size_t>(s.passes[p]);
+                if (r.ms.size() <= id) r.ms.resize(id + 1, 0.0f);
+                r.ms[id] += static_cast<float>(static_cast<double>(t1 - t0) * 1e-6);
             }
             latest_ = r;
         }

@@ -35,8 +35,8 @@ int gl_version(const gl::Api& gl) {
 
 // Scope of one timed pass.
 struct TimedPass {
-    gl::TimerRing<PF_RENDER_PASS_COUNT>& timers;
-    TimedPass(gl::TimerRing<PF_RENDER_PASS_COUNT>& t, pf_render_pass pass) : timers(t) { timers.begin_pass(pass); }
+    gl::TimerRing& timers;
+    TimedPass(gl::TimerRing& t, pf_render_pass pass) : timers(t) { timers.begin_pass(pass); }
     ~TimedPass() { timers.end_pass(); }
 };
 }  // namespace
@@ -401,8 +401,8 @@ void Renderer::stats(pf_stats& out) const {
     out.render_frame = r.step;
     out.render_gpu_total_ms = 0.0f;
     for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) {
-        out.render_gpu_ms[p] = r.ms[p];
-        out.render_gpu_total_ms += r.ms[p];
+        out.render_gpu_ms[p] = r.at(size_t(p));
+        out.render_gpu_total_ms += r.at(size_t(p));
     }
     out.render_cpu_ms = last_cpu_ms_;
 }

@@ -69,7 +69,7 @@ private:
     gl::StateGuard::Options guard_options_{};
     int gl_version_ = 0;  // major * 10 + minor
     gl::ProgramCache programs_;
-    mutable gl::TimerRing<PF_RENDER_PASS_COUNT> timers_;  // polled by the const stats()
+    mutable gl::TimerRing timers_;  // polled by the const stats()
     gl::Buffer uniforms_;
     gl::Object vao_, nearest_, linear_;
     std::unique_ptr<SsfTargets> targets_;

@@ -32,8 +32,6 @@ GLADapiproc load_gl(void* user, const char* name) {
     return reinterpret_cast<GLADapiproc>(static_cast<GlFunctionLoader*>(user)->fn(name));
 }
 
-int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
-
 using gl::hex;
 }  // namespace
 
@@ -89,7 +87,6 @@ pf_result Simulation::init() {
     gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
     GLint max_blocks = 0;
     gl_.GetIntegerv(GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS, &max_blocks);
-    gl_.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups_x_);
     if (max_blocks < PF_SLOT_COUNT) {
         return log_.error(PF_ERROR_GL_UNSUPPORTED, "pf_create: the GL offers " + std::to_string(max_blocks) +
                                                        " compute storage blocks, 8 are needed");
@@ -111,7 +108,7 @@ pf_result Simulation::init() {
     for (auto& b : face_valid_) b = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY);
     cell_count_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
     cell_type_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
-    for (auto& b : pressure_) b = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
+    pressure_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
     rhs_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
     uniforms_ = gl::Buffer(gl_, sizeof(SimUniforms), GL_DYNAMIC_DRAW);
     status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY);
@@ -122,146 +119,112 @@ pf_result Simulation::init() {
                               " MiB of GPU buffers failed (GL error " + hex(err) + ")");
     }
 
-    programs_ = std::make_unique<gl::ProgramCache>(gl_);
-    timers_ = std::make_unique<gl::TimerRing<PF_PASS_COUNT>>(gl_);
+    runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM);
+    PassRunner& r = *runner_;
+    stat_ = CoreStats{r.add_stat("clear", PF_PASS_CLEAR),
+                      r.add_stat("p2g", PF_PASS_P2G),
+                      r.add_stat("grid_forces", PF_PASS_GRID_FORCES),
+                      r.add_stat("classify", PF_PASS_CLASSIFY),
+                      r.add_stat("pressure_setup", PF_PASS_PRESSURE_SETUP),
+                      r.add_stat("velocity_update", PF_PASS_VELOCITY_UPDATE),
+                      r.add_stat("extrapolate", PF_PASS_EXTRAPOLATE),
+                      r.add_stat("g2p", PF_PASS_G2P),
+                      r.add_stat("advect", PF_PASS_ADVECT)};
     const ProgramId needed[] = {ProgramId::fill, ProgramId::p2g, ProgramId::grid_forces, ProgramId::classify,
-                                ProgramId::pressure_setup, ProgramId::jacobi, ProgramId::velocity_update,
+                                ProgramId::pressure_setup, ProgramId::velocity_update,
                                 ProgramId::extrapolate, ProgramId::advect,
                                 desc_.params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic};
     for (ProgramId id : needed) {
-        std::string error;
-        if (!programs_->get(id, error)) return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
+        if (std::string error = r.prepare(id); !error.empty())
+            return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
     }
+    if (pf_result res = solver_for(desc_.params, "pf_create", &solver_); res != PF_OK) return res;
     // Pressure starts at zero (warm start of the first solve); everything else is written
     // before it is read.
-    fill(pressure_[0], uint32_t(cells_), 0u, PF_PASS_CLEAR);
-    fill(status_, PF_STATUS_WORDS, 0u, PF_PASS_CLEAR);
-    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    dispatches_ = {};
+    fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
+    fill(status_, PF_STATUS_WORDS, 0u, stat_.clear);
     return PF_OK;
 }
 
-void Simulation::bind(GLuint slot, const gl::Buffer& buffer) const {
-    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, slot, buffer.id());
+pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out) {
+    std::unique_ptr<PressureSolver>& slot = solvers_[params.pressure_solver];
+    if (!slot) {
+        std::unique_ptr<PressureSolver> made = make_pressure_solver(params.pressure_solver);
+        if (!made) return log_.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": unknown pressure solver");
+        const SolverGrid grid{glm::ivec3(desc_.grid_size[0], desc_.grid_size[1], desc_.grid_size[2]),
+                              uint32_t(cells_)};
+        if (pf_result r = made->init(gl_, *runner_, grid, log_, fn); r != PF_OK) return r;
+        if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
+            return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
+                              std::string(fn) + ": allocating the pressure solver failed (GL error " + hex(err) + ")");
+        }
+        slot = std::move(made);
+    }
+    *out = slot.get();
+    return PF_OK;
 }
 
-void Simulation::dispatch(ProgramId program, uint64_t invocations, pf_pass pass) {
-    if (invocations == 0) return;
-    const int64_t groups = ceil_div(int64_t(invocations), PF_WORKGROUP_SIZE);
-    const int64_t gx = std::min<int64_t>(groups, max_groups_x_);
-    const int64_t gy = ceil_div(groups, gx);
-    gl_.UseProgram(programs_->built(program));
-    gl_.DispatchCompute(GLuint(gx), GLuint(gy), 1);
-    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    if (pass < PF_PASS_COUNT) ++dispatches_[pass];
-}
-
-void Simulation::fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, pf_pass pass) {
-    const GLuint p = programs_->built(ProgramId::fill);
+void Simulation::fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat) {
+    const GLuint p = runner_->program(ProgramId::fill);
     gl_.ProgramUniform1ui(p, PF_LOC_FILL_COUNT, words);
     gl_.ProgramUniform1ui(p, PF_LOC_FILL_VALUE, value);
-    bind(PF_SLOT_FILL, buffer);
-    dispatch(ProgramId::fill, words, pass);
+    runner_->run({ProgramId::fill, stat, words, {{PF_SLOT_FILL, &buffer}}});
 }
 
 void Simulation::upload_uniforms(float dt) {
     SimUniforms& u = uniform_data_;
-    for (int a = 0; a < 3; ++a) {
-        u.grid[a] = int32_t(desc_.grid_size[a]);
-        u.face_count[a] = face_counts_[a];
-        u.origin_dx[a] = desc_.origin[a];
-        u.gravity_dt[a] = desc_.params.gravity[a];
-    }
-    u.grid[3] = cells_;
-    u.face_count[3] = faces_;
-    u.origin_dx[3] = desc_.cell_size;
-    u.gravity_dt[3] = dt;
+    u.grid = glm::ivec4(desc_.grid_size[0], desc_.grid_size[1], desc_.grid_size[2], cells_);
+    u.face_count = glm::ivec4(face_counts_[0], face_counts_[1], face_counts_[2], faces_);
+    u.origin = glm::vec4(desc_.origin[0], desc_.origin[1], desc_.origin[2], 0.0f);
+    u.gravity = glm::vec4(desc_.params.gravity[0], desc_.params.gravity[1], desc_.params.gravity[2], 0.0f);
+    u.dx = desc_.cell_size;
+    u.dt = dt;
+    u.density = desc_.density;
+    u.max_speed = desc_.max_speed;
     const float momentum_scale = kWeightScale / desc_.max_speed;  // design.md §4.2
-    u.fixed_scale[0] = momentum_scale;
-    u.fixed_scale[1] = kWeightScale;
-    u.fixed_scale[2] = 1.0f / momentum_scale;
-    u.fixed_scale[3] = 1.0f / kWeightScale;
-    u.solve[0] = desc_.density;
-    u.solve[1] = desc_.params.jacobi_omega;
-    u.solve[2] = desc_.params.flip_ratio;
-    u.solve[3] = desc_.max_speed;
-    u.counts[0] = particle_count_;
-    u.counts[1] = desc_.params.separation;
+    u.momentum_scale = momentum_scale;
+    u.weight_scale = kWeightScale;
+    u.inv_momentum_scale = 1.0f / momentum_scale;
+    u.inv_weight_scale = 1.0f / kWeightScale;
+    u.flip_ratio = desc_.params.flip_ratio;
+    u.particle_count = particle_count_;
+    u.separation = desc_.params.separation;
     uniforms_.upload(0, sizeof(SimUniforms), &u);
-    gl_.BindBufferBase(GL_UNIFORM_BUFFER, PF_UBO_SIM, uniforms_.id());
 }
 
 void Simulation::run_substep() {
-    gl::TimerRing<PF_PASS_COUNT>& t = *timers_;
+    PassRunner& r = *runner_;
     const uint32_t np = particle_count_;
+    const uint64_t cells = uint64_t(cells_), faces = uint64_t(faces_);
 
-    t.begin_pass(PF_PASS_CLEAR);
-    fill(face_accum_, uint32_t(faces_) * 2, 0u, PF_PASS_CLEAR);
-    fill(cell_count_, uint32_t(cells_), 0u, PF_PASS_CLEAR);
-    t.end_pass();
-
-    t.begin_pass(PF_PASS_P2G);
-    bind(PF_SLOT_PARTICLE_POS, pos_);
-    bind(PF_SLOT_PARTICLE_VEL, vel_);
-    bind(PF_SLOT_FACE_ACCUM, face_accum_);
-    bind(PF_SLOT_CELL_COUNT, cell_count_);
-    bind(PF_SLOT_STATUS, status_);
-    dispatch(ProgramId::p2g, np, PF_PASS_P2G);
-    t.end_pass();
-
-    t.begin_pass(PF_PASS_GRID_FORCES);
-    bind(PF_SLOT_FACE_VEL, face_vel_);
-    bind(PF_SLOT_FACE_VEL_OLD, face_vel_old_);
-    dispatch(ProgramId::grid_forces, uint64_t(faces_), PF_PASS_GRID_FORCES);
-    t.end_pass();
-
-    t.begin_pass(PF_PASS_CLASSIFY);
-    bind(PF_SLOT_CELL_TYPE, cell_type_);
-    dispatch(ProgramId::classify, uint64_t(cells_), PF_PASS_CLASSIFY);
-    t.end_pass();
-
-    // Pressure kernels reuse slots 0, 1 and 3 (see shaders/common/slots.h).
-    t.begin_pass(PF_PASS_PRESSURE_SETUP);
-    bind(PF_SLOT_RHS, rhs_);
-    bind(PF_SLOT_PRESSURE, pressure_[pressure_current_]);
-    dispatch(ProgramId::pressure_setup, uint64_t(cells_), PF_PASS_PRESSURE_SETUP);
-    t.end_pass();
-
-    t.begin_pass(PF_PASS_PRESSURE_SOLVE);
-    for (uint32_t k = 0; k < desc_.params.pressure_iterations; ++k) {
-        bind(PF_SLOT_PRESSURE, pressure_[pressure_current_]);
-        bind(PF_SLOT_PRESSURE_OUT, pressure_[1 - pressure_current_]);
-        dispatch(ProgramId::jacobi, uint64_t(cells_), PF_PASS_PRESSURE_SOLVE);
-        pressure_current_ = 1 - pressure_current_;
-    }
-    t.end_pass();
-
-    t.begin_pass(PF_PASS_VELOCITY_UPDATE);
-    bind(PF_SLOT_PRESSURE, pressure_[pressure_current_]);
-    bind(PF_SLOT_FACE_VALID_OUT, face_valid_[0]);
-    dispatch(ProgramId::velocity_update, uint64_t(faces_), PF_PASS_VELOCITY_UPDATE);
+    fill(face_accum_, uint32_t(faces_) * 2, 0u, stat_.clear);
+    fill(cell_count_, uint32_t(cells_), 0u, stat_.clear);
+    r.run({ProgramId::p2g, stat_.p2g, np,
+           {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_ACCUM, &face_accum_},
+            {PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_STATUS, &status_}}});
+    r.run({ProgramId::grid_forces, stat_.grid_forces, faces,
+           {{PF_SLOT_FACE_ACCUM, &face_accum_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}}});
+    r.run({ProgramId::classify, stat_.classify, cells,
+           {{PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_CELL_TYPE, &cell_type_}}});
+    r.run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
+           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
+            {PF_SLOT_PRESSURE, &pressure_}}});
+    solver_->solve(r, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params});
+    r.run({ProgramId::velocity_update, stat_.velocity_update, faces,
+           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
+            {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}}});
     valid_current_ = 0;
-    t.end_pass();
-
-    t.begin_pass(PF_PASS_EXTRAPOLATE);
     for (uint32_t layer = 0; layer < desc_.params.extrapolation_layers; ++layer) {
-        bind(PF_SLOT_FACE_VALID, face_valid_[valid_current_]);
-        bind(PF_SLOT_FACE_VALID_OUT, face_valid_[1 - valid_current_]);
-        dispatch(ProgramId::extrapolate, uint64_t(faces_), PF_PASS_EXTRAPOLATE);
+        r.run({ProgramId::extrapolate, stat_.extrapolate, faces,
+               {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VALID, &face_valid_[valid_current_]},
+                {PF_SLOT_FACE_VALID_OUT, &face_valid_[1 - valid_current_]}}});
         valid_current_ = 1 - valid_current_;
     }
-    t.end_pass();
-
-    t.begin_pass(PF_PASS_G2P);
-    bind(PF_SLOT_PARTICLE_POS, pos_);
-    bind(PF_SLOT_PARTICLE_VEL, vel_);
-    bind(PF_SLOT_FACE_VEL_OLD, face_vel_old_);
-    dispatch(desc_.params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic, np, PF_PASS_G2P);
-    t.end_pass();
-
-    t.begin_pass(PF_PASS_ADVECT);
-    dispatch(ProgramId::advect, np, PF_PASS_ADVECT);
-    t.end_pass();
+    const bool pic = desc_.params.flip_ratio <= 0.0f;
+    r.run({pic ? ProgramId::g2p_pic : ProgramId::g2p_flip, stat_.g2p, np,
+           {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_},
+            {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}, {PF_SLOT_STATUS, &status_}}});
+    r.run({ProgramId::advect, stat_.advect, np, {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}}});
 }
 
 uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
@@ -283,8 +246,7 @@ pf_result Simulation::step(float frame_dt) {
     const uint32_t substeps = substeps_for(frame_dt, &clamped);
     if (clamped) flags_ |= PF_FLAG_SUBSTEPS_CLAMPED;
     ++steps_;
-    dispatches_ = {};
-    timers_->begin_step(steps_, substeps);
+    runner_->begin_step(steps_, substeps);
 
     // The max-speed word restarts every step; flag bits accumulate (a pf_push between steps
     // may have set one) until pf_clear_flags.
@@ -292,6 +254,7 @@ pf_result Simulation::step(float frame_dt) {
     status_.upload(PF_STATUS_MAX_SPEED * 4, 4, &zero);
     upload_uniforms(frame_dt / float(substeps));
     for (uint32_t s = 0; s < substeps; ++s) run_substep();
+    runner_->end_step();
 
     // Status readback ring: copy now, read once the fence has passed (never wait).
     const int slot = int(steps_ % kReadbackSlots);
@@ -313,9 +276,10 @@ pf_result Simulation::step(float frame_dt) {
 pf_result Simulation::run_substep_for_test(float dt) {
     gl::StateGuard guard(gl_, gl_state_);
     ++steps_;
-    timers_->begin_step(steps_, 1);
+    runner_->begin_step(steps_, 1);
     upload_uniforms(dt);
     run_substep();
+    runner_->end_step();
     gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
     return PF_OK;
 }
@@ -395,8 +359,7 @@ void Simulation::clear_flags() {
 pf_result Simulation::clear_particles() {
     gl::StateGuard guard(gl_, gl_state_);
     particle_count_ = 0;
-    fill(pressure_[0], uint32_t(cells_), 0u, PF_PASS_CLEAR);
-    pressure_current_ = 0;
+    fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
     added_speed_ = 0.0f;
     gpu_max_speed_ = 0.0f;
     return PF_OK;
@@ -405,16 +368,15 @@ pf_result Simulation::clear_particles() {
 pf_result Simulation::push(const float center[3], float radius, const float dv[3]) {
     if (particle_count_ == 0) return PF_OK;
     gl::StateGuard guard(gl_, gl_state_);
-    std::string error;
-    const GLuint p = programs_->get(ProgramId::push, error);
-    if (!p) return log_.error(PF_ERROR_SHADER_COMPILE, "pf_push: " + error);
+    if (std::string error = runner_->prepare(ProgramId::push); !error.empty())
+        return log_.error(PF_ERROR_SHADER_COMPILE, "pf_push: " + error);
+    const GLuint p = runner_->program(ProgramId::push);
     gl_.ProgramUniform4f(p, PF_LOC_PUSH_CENTER_RADIUS, center[0], center[1], center[2], radius);
     gl_.ProgramUniform4f(p, PF_LOC_PUSH_DV_MAX_SPEED, dv[0], dv[1], dv[2], desc_.max_speed);
     gl_.ProgramUniform1ui(p, PF_LOC_PUSH_COUNT, particle_count_);
-    bind(PF_SLOT_PARTICLE_POS, pos_);
-    bind(PF_SLOT_PARTICLE_VEL, vel_);
-    bind(PF_SLOT_STATUS, status_);
-    dispatch(ProgramId::push, particle_count_, PF_PASS_COUNT);  // not part of a step's counts
+    // Between steps: neither timed nor counted in a step's statistics.
+    runner_->run({ProgramId::push, stat_.g2p, particle_count_,
+                  {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_STATUS, &status_}}});
     // The push may make particles faster than the last readback knew: CFL must see it.
     const float known = added_at_step_ > status_step_ ? std::max(added_speed_, gpu_max_speed_) : gpu_max_speed_;
     added_speed_ = std::min(desc_.max_speed, known + std::sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]));
@@ -424,12 +386,14 @@ pf_result Simulation::push(const float center[3], float radius, const float dv[3
 }
 
 pf_result Simulation::set_params(const pf_sim_params& params) {
-    if (params.flip_ratio > 0.0f || desc_.params.flip_ratio > 0.0f) {
-        const gl::ProgramId g2p = params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
-        std::string error;
-        gl::StateGuard guard(gl_, gl_state_);
-        if (!programs_->get(g2p, error)) return log_.error(PF_ERROR_SHADER_COMPILE, "pf_set_params: " + error);
-    }
+    // Everything the new parameters need is built first, so a failure changes nothing.
+    gl::StateGuard guard(gl_, gl_state_);
+    const gl::ProgramId g2p = params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
+    if (std::string error = runner_->prepare(g2p); !error.empty())
+        return log_.error(PF_ERROR_SHADER_COMPILE, "pf_set_params: " + error);
+    PressureSolver* solver = nullptr;
+    if (pf_result r = solver_for(params, "pf_set_params", &solver); r != PF_OK) return r;
+    solver_ = solver;
     desc_.params = params;
     return PF_OK;
 }
@@ -459,7 +423,7 @@ void Simulation::gl_buffers(pf_gl_buffers& out) const {
 void Simulation::stats(pf_stats& out) const {
     gl::StateGuard guard(gl_, gl_state_);
     poll_status();
-    timers_->poll();
+    runner_->poll_timers();
     out = pf_stats{};
     out.particle_count = particle_count_;
     out.max_particles = desc_.max_particles;
@@ -468,14 +432,28 @@ void Simulation::stats(pf_stats& out) const {
     out.flags = flags_;
     out.max_speed = gpu_max_speed_;
     out.cpu_ms = last_cpu_ms_;
-    const auto& r = timers_->latest();
+    const auto& r = runner_->latest_timing();
     out.gpu_step = r.step;
     out.gpu_substeps = r.substeps;
-    for (int p = 0; p < PF_PASS_COUNT; ++p) {
-        out.gpu_ms[p] = r.ms[p];
-        out.gpu_total_ms += r.ms[p];
-        out.dispatches[p] = dispatches_[p];
+    const auto& list = runner_->stats();
+    for (size_t i = 0; i < list.size(); ++i) {
+        const int group = list[i].group;
+        if (group < 0 || group >= PF_PASS_COUNT) continue;
+        out.gpu_ms[group] += r.at(i);
+        out.gpu_total_ms += r.at(i);
+        out.dispatches[group] += list[i].dispatches;
     }
+}
+
+void Simulation::pass_stats(uint32_t index, pf_pass_stats& out) const {
+    gl::StateGuard guard(gl_, gl_state_);
+    runner_->poll_timers();
+    const PassRunner::Stat& s = runner_->stats()[index];
+    out = pf_pass_stats{};
+    out.name = s.name.c_str();
+    out.group = s.group;
+    out.gpu_ms = runner_->gpu_ms(index);
+    out.dispatches = s.dispatches;
 }
 
 std::vector<uint32_t> Simulation::read_grid(GridBuffer which) const {
@@ -487,7 +465,7 @@ std::vector<uint32_t> Simulation::read_grid(GridBuffer which) const {
         case GridBuffer::face_valid: b = &face_valid_[valid_current_]; break;
         case GridBuffer::cell_count: b = &cell_count_; break;
         case GridBuffer::cell_type: b = &cell_type_; break;
-        case GridBuffer::pressure: b = &pressure_[pressure_current_]; break;
+        case GridBuffer::pressure: b = &pressure_; break;
         case GridBuffer::rhs: b = &rhs_; break;
         case GridBuffer::status: b = &status_; break;
     }

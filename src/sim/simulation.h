@@ -11,9 +11,10 @@
 #include "gl/gl.h"
 #include "gl/program.h"
 #include "gl/state_guard.h"
-#include "gl/timer_ring.h"
 #include "pf/pf.h"
+#include "sim/pass_runner.h"
 #include "sim/sim_uniforms.h"
+#include "sim/solvers/pressure_solver.h"
 
 namespace pf {
 
@@ -39,6 +40,9 @@ public:
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
     void gl_buffers(pf_gl_buffers& out) const;
     void stats(pf_stats& out) const;
+    // Entries of the runtime per-pass statistics list.
+    uint32_t pass_count() const { return uint32_t(runner_->stats().size()); }
+    void pass_stats(uint32_t index, pf_pass_stats& out) const;
     void clear_flags();
 
     const pf_sim_desc& desc() const { return desc_; }
@@ -52,23 +56,32 @@ public:
     // Test access: one substep of length dt exactly (no CFL logic), and raw grid words.
     pf_result run_substep_for_test(float dt);
     std::vector<uint32_t> read_grid(GridBuffer which) const;
+    const PassRunner& runner() const { return *runner_; }
 
 private:
     explicit Simulation(const pf_sim_desc& desc);
     pf_result init();
+    // The solver for params.pressure_solver, made and initialised on first use (kept after).
+    pf_result solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out);
     void upload_uniforms(float dt);
     void run_substep();
-    void dispatch(gl::ProgramId program, uint64_t invocations, pf_pass pass);
-    void bind(GLuint slot, const gl::Buffer& buffer) const;
-    void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, pf_pass pass);
+    void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat);
     void poll_status() const;
+
+    // The statistics entries of the core passes (pf_pass order).
+    struct CoreStats {
+        StatId clear, p2g, grid_forces, classify, pressure_setup, velocity_update, extrapolate, g2p, advect;
+    };
 
     gl::Api gl_{};
     gl::StateGuard::Options gl_state_{};
     pf_sim_desc desc_;
     Log log_;
-    std::unique_ptr<gl::ProgramCache> programs_;
-    std::unique_ptr<gl::TimerRing<PF_PASS_COUNT>> timers_;
+    gl::Buffer uniforms_;
+    std::unique_ptr<PassRunner> runner_;
+    CoreStats stat_{};
+    std::unique_ptr<PressureSolver> solvers_[PF_PRESSURE_SOLVER_COUNT];
+    PressureSolver* solver_ = nullptr;  // the one params.pressure_solver selects
 
     // particles
     gl::Buffer pos_, vel_;
@@ -78,10 +91,8 @@ private:
     std::array<int32_t, 3> face_counts_{};
     int32_t faces_ = 0;
     gl::Buffer face_accum_, face_vel_, face_vel_old_, face_valid_[2];
-    gl::Buffer cell_count_, cell_type_, pressure_[2], rhs_;
-    int pressure_current_ = 0;  // which pressure buffer holds the latest solution
+    gl::Buffer cell_count_, cell_type_, pressure_, rhs_;
     int valid_current_ = 0;     // which valid mask is the latest
-    gl::Buffer uniforms_;
     SimUniforms uniform_data_{};
 
     // status (flags, max speed) read back a few steps late, behind fences
@@ -101,8 +112,6 @@ private:
     uint64_t steps_ = 0;
     uint32_t last_substeps_ = 0;
     float last_cpu_ms_ = 0.0f;
-    std::array<uint32_t, PF_PASS_COUNT> dispatches_{};
-    GLint max_groups_x_ = 65535;
     uint32_t fill_calls_ = 0;
 };
 

@@ -5,11 +5,13 @@
 // (leave a wall, the lid, or itself) but is never held by suction.
 // Ping-pong: reads PF_SLOT_PRESSURE, writes PF_SLOT_PRESSURE_OUT.
 #include "common/sim.glsl"
+#include "solvers/jacobi/jacobi_locations.h"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_RHS) readonly buffer Rhs { float rhs[]; };
 layout(std430, binding = PF_SLOT_PRESSURE) readonly buffer Pressure { float p_in[]; };
 layout(std430, binding = PF_SLOT_PRESSURE_OUT) writeonly buffer PressureOut { float p_out[]; };
+layout(location = PF_LOC_JACOBI_OMEGA) uniform float u_omega;  // relaxation weight in (0, 1]
 
 void main() {
     int c = int(flat_id());
@@ -32,7 +34,7 @@ void main() {
         if (t == PF_CELL_FLUID) pair_sum[n / 2] += p_in[nc];
     }
     float sum = (pair_sum.x + pair_sum.y) + pair_sum.z;
-    float omega = sim.solve.y;
+    float omega = u_omega;
     float p = (1.0 - omega) * p_in[c] + omega * (rhs[c] + sum) / diag;
-    p_out[c] = sim.counts.y != 0u ? max(p, 0.0) : p;
+    p_out[c] = sim.separation != 0u ? max(p, 0.0) : p;
 }

@@ -1,0 +1,97 @@
+#include "sim/pass_runner.h"
+
+#include <algorithm>
+
+namespace pf {
+
+namespace {
+int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
+}  // namespace
+
+PassRunner::PassRunner(const gl::Api& gl, const Log& log, const gl::Buffer& uniforms, GLuint uniform_slot)
+    : gl_(gl), log_(log), uniforms_(uniforms), uniform_slot_(uniform_slot), programs_(gl), timers_(gl),
+      used_slots_(size_t(gl::ProgramId::count), 0u), reported_(size_t(gl::ProgramId::count), false) {
+    gl_.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups_x_);
+}
+
+StatId PassRunner::add_stat(const std::string& name, pf_pass group) {
+    for (size_t i = 0; i < stats_.size(); ++i) {
+        if (stats_[i].name == name) return StatId(i);
+    }
+    stats_.push_back(Stat{name, group, 0});
+    return StatId(stats_.size() - 1);
+}
+
+std::string PassRunner::prepare(gl::ProgramId id) {
+    if (programs_.built(id)) return {};
+    std::string error;
+    const GLuint p = programs_.get(id, error);
+    if (!p) return error;
+    // The storage blocks the linker kept, and the slot each is bound to.
+    GLint blocks = 0;
+    gl_.GetProgramInterfaceiv(p, GL_SHADER_STORAGE_BLOCK, GL_ACTIVE_RESOURCES, &blocks);
+    uint32_t mask = 0;
+    for (GLint b = 0; b < blocks; ++b) {
+        const GLenum prop = GL_BUFFER_BINDING;
+        GLint slot = 0;
+        gl_.GetProgramResourceiv(p, GL_SHADER_STORAGE_BLOCK, GLuint(b), 1, &prop, 1, nullptr, &slot);
+        if (slot >= 0 && slot < 32) mask |= 1u << slot;
+    }
+    used_slots_[size_t(id)] = mask;
+    return {};
+}
+
+void PassRunner::begin_step(uint64_t step, uint32_t substeps) {
+    for (Stat& s : stats_) s.dispatches = 0;
+    timers_.begin_step(step, substeps);
+    step_open_ = true;
+    pair_open_ = false;
+}
+
+void PassRunner::end_step() {
+    if (pair_open_) timers_.end_pass();
+    pair_open_ = false;
+    step_open_ = false;
+}
+
+void PassRunner::run(const Pass& pass) {
+    // Outside a step (creation, pf_clear_particles) passes run untimed and uncounted.
+    if (!pass.indirect.buffer && pass.invocations == 0) return;
+    if (step_open_ && (!pair_open_ || open_stat_ != pass.stat)) {
+        if (pair_open_) timers_.end_pass();
+        timers_.begin_pass(int(pass.stat));
+        pair_open_ = true;
+        open_stat_ = pass.stat;
+    }
+    if (step_open_ && pass.stat < stats_.size()) ++stats_[pass.stat].dispatches;
+    const GLuint program = programs_.built(pass.program);
+    const size_t pid = size_t(pass.program);
+    const uint32_t missing = used_slots_[pid] & ~pass.binds.mask();
+    if (!program || missing) {
+        ++binding_errors_;
+        if (!reported_[pid]) {
+            reported_[pid] = true;
+            log_.error(PF_ERROR_INVALID_STATE,
+                       std::string("internal: pass ") + gl::program_info(pass.program).id +
+                           (program ? " leaves storage slots unbound (mask " + gl::hex(missing) + ")"
+                                    : " was run before its program was prepared"));
+        }
+        if (!program) return;
+    }
+    gl_.UseProgram(program);
+    gl_.BindBufferBase(GL_UNIFORM_BUFFER, uniform_slot_, uniforms_.id());
+    for (const Bind& b : pass.binds) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b.slot, b.buffer->id());
+    if (pass.indirect.buffer) {
+        gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, pass.indirect.buffer->id());
+        gl_.DispatchComputeIndirect(GLintptr(pass.indirect.offset));
+    } else {
+        const int64_t groups = ceil_div(int64_t(pass.invocations), PF_WORKGROUP_SIZE);
+        const int64_t gx = std::min<int64_t>(groups, max_groups_x_);
+        const int64_t gy = ceil_div(groups, gx);
+        gl_.DispatchCompute(GLuint(gx), GLuint(gy), 1);
+    }
+    // Every pass reads what the previous one wrote; indirect arguments are written by passes too.
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+}
+
+}  // namespace pf

@@ -1,0 +1,77 @@
+// Runs Pass descriptions: builds their programs, binds the uniform block and every storage
+// slot a pass names, dispatches (directly or indirectly), inserts the barrier, counts the
+// dispatch and times it. Timing follows the statistics list: consecutive passes of one entry
+// share a pair of GPU timestamps, a new entry starts a new pair.
+//
+// The runner checks each pass against its program: the storage slots the linked program
+// actually uses (queried from the GL) must all be bound by the pass. A missing binding is a
+// bug in pflip; it is logged once per program and counted (binding_errors(), asserted to be
+// 0 by the tests).
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "api/log.h"
+#include "gl/gl.h"
+#include "gl/program.h"
+#include "gl/timer_ring.h"
+#include "pf/pf.h"
+#include "sim/pass.h"
+
+namespace pf {
+
+class PassRunner {
+public:
+    // One entry of the runtime statistics list.
+    struct Stat {
+        std::string name;   // stable short name shown by pf_get_pass_stats ("p2g", "jacobi", ...)
+        pf_pass group;      // the pf_stats.gpu_ms / dispatches slot it adds to
+        uint32_t dispatches = 0;  // in the current (or last) step
+    };
+
+    PassRunner(const gl::Api& gl, const Log& log, const gl::Buffer& uniforms, GLuint uniform_slot);
+
+    // Adds an entry to the statistics list (or returns the existing one of that name).
+    StatId add_stat(const std::string& name, pf_pass group);
+    const std::vector<Stat>& stats() const { return stats_; }
+    // GPU milliseconds of entry `id` in the newest measured step (0 until one is measured).
+    float gpu_ms(StatId id) const { return timers_.latest().at(id); }
+    const gl::TimerRing::Result& latest_timing() const { return timers_.latest(); }
+    void poll_timers() { timers_.poll(); }
+
+    // Builds `id` (once) and learns which storage slots it uses. Empty string on success.
+    std::string prepare(gl::ProgramId id);
+    // GL name of a prepared program (for glProgramUniform*), 0 if not prepared.
+    GLuint program(gl::ProgramId id) const { return programs_.built(id); }
+
+    // Starts a step: clears the dispatch counts and opens a timing slot.
+    void begin_step(uint64_t step, uint32_t substeps);
+    // Closes the open timing pair (end of a step).
+    void end_step();
+    // Runs one pass (the program must have been prepared). Timed and counted inside a step
+    // (begin_step .. end_step), neither outside one (creation, pf_push, pf_clear_particles).
+    void run(const Pass& pass);
+
+    uint32_t binding_errors() const { return binding_errors_; }
+
+private:
+
+    const gl::Api& gl_;
+    const Log& log_;
+    const gl::Buffer& uniforms_;
+    GLuint uniform_slot_;
+    gl::ProgramCache programs_;
+    gl::TimerRing timers_;
+    std::vector<Stat> stats_;
+    std::vector<uint32_t> used_slots_;   // per ProgramId: bit mask of storage slots in use
+    std::vector<bool> reported_;         // per ProgramId: a binding error was logged
+    GLint max_groups_x_ = 65535;
+    bool step_open_ = false;
+    bool pair_open_ = false;
+    StatId open_stat_ = 0;
+    uint32_t binding_errors_ = 0;
+};
+
+}  // namespace pf

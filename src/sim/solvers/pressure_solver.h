@@ -1,0 +1,52 @@
+// The interface every pressure solver implements, and the one factory that maps
+// pf_pressure_solver to an implementation. A solver owns its buffers, programs and statistics
+// entries; it receives the Poisson problem of one substep and leaves the solution in
+// `pressure`. Adding a solver: a folder src/sim/solvers/<name>/ (the class), its kernels in
+// shaders/solvers/<name>/ (+ lines in shaders/permutations.inc), a pf_pressure_solver value,
+// and one case in make_pressure_solver (docs/design.md, "Adding a pressure solver").
+#pragma once
+#include <cstdint>
+#include <memory>
+
+#include <glm/glm.hpp>
+
+#include "api/log.h"
+#include "gl/buffer.h"
+#include "gl/gl.h"
+#include "pf/pf.h"
+#include "sim/pass_runner.h"
+
+namespace pf {
+
+// The grid a solver works on (fixed for the simulation's lifetime).
+struct SolverGrid {
+    glm::ivec3 size{0};     // cells per axis
+    uint32_t cells = 0;     // size.x * size.y * size.z
+};
+
+// One substep's problem: A p = rhs on FLUID cells (cell_type), p = 0 in AIR; `pressure` holds
+// the previous substep's solution (a warm start) and receives the new one. `status` is the
+// simulation's status buffer (solvers report iterations and residual into it).
+struct PressureProblem {
+    const gl::Buffer& cell_type;
+    const gl::Buffer& rhs;
+    const gl::Buffer& pressure;
+    const gl::Buffer& status;
+    const pf_sim_params& params;
+};
+
+class PressureSolver {
+public:
+    virtual ~PressureSolver() = default;
+    // Allocates buffers, builds programs and registers statistics entries. Errors are logged
+    // (prefixed with `fn`) and returned; the solver is unusable then.
+    virtual pf_result init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid, const Log& log,
+                           const char* fn) = 0;
+    // Records the solve of one substep into the GL command stream (no CPU wait).
+    virtual void solve(PassRunner& runner, const PressureProblem& problem) = 0;
+};
+
+// A new, uninitialised solver of `kind`, or nullptr for an unknown kind.
+std::unique_ptr<PressureSolver> make_pressure_solver(pf_pressure_solver kind);
+
+}  // namespace pf

@@ -1,0 +1,89 @@
+// The pass pipeline's own contracts: the uniform block declared once has the same member
+// offsets in C++ and in the GL's std140 layout; every pass binds every storage slot its program
+// uses (checked by the runner against the linked program); a pass that forgets one is caught.
+#include <cstring>
+
+#include "api/handle.h"
+#include "common/slots.h"
+#include "sim/sim_uniforms.h"
+#include "support/sim_fixture.h"
+
+namespace pf::test {
+namespace {
+
+class PassPipeline : public GpuTest {};
+
+TEST_F(PassPipeline, UniformOffsetsMatchTheGl) {
+    SimPtr handle = create(test_desc(8, 8, 8));
+    ASSERT_TRUE(handle);
+    const Simulation& sim = *handle->impl;
+    const gl::Api& gl = sim.api();
+    // p2g includes common/sim.glsl; every member is active there only if used, so ask the GL
+    // for the block's members by name through the program interface.
+    const GLuint program = sim.runner().program(gl::ProgramId::p2g);
+    ASSERT_NE(program, 0u);
+    size_t checked = 0;
+    for (const UniformMember& m : kSimUniformMembers) {
+        const std::string name = std::string("SimUniforms.") + m.name;
+        const GLuint index = gl.GetProgramResourceIndex(program, GL_UNIFORM, name.c_str());
+        if (index == GL_INVALID_INDEX) continue;  // optimised away in this kernel: std140 still fixes it
+        const GLenum prop = GL_OFFSET;
+        GLint offset = -1;
+        gl.GetProgramResourceiv(program, GL_UNIFORM, index, 1, &prop, 1, nullptr, &offset);
+        EXPECT_EQ(size_t(offset), m.offset) << m.name;
+        ++checked;
+    }
+    // std140 keeps every member of a uniform block active, so all of them were compared.
+    EXPECT_EQ(checked, std::size(kSimUniformMembers));
+    GLint block_size = 0;
+    const GLuint block = gl.GetProgramResourceIndex(program, GL_UNIFORM_BLOCK, "SimUniforms");
+    ASSERT_NE(block, GL_INVALID_INDEX);
+    const GLenum size_prop = GL_BUFFER_DATA_SIZE;
+    gl.GetProgramResourceiv(program, GL_UNIFORM_BLOCK, block, 1, &size_prop, 1, nullptr, &block_size);
+    EXPECT_EQ(size_t(block_size), sizeof(SimUniforms));
+}
+
+TEST_F(PassPipeline, EveryPassBindsEverySlotItsProgramUses) {
+    pf_sim_desc d = test_desc(12, 10, 8);
+    SimPtr handle = create(d);
+    ASSERT_TRUE(handle);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.6f, 0.5f, 0.8f};
+    ASSERT_EQ(pf_fill_box(handle.get(), lo, hi, nullptr), PF_OK);
+    const float c[3] = {0.3f, 0.3f, 0.3f}, dv[3] = {1, 0, 0};
+    ASSERT_EQ(pf_push(handle.get(), c, 0.3f, dv), PF_OK);
+    for (uint32_t solver = 0; solver < PF_PRESSURE_SOLVER_COUNT; ++solver) {
+        for (uint32_t separation : {0u, 1u}) {
+            pf_sim_params p{};
+            ASSERT_EQ(pf_get_params(handle.get(), &p), PF_OK);
+            p.pressure_solver = pf_pressure_solver(solver);
+            p.separation = separation;
+            p.flip_ratio = separation ? 0.95f : 0.0f;  // both G2P permutations
+            ASSERT_EQ(pf_set_params(handle.get(), &p), PF_OK) << last_log();
+            for (int i = 0; i < 3; ++i) ASSERT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);
+        }
+    }
+    ASSERT_EQ(pf_clear_particles(handle.get()), PF_OK);
+    EXPECT_EQ(handle->impl->runner().binding_errors(), 0u) << last_log();
+}
+
+TEST_F(PassPipeline, AMissingBindingIsCaught) {
+    SimPtr handle = create(test_desc(8, 8, 8));
+    ASSERT_TRUE(handle);
+    const Simulation& sim = *handle->impl;
+    gl::Buffer uniforms(sim.api(), sizeof(SimUniforms), GL_DYNAMIC_DRAW);
+    gl::Buffer a(sim.api(), 64 * 4, GL_DYNAMIC_COPY), b(sim.api(), 64 * 4, GL_DYNAMIC_COPY);
+    Log log;
+    PassRunner runner(sim.api(), log, uniforms, PF_UBO_SIM);
+    const StatId stat = runner.add_stat("classify", PF_PASS_CLASSIFY);
+    ASSERT_EQ(runner.prepare(gl::ProgramId::classify), "");
+    runner.run({gl::ProgramId::classify, stat, 64, {{PF_SLOT_CELL_COUNT, &a}, {PF_SLOT_CELL_TYPE, &b}}});
+    EXPECT_EQ(runner.binding_errors(), 0u);
+    runner.run({gl::ProgramId::classify, stat, 64, {{PF_SLOT_CELL_COUNT, &a}}});  // cell_type unbound
+    EXPECT_EQ(runner.binding_errors(), 1u);
+    // A pass whose program was never prepared is refused, not dispatched.
+    runner.run({gl::ProgramId::advect, stat, 64, {}});
+    EXPECT_EQ(runner.binding_errors(), 2u);
+}
+
+}  // namespace
+}  // namespace pf::test
