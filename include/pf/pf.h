@@ -75,8 +75,11 @@ typedef pf_gl_proc (*pf_gl_get_proc_address_fn)(const char* name);
 
 /** Pressure solvers, from cheapest to most accurate per iteration (docs/accuracy.md). */
 typedef enum pf_pressure_solver {
-    PF_PRESSURE_SOLVER_JACOBI = 0,   /**< weighted Jacobi, params.pressure_iterations sweeps (the original) */
-    PF_PRESSURE_SOLVER_COUNT = 1,
+    PF_PRESSURE_SOLVER_JACOBI = 0,   /**< weighted Jacobi (the original), jacobi_omega; a check every 8 sweeps */
+    PF_PRESSURE_SOLVER_RBGS = 1,     /**< red-black Gauss-Seidel / SOR (sor_omega); a check every 4 iterations */
+    PF_PRESSURE_SOLVER_CG = 2,       /**< conjugate gradients, no preconditioner */
+    PF_PRESSURE_SOLVER_PCG = 3,      /**< conjugate gradients, Jacobi (diagonal) preconditioner */
+    PF_PRESSURE_SOLVER_COUNT = 4,
     PF_PRESSURE_SOLVER_FORCE32 = 0x7fffffff
 } pf_pressure_solver;
 
@@ -85,7 +88,8 @@ typedef enum pf_pressure_solver {
 typedef struct pf_sim_params {
     float gravity[3];             /**< body acceleration in m/s^2; default (0, -9.81, 0) */
     float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 */
-    uint32_t pressure_iterations; /**< Jacobi iterations per substep, 1..10000; 0 = default 40 */
+    uint32_t pressure_iterations; /**< most solver iterations per substep (a Jacobi sweep, a red-black pair,
+                                       a CG step), 1..10000; 0 = default 40 */
     float jacobi_omega;           /**< Jacobi relaxation weight in (0, 1]; 0 = default 1 (the original) */
     float cfl;                    /**< max cells a particle may cross per substep, (0, 16]; 0 = default 1 */
     uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; 0 = default 8 */
@@ -94,7 +98,13 @@ typedef struct pf_sim_params {
                                        2013), so liquid can pull away from walls and the lid instead of
                                        clinging to them by suction; 0: the original's plain Jacobi.
                                        0 or 1; default 1 (a zero value is taken literally) */
-    pf_pressure_solver pressure_solver; /**< which solver; default (0) PF_PRESSURE_SOLVER_JACOBI */
+    pf_pressure_solver pressure_solver; /**< which solver; default (0) PF_PRESSURE_SOLVER_JACOBI. Every solver
+                                       stops at pressure_tolerance or after pressure_iterations; with
+                                       separation the stationary ones project every update onto p >= 0 and
+                                       the CG family adds 4 projected Gauss-Seidel sweeps (docs/design.md) */
+    float pressure_tolerance;     /**< relative residual |b - A p| / |b| at which a solve stops, (0, 1);
+                                       0 = default 1e-4. Checked on the GPU, never waited for */
+    float sor_omega;              /**< over-relaxation of PF_PRESSURE_SOLVER_RBGS in (0, 2); 0 = default 1.6 */
 } pf_sim_params;
 
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
@@ -162,6 +172,9 @@ typedef struct pf_stats {
     uint32_t substeps;                /**< substeps taken by the last pf_step */
     uint32_t flags;                   /**< PF_FLAG_* seen so far */
     float max_speed;                  /**< largest particle speed of the latest GPU readback, m/s */
+    uint32_t solver_iterations;       /**< most pressure iterations a substep of that readback's step took */
+    float solver_residual;            /**< largest final relative residual |b - A p| / |b| of its substeps
+                                           (with separation: of the complementarity problem, design.md §4.6) */
     float cpu_ms;                     /**< host time spent inside the last pf_step */
     uint64_t gpu_step;                /**< which step gpu_ms belongs to (0: none measured yet) */
     uint32_t gpu_substeps;            /**< substeps of that step */

@@ -22,6 +22,17 @@
 #define PF_SLOT_RHS 3
 #define PF_SLOT_FACE_VALID 0
 #define PF_SLOT_FACE_VALID_OUT 1
+/* storage blocks of the pressure-solver kernels (shaders/solvers/): they share slots 0..7 among
+ * themselves; PF_SLOT_CELL_TYPE (6) and PF_SLOT_RHS (3) keep their meaning */
+#define PF_SLOT_SOLVER_STATE 7   /* scalars + indirect records (solvers/common/solver_state.h) */
+#define PF_SLOT_SOLVER_X 0       /* the iterate (pressure, or a multigrid level's correction) */
+#define PF_SLOT_SOLVER_R 1       /* residual */
+#define PF_SLOT_SOLVER_P 2       /* search direction / scratch */
+#define PF_SLOT_SOLVER_Q 4       /* A p / scratch */
+#define PF_SLOT_SOLVER_PARTIALS 5 /* per-workgroup partial sums (vec4) */
+#define PF_SLOT_SOLVER_Z 3       /* preconditioned residual (kernels that do not read the rhs) */
+#define PF_SLOT_SOLVER_STATUS 0  /* the simulation's status buffer, in the final check only */
+#define PF_SLOT_SOLVER_WORKING_TYPE 2 /* cell types with separated cells held at p = 0 (CG family) */
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
@@ -47,6 +58,8 @@
 /* status buffer words, read back a frame late */
 #define PF_STATUS_FLAGS 0
 #define PF_STATUS_MAX_SPEED 1
+#define PF_STATUS_SOLVER_ITERATIONS 2  /* most pressure iterations of a substep in the step */
+#define PF_STATUS_SOLVER_RESIDUAL 3    /* largest final relative residual (float bits) */
 #define PF_STATUS_WORDS 4
 
 /* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */

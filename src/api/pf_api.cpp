@@ -57,6 +57,9 @@ pf_sim_params pf_default_sim_params(void) {
     p.max_substeps = 8;
     p.extrapolation_layers = 2;
     p.separation = 1;
+    p.pressure_solver = PF_PRESSURE_SOLVER_JACOBI;
+    p.pressure_tolerance = 1e-4f;
+    p.sor_omega = 1.6f;
     return p;
 }
 

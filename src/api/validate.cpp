@@ -23,6 +23,8 @@ pf_sim_params resolve_params(const pf_sim_params& in) {
     if (p.cfl == 0.0f) p.cfl = d.cfl;
     if (p.max_substeps == 0) p.max_substeps = d.max_substeps;
     if (p.extrapolation_layers == 0) p.extrapolation_layers = d.extrapolation_layers;
+    if (p.pressure_tolerance == 0.0f) p.pressure_tolerance = d.pressure_tolerance;
+    if (p.sor_omega == 0.0f) p.sor_omega = d.sor_omega;
     return p;
 }
 
@@ -51,6 +53,9 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
     if (p.separation > 1) return bad("params.separation must be 0 or 1, got " + std::to_string(p.separation));
     if (uint32_t(p.pressure_solver) >= PF_PRESSURE_SOLVER_COUNT)
         return bad("params.pressure_solver is not a pf_pressure_solver value, got " + std::to_string(int(p.pressure_solver)));
+    if (!(p.pressure_tolerance > 0.0f && p.pressure_tolerance < 1.0f))
+        return bad("params.pressure_tolerance must be in (0, 1), got " + str(p.pressure_tolerance));
+    if (!(p.sor_omega > 0.0f && p.sor_omega < 2.0f)) return bad("params.sor_omega must be in (0, 2), got " + str(p.sor_omega));
     if (p.extrapolation_layers < 1 || p.extrapolation_layers > 16)
         return bad("params.extrapolation_layers must be in [1, 16], got " + std::to_string(p.extrapolation_layers));
     return PF_OK;

@@ -250,8 +250,10 @@ pf_result Simulation::step(float frame_dt) {
 
     // The max-speed word restarts every step; flag bits accumulate (a pf_push between steps
     // may have set one) until pf_clear_flags.
-    const uint32_t zero = 0;
-    status_.upload(PF_STATUS_MAX_SPEED * 4, 4, &zero);
+    const uint32_t zeros[3] = {0, 0, 0};  // max speed, solver iterations, solver residual
+    static_assert(PF_STATUS_SOLVER_ITERATIONS == PF_STATUS_MAX_SPEED + 1 && PF_STATUS_SOLVER_RESIDUAL == PF_STATUS_MAX_SPEED + 2,
+                  "the per-step status words are contiguous");
+    status_.upload(PF_STATUS_MAX_SPEED * 4, sizeof(zeros), zeros);
     upload_uniforms(frame_dt / float(substeps));
     for (uint32_t s = 0; s < substeps; ++s) run_substep();
     runner_->end_step();
@@ -284,6 +286,26 @@ pf_result Simulation::run_substep_for_test(float dt) {
     return PF_OK;
 }
 
+pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, const std::vector<float>& rhs,
+                                     std::vector<float>& pressure) {
+    if (cell_type.size() != size_t(cells_) || rhs.size() != size_t(cells_) || pressure.size() != size_t(cells_))
+        return PF_ERROR_INVALID_ARGUMENT;
+    gl::StateGuard guard(gl_, gl_state_);
+    cell_type_.upload(0, cell_type.size() * 4, cell_type.data());
+    rhs_.upload(0, rhs.size() * 4, rhs.data());
+    pressure_.upload(0, pressure.size() * 4, pressure.data());
+    const uint32_t zeros[2] = {0, 0};
+    status_.upload(PF_STATUS_SOLVER_ITERATIONS * 4, sizeof(zeros), zeros);
+    ++steps_;
+    runner_->begin_step(steps_, 1);
+    upload_uniforms(0.01f);
+    solver_->solve(*runner_, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params});
+    runner_->end_step();
+    gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
+    pressure_.download(0, pressure.size() * 4, pressure.data());
+    return PF_OK;
+}
+
 void Simulation::poll_status() const {
     for (int s = 0; s < kReadbackSlots; ++s) {
         if (!fences_[s]) continue;
@@ -300,6 +322,8 @@ void Simulation::poll_status() const {
         if (fence_step_[s] > status_step_) {
             status_step_ = fence_step_[s];
             std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
+            solver_iterations_ = words[PF_STATUS_SOLVER_ITERATIONS];
+            std::memcpy(&solver_residual_, &words[PF_STATUS_SOLVER_RESIDUAL], sizeof(float));
         }
     }
 }
@@ -431,6 +455,8 @@ void Simulation::stats(pf_stats& out) const {
     out.substeps = last_substeps_;
     out.flags = flags_;
     out.max_speed = gpu_max_speed_;
+    out.solver_iterations = solver_iterations_;
+    out.solver_residual = solver_residual_;
     out.cpu_ms = last_cpu_ms_;
     const auto& r = runner_->latest_timing();
     out.gpu_step = r.step;

@@ -55,6 +55,11 @@ public:
 
     // Test access: one substep of length dt exactly (no CFL logic), and raw grid words.
     pf_result run_substep_for_test(float dt);
+    // Test access: the current solver alone on a given system (cell types, right-hand side;
+    // `pressure` is the warm start and receives the solution). The status buffer's solver words
+    // are reset first and hold this solve's iterations and final residual afterwards.
+    pf_result solve_for_test(const std::vector<uint32_t>& cell_type, const std::vector<float>& rhs,
+                             std::vector<float>& pressure);
     std::vector<uint32_t> read_grid(GridBuffer which) const;
     const PassRunner& runner() const { return *runner_; }
 
@@ -103,6 +108,8 @@ private:
     mutable uint64_t fence_step_[kReadbackSlots] = {};
     mutable uint64_t status_step_ = 0;     // step of the newest readback
     mutable float gpu_max_speed_ = 0.0f;   // its max speed
+    mutable uint32_t solver_iterations_ = 0;  // its pressure iterations (most of a substep)
+    mutable float solver_residual_ = 0.0f;    // its largest final relative residual
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
     uint64_t flags_cleared_at_step_ = 0;   // pf_clear_flags: ignore flags read back from older steps
     float added_speed_ = 0.0f;             // fastest particle added since...

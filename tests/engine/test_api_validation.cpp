@@ -39,9 +39,10 @@ bool same_params(const pf_sim_params& a, const pf_sim_params& b) { return std::m
 
 std::string params_str(const pf_sim_params& p) {
     char buf[256];
-    std::snprintf(buf, sizeof buf, "g=(%g,%g,%g) flip=%g iters=%u omega=%g cfl=%g substeps=%u layers=%u", p.gravity[0],
-                  p.gravity[1], p.gravity[2], p.flip_ratio, p.pressure_iterations, p.jacobi_omega, p.cfl,
-                  p.max_substeps, p.extrapolation_layers);
+    std::snprintf(buf, sizeof buf,
+                  "g=(%g,%g,%g) flip=%g iters=%u omega=%g cfl=%g substeps=%u layers=%u solver=%d tol=%g sor=%g",
+                  p.gravity[0], p.gravity[1], p.gravity[2], p.flip_ratio, p.pressure_iterations, p.jacobi_omega, p.cfl,
+                  p.max_substeps, p.extrapolation_layers, int(p.pressure_solver), p.pressure_tolerance, p.sor_omega);
     return buf;
 }
 
@@ -71,6 +72,18 @@ std::vector<ParamCase> bad_param_cases() {
         {"max_substeps 65", "max_substeps", [](pf_sim_params& p) { p.max_substeps = 65; }},
         {"extrapolation_layers 17", "extrapolation_layers", [](pf_sim_params& p) { p.extrapolation_layers = 17; }},
         {"separation 2", "separation", [](pf_sim_params& p) { p.separation = 2; }},
+        {"pressure_solver COUNT", "pressure_solver",
+         [](pf_sim_params& p) { p.pressure_solver = PF_PRESSURE_SOLVER_COUNT; }},
+        {"pressure_solver -1", "pressure_solver", [](pf_sim_params& p) { p.pressure_solver = pf_pressure_solver(-1); }},
+        {"pressure_solver 0x7fffffff", "pressure_solver",
+         [](pf_sim_params& p) { p.pressure_solver = PF_PRESSURE_SOLVER_FORCE32; }},
+        {"pressure_tolerance -1e-4", "pressure_tolerance", [](pf_sim_params& p) { p.pressure_tolerance = -1e-4f; }},
+        {"pressure_tolerance 1", "pressure_tolerance", [](pf_sim_params& p) { p.pressure_tolerance = 1.0f; }},
+        {"pressure_tolerance NaN", "pressure_tolerance", [](pf_sim_params& p) { p.pressure_tolerance = kNaN; }},
+        {"pressure_tolerance Inf", "pressure_tolerance", [](pf_sim_params& p) { p.pressure_tolerance = kInf; }},
+        {"sor_omega 2", "sor_omega", [](pf_sim_params& p) { p.sor_omega = 2.0f; }},
+        {"sor_omega -1", "sor_omega", [](pf_sim_params& p) { p.sor_omega = -1.0f; }},
+        {"sor_omega NaN", "sor_omega", [](pf_sim_params& p) { p.sor_omega = kNaN; }},
         {"gravity[0] +Inf", "gravity", [](pf_sim_params& p) { p.gravity[0] = kInf; }},
         {"gravity[1] -Inf", "gravity", [](pf_sim_params& p) { p.gravity[1] = -kInf; }},
         {"gravity[2] NaN", "gravity", [](pf_sim_params& p) { p.gravity[2] = kNaN; }},
@@ -463,6 +476,9 @@ TEST_F(ApiValidation, SetParamsAcceptsBoundaryValues) {
     hi.cfl = 16.0f;
     hi.max_substeps = 64;
     hi.extrapolation_layers = 16;
+    hi.pressure_solver = pf_pressure_solver(PF_PRESSURE_SOLVER_COUNT - 1);
+    hi.pressure_tolerance = 0.999f;
+    hi.sor_omega = 1.999f;
     pf_sim_params lo = pf_default_sim_params();
     lo.flip_ratio = 0.0f;
     lo.pressure_iterations = 1;
@@ -470,6 +486,8 @@ TEST_F(ApiValidation, SetParamsAcceptsBoundaryValues) {
     lo.cfl = 1e-4f;
     lo.max_substeps = 1;
     lo.extrapolation_layers = 1;
+    lo.pressure_tolerance = 1e-30f;
+    lo.sor_omega = 1e-6f;
     for (const pf_sim_params& p : {hi, lo}) {
         EXPECT_EQ(pf_set_params(sim_.get(), &p), PF_OK) << params_str(p) << ": " << last_log();
         pf_sim_params got{};
@@ -494,6 +512,9 @@ TEST_F(ApiValidation, ZeroedParamsTakeDefaultsButGravityAndFlipStayZero) {
     EXPECT_EQ(got.cfl, def.cfl);
     EXPECT_EQ(got.max_substeps, def.max_substeps);
     EXPECT_EQ(got.extrapolation_layers, def.extrapolation_layers);
+    EXPECT_EQ(got.pressure_solver, def.pressure_solver);
+    EXPECT_EQ(got.pressure_tolerance, def.pressure_tolerance);
+    EXPECT_EQ(got.sor_omega, def.sor_omega);
     EXPECT_EQ(got.gravity[0], 0.0f);
     EXPECT_EQ(got.gravity[1], 0.0f);  // not the default -9.81
     EXPECT_EQ(got.gravity[2], 0.0f);

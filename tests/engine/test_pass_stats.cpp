@@ -5,6 +5,8 @@
 #include <set>
 #include <string>
 
+#include <glad/gl.h>
+
 #include "support/sim_fixture.h"
 
 namespace pf::test {
@@ -40,7 +42,9 @@ TEST_F(PassStats, ListsCorePassesAndAddsUpToTheFixedArrays) {
                                         "velocity_update", "extrapolate", "g2p",         "advect",   "jacobi"};
     for (const std::string& name : core) EXPECT_EQ(list.count(name), 1u) << name;
     EXPECT_EQ(list.at("jacobi").group, PF_PASS_PRESSURE_SOLVE);
-    EXPECT_EQ(list.at("jacobi").dispatches, st.substeps * d.params.pressure_iterations);
+    // Per substep: 12 sweeps, residual checks (2 dispatches each) after sweep 4 and at the end,
+    // the start (2) and the final report (2).
+    EXPECT_EQ(list.at("jacobi").dispatches, st.substeps * (12 + 2 * 2 + 4));
     EXPECT_EQ(list.at("p2g").dispatches, st.substeps);
     uint32_t per_group[PF_PASS_COUNT] = {};
     for (const auto& [name, s] : list) {
@@ -50,6 +54,45 @@ TEST_F(PassStats, ListsCorePassesAndAddsUpToTheFixedArrays) {
         EXPECT_GE(s.gpu_ms, 0.0f) << name;
     }
     for (int p = 0; p < PF_PASS_COUNT; ++p) EXPECT_EQ(per_group[p], st.dispatches[p]) << pf_pass_name(pf_pass(p));
+}
+
+// pf_stats reports the pressure solve of the last measured step: iterations and final residual.
+// A tolerance the solver reaches gives a residual at or below it in fewer iterations than the
+// cap; a cap it cannot reach in gives exactly the cap and a residual above the tolerance. With
+// separation, PCG's iterations add up over its active-set rounds and the residual is that of
+// the complementarity problem.
+TEST_F(PassStats, SolverIterationsAndResidualAreReported) {
+    struct Case {
+        uint32_t cap, separation;
+        bool reachable;
+    };
+    for (const Case& c : {Case{400, 0, true}, Case{3, 0, false}, Case{400, 1, true}}) {
+        const uint32_t cap = c.cap;
+        const bool reachable = c.reachable;
+        pf_sim_desc d = test_desc(12, 12, 12, 0.05f);
+        d.params.pressure_solver = PF_PRESSURE_SOLVER_PCG;
+        d.params.pressure_tolerance = 1e-4f;
+        d.params.pressure_iterations = cap;
+        d.params.separation = c.separation;
+        SimPtr sim = create(d);
+        ASSERT_TRUE(sim);
+        const float lo[3] = {0, 0, 0}, hi[3] = {0.6f, 0.3f, 0.6f}, v[3] = {1.0f, 0.0f, 0.0f};
+        ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, v), PF_OK);
+        ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+        glFinish();  // the readback is a few frames late; finishing makes it available
+        pf_stats st{};
+        ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+        ASSERT_EQ(st.gpu_step, st.steps);
+        if (reachable) {
+            EXPECT_GT(st.solver_iterations, 0u);
+            EXPECT_LT(st.solver_iterations, cap * (c.separation ? 5u : 1u));
+            EXPECT_LE(st.solver_residual, 1e-4f);
+        } else {
+            EXPECT_EQ(st.solver_iterations, cap);
+            EXPECT_GT(st.solver_residual, 1e-4f);
+        }
+        EXPECT_TRUE(std::isfinite(st.solver_residual));
+    }
 }
 
 TEST_F(PassStats, BadArgumentsAreRefused) {

@@ -1,12 +1,19 @@
 // The one place that maps pf_pressure_solver values to solver classes.
+#include "sim/solvers/cg/cg_solver.h"
 #include "sim/solvers/jacobi/jacobi_solver.h"
 #include "sim/solvers/pressure_solver.h"
+#include "sim/solvers/rbgs/rbgs_solver.h"
 
 namespace pf {
 
 std::unique_ptr<PressureSolver> make_pressure_solver(pf_pressure_solver kind) {
     switch (kind) {
         case PF_PRESSURE_SOLVER_JACOBI: return std::make_unique<JacobiSolver>();
+        case PF_PRESSURE_SOLVER_RBGS: return std::make_unique<RedBlackSolver>();
+        case PF_PRESSURE_SOLVER_CG:
+            return std::make_unique<ConjugateGradientSolver>(ConjugateGradientSolver::Preconditioner::none, "cg");
+        case PF_PRESSURE_SOLVER_PCG:
+            return std::make_unique<ConjugateGradientSolver>(ConjugateGradientSolver::Preconditioner::jacobi, "pcg");
         default: return nullptr;
     }
 }

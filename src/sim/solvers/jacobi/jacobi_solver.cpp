@@ -11,8 +11,10 @@ pf_result JacobiSolver::init(const gl::Api& gl, PassRunner& runner, const Solver
     gl_ = &gl;
     grid_ = grid;
     scratch_ = gl::Buffer(gl, size_t(grid.cells) * 4, GL_DYNAMIC_COPY);
-    if (std::string error = runner.prepare(gl::ProgramId::jacobi); !error.empty())
-        return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    std::string error = control_.init(gl, runner, grid);
+    if (error.empty()) error = runner.prepare(gl::ProgramId::jacobi);
+    if (!error.empty()) return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    control_.set_dims(runner.program(gl::ProgramId::jacobi), grid.size);
     stat_ = runner.add_stat("jacobi", PF_PASS_PRESSURE_SOLVE);
     return PF_OK;
 }
@@ -20,8 +22,10 @@ pf_result JacobiSolver::init(const gl::Api& gl, PassRunner& runner, const Solver
 void JacobiSolver::solve(PassRunner& runner, const PressureProblem& problem) {
     const uint32_t sweeps = problem.params.pressure_iterations;
     gl_->ProgramUniform1f(runner.program(gl::ProgramId::jacobi), PF_LOC_JACOBI_OMEGA, problem.params.jacobi_omega);
-    // Sweeps alternate direction; an odd count starts from a copy in the scratch buffer so the
-    // last sweep always writes the problem's pressure buffer.
+    control_.begin(runner, stat_, problem);
+    // Sweeps alternate direction; an odd count starts from a copy in the scratch buffer, so
+    // every sweep with the parity of the last one writes the problem's pressure buffer. Checks
+    // (which read that buffer) come after such sweeps only.
     const gl::Buffer* src = &problem.pressure;
     const gl::Buffer* dst = &scratch_;
     if (sweeps % 2 == 1) {
@@ -30,16 +34,25 @@ void JacobiSolver::solve(PassRunner& runner, const PressureProblem& problem) {
         gl_->CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, GLsizeiptr(grid_.cells) * 4);
         std::swap(src, dst);
     }
-    for (uint32_t k = 0; k < sweeps; ++k) {
+    uint32_t checked = 0;
+    for (uint32_t k = 1; k <= sweeps; ++k) {
         runner.run({gl::ProgramId::jacobi,
                     stat_,
-                    grid_.cells,
+                    0,
                     {{PF_SLOT_CELL_TYPE, &problem.cell_type},
                      {PF_SLOT_RHS, &problem.rhs},
                      {PF_SLOT_PRESSURE, src},
-                     {PF_SLOT_PRESSURE_OUT, dst}}});
+                     {PF_SLOT_PRESSURE_OUT, dst},
+                     {PF_SLOT_SOLVER_STATE, &control_.state()}},
+                    control_.record(0)});
         std::swap(src, dst);
+        if (k < sweeps && k % kCheckEvery == sweeps % kCheckEvery) {
+            control_.check(runner, stat_, problem, k - checked);
+            checked = k;
+        }
     }
+    control_.check(runner, stat_, problem, sweeps - checked);
+    control_.finish(runner, stat_, problem);
 }
 
 }  // namespace pf

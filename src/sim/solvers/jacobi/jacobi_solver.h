@@ -1,13 +1,17 @@
-// Weighted Jacobi (the original's solver): params.pressure_iterations sweeps, ping-ponging
-// between the problem's pressure buffer and a scratch buffer; projected onto p >= 0 after
-// every sweep when params.separation is on (projected Jacobi).
+// Weighted Jacobi (the original's solver): sweeps ping-pong between the problem's pressure
+// buffer and a scratch buffer, projected onto p >= 0 after every sweep when separation is on
+// (projected Jacobi). Stops after params.pressure_iterations sweeps, or earlier at a residual
+// check (every kCheckEvery sweeps) that meets params.pressure_tolerance.
 #pragma once
+#include "sim/solvers/common/solve_control.h"
 #include "sim/solvers/pressure_solver.h"
 
 namespace pf {
 
 class JacobiSolver final : public PressureSolver {
 public:
+    static constexpr uint32_t kCheckEvery = 8;
+
     pf_result init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid, const Log& log,
                    const char* fn) override;
     void solve(PassRunner& runner, const PressureProblem& problem) override;
@@ -15,6 +19,7 @@ public:
 private:
     const gl::Api* gl_ = nullptr;
     SolverGrid grid_{};
+    SolveControl control_;
     gl::Buffer scratch_;
     StatId stat_ = 0;
 };

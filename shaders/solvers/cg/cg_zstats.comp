@@ -1,0 +1,21 @@
+// Conjugate gradients with a stored preconditioned residual z (multigrid): the partial sums
+// (r.r, r.z, sum z, sum r) over FLUID cells.
+#include "common/sim.glsl"
+#include "solvers/common/solver_state.h"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+layout(std430, binding = PF_SLOT_SOLVER_R) readonly buffer R { float r[]; };
+layout(std430, binding = PF_SLOT_SOLVER_Z) readonly buffer Z { float z[]; };
+layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partials[]; };
+#include "solvers/common/poisson.glsl"
+#include "solvers/common/reduce.glsl"
+
+void main() {
+    int c = int(flat_id());
+    vec4 v = vec4(0.0);
+    if (c < u_dims.w && cell_type[c] == PF_CELL_FLUID) {
+        float rc = r[c], zc = z[c];
+        v = vec4(rc * rc, rc * zc, zc, rc);
+    }
+    store_workgroup_sum(v);
+}

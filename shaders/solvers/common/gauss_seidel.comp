@@ -1,0 +1,54 @@
+// One colour of a red-black (over-relaxed) Gauss-Seidel sweep, in place: cells of colour
+// u_color (i+j+k even or odd) take p = (1-w) p + w (b + sum of FLUID neighbours) / diag; the
+// 6 neighbours of a cell all have the other colour, so a colour updates without races.
+// Permutations: the pressure solve (PF_GS_MULTIGRID 0: b has the singular mean removed and
+// p >= 0 is imposed with separation — projected Gauss-Seidel) and the multigrid smoother
+// (PF_GS_MULTIGRID 1: a correction equation on any level, linear, no projection), whose first
+// sweep may start from zero (PF_GS_FROM_ZERO 1: neighbours read as 0, the other colour is set to 0).
+#include "common/sim.glsl"
+#include "solvers/common/solver_state.h"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+layout(std430, binding = PF_SLOT_RHS) readonly buffer Rhs { float rhs[]; };
+layout(std430, binding = PF_SLOT_SOLVER_X) buffer X { float x[]; };
+layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
+layout(location = PF_LOC_SOLVER_COLOR) uniform uint u_color;
+layout(location = PF_LOC_SOLVER_OMEGA) uniform float u_omega;
+#include "solvers/common/poisson.glsl"
+#include "solvers/common/state.glsl"
+
+void main() {
+    int c = int(flat_id());
+    if (c >= u_dims.w) return;
+    bool mine = cell_color(c) == u_color;
+#if PF_GS_FROM_ZERO
+    if (!mine || cell_type[c] != PF_CELL_FLUID) {
+        x[c] = 0.0;
+        return;
+    }
+#else
+    if (!mine || cell_type[c] != PF_CELL_FLUID) return;
+#endif
+    PoissonStencil s = poisson_stencil(c);
+    vec3 pair_sum = vec3(0.0);
+#if !PF_GS_FROM_ZERO
+    for (int n = 0; n < 6; ++n) {
+        if (s.nb[n] >= 0) pair_sum[n / 2] += x[s.nb[n]];
+    }
+#endif
+#if PF_GS_MULTIGRID
+    float b = rhs[c];
+#else
+    float b = rhs[c] - rhs_mean();
+#endif
+    float gs = s.diag > 0.0 ? (b + pair_total(pair_sum)) / s.diag : 0.0;
+#if PF_GS_FROM_ZERO
+    float p = u_omega * gs;
+#else
+    float p = (1.0 - u_omega) * x[c] + u_omega * gs;
+#endif
+#if !PF_GS_MULTIGRID
+    if (project_nonnegative()) p = max(p, 0.0);
+#endif
+    x[c] = p;
+}

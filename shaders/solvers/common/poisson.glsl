@@ -1,0 +1,54 @@
+// The pressure Poisson operator shared by every solver, on any grid level (dims from the
+// u_dims uniform): for a FLUID cell i,  (A p)_i = diag_i p_i - sum over FLUID neighbours p_j,
+// where diag_i counts the in-domain neighbours that are not SOLID (FLUID and AIR: p = 0 in
+// AIR, a Dirichlet free surface); domain walls and SOLID cells are left out (Neumann).
+// Requires the kernel to declare `cell_type` (uint per cell) before including this file.
+#include "common/slots.h"
+#include "common/dispatch.glsl"
+#include "solvers/common/solver_state.h"
+
+layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // nx, ny, nz, cells of this level
+
+const ivec3 kPoissonNeighbours[6] = ivec3[6](ivec3(-1, 0, 0), ivec3(1, 0, 0), ivec3(0, -1, 0),
+                                             ivec3(0, 1, 0), ivec3(0, 0, -1), ivec3(0, 0, 1));
+
+ivec3 level_coord(int c) { return ivec3(c % u_dims.x, (c / u_dims.x) % u_dims.y, c / (u_dims.x * u_dims.y)); }
+int level_index(ivec3 ijk) { return ijk.x + u_dims.x * (ijk.y + u_dims.y * ijk.z); }
+bool level_inside(ivec3 ijk) { return all(greaterThanEqual(ijk, ivec3(0))) && all(lessThan(ijk, u_dims.xyz)); }
+
+// The stencil of FLUID cell c: neighbour indices (-1 where the neighbour is not FLUID) and diag.
+struct PoissonStencil {
+    int nb[6];
+    float diag;
+};
+
+PoissonStencil poisson_stencil(int c) {
+    PoissonStencil s;
+    s.diag = 0.0;
+    ivec3 ijk = level_coord(c);
+    for (int n = 0; n < 6; ++n) {
+        s.nb[n] = -1;
+        ivec3 q = ijk + kPoissonNeighbours[n];
+        if (!level_inside(q)) continue;
+        int nc = level_index(q);
+        uint t = cell_type[nc];
+        if (t == PF_CELL_SOLID) continue;
+        s.diag += 1.0;
+        if (t == PF_CELL_FLUID) s.nb[n] = nc;
+    }
+    return s;
+}
+
+// Neighbour values summed per axis pair, then across axes: mirrored inputs give bit-mirrored
+// sums (as common/sim.glsl's mirror_sum), so the solvers keep the scheme's mirror symmetry.
+float pair_total(vec3 pair_sum) { return (pair_sum.x + pair_sum.y) + pair_sum.z; }
+
+// Red-black colour of a cell: 0 when i + j + k is even.
+uint cell_color(int c) {
+    ivec3 ijk = level_coord(c);
+    return uint(ijk.x + ijk.y + ijk.z) & 1u;
+}
+
+// Index of a workgroup in a (possibly 2D) dispatch: one partial sum each.
+uint workgroup_index() { return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x; }
+

@@ -1,0 +1,34 @@
+// Deterministic workgroup sums: every invocation contributes a vec4, the workgroup adds them
+// as a fixed binary tree in shared memory, and invocation 0 writes one partial per workgroup.
+// A single-workgroup kernel adds the partials in a fixed order (sum_partials). The same input
+// therefore always gives the same bits, and no float atomics are needed.
+// Requires the kernel to declare `partials` (vec4 per workgroup) before including this file.
+shared vec4 s_reduce[PF_WORKGROUP_SIZE];
+
+// Every invocation of the workgroup must call this (no early return before it).
+void store_workgroup_sum(vec4 v) {
+    uint lid = gl_LocalInvocationIndex;
+    s_reduce[lid] = v;
+    barrier();
+    for (uint stride = uint(PF_WORKGROUP_SIZE) / 2u; stride > 0u; stride >>= 1u) {
+        if (lid < stride) s_reduce[lid] += s_reduce[lid + stride];
+        barrier();
+    }
+    if (lid == 0u) partials[gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x] = s_reduce[0];
+}
+
+// In a single workgroup: the sum of partials[0, count). Every invocation gets the result.
+vec4 sum_partials(uint count) {
+    uint lid = gl_LocalInvocationIndex;
+    vec4 v = vec4(0.0);
+    for (uint i = lid; i < count; i += uint(PF_WORKGROUP_SIZE)) v += partials[i];
+    s_reduce[lid] = v;
+    barrier();
+    for (uint stride = uint(PF_WORKGROUP_SIZE) / 2u; stride > 0u; stride >>= 1u) {
+        if (lid < stride) s_reduce[lid] += s_reduce[lid + stride];
+        barrier();
+    }
+    vec4 total = s_reduce[0];
+    barrier();
+    return total;
+}

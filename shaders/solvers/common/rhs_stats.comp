@@ -1,0 +1,26 @@
+// Start of every solve, per workgroup: (sum b, b.b, FLUID cells, AIR cells). The system is
+// singular when no cell is AIR (a closed, full domain): then begin_solve removes the mean of b
+// so the system is consistent.
+#include "common/sim.glsl"
+#include "solvers/common/solver_state.h"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+layout(std430, binding = PF_SLOT_RHS) readonly buffer Rhs { float rhs[]; };
+layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partials[]; };
+#include "solvers/common/poisson.glsl"
+#include "solvers/common/reduce.glsl"
+
+void main() {
+    int c = int(flat_id());
+    vec4 v = vec4(0.0);
+    if (c < u_dims.w) {
+        uint t = cell_type[c];
+        if (t == PF_CELL_FLUID) {
+            float b = rhs[c];
+            v = vec4(b, b * b, 1.0, 0.0);
+        } else if (t == PF_CELL_AIR) {
+            v.w = 1.0;
+        }
+    }
+    store_workgroup_sum(v);
+}

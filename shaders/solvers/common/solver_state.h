@@ -1,0 +1,40 @@
+/* Words of a solver's state buffer, shared by the solver kernels (GLSL) and their C++ owners
+ * (src/sim/solvers/common/convergence.*). One uint array; floats are stored as their bits.
+ * Scalars live on the GPU so convergence is decided there: the kernel that tests it rewrites
+ * the indirect-dispatch records that follow the scalars to zero workgroups, and every later
+ * iteration of that solve dispatches nothing. The CPU never waits for a solve. */
+#ifndef PF_SOLVER_STATE_H
+#define PF_SOLVER_STATE_H
+
+#define PF_SOLVER_BB 0           /* float: b.b over FLUID cells (after the null-space projection) */
+#define PF_SOLVER_B_MEAN 1       /* float: mean of b removed when the system is singular */
+#define PF_SOLVER_SINGULAR 2     /* uint: 1 when no cell is AIR (pure Neumann: constants are a null space) */
+#define PF_SOLVER_FLUID_CELLS 3  /* uint: FLUID cells of this solve */
+#define PF_SOLVER_RZ 4           /* float: r.z of the current Krylov iterate */
+#define PF_SOLVER_RR 5           /* float: r.r of the current iterate */
+#define PF_SOLVER_ALPHA 6        /* float: CG step length */
+#define PF_SOLVER_BETA 7         /* float: CG direction update */
+#define PF_SOLVER_Z_MEAN 8       /* float: mean of z removed when singular */
+#define PF_SOLVER_ITERATIONS 9   /* uint: iterations done in this solve */
+#define PF_SOLVER_CONVERGED 10   /* uint: 1 once the tolerance is met (or the search breaks down) */
+#define PF_SOLVER_RESIDUAL 11    /* float: relative residual of the newest check */
+#define PF_SOLVER_TOLERANCE 12   /* float: stop when the relative residual is at or below this */
+#define PF_SOLVER_PARTIALS 13    /* uint: partial sums written by the cell-wide reduction kernels */
+#define PF_SOLVER_RECORDS 14     /* uint: indirect-dispatch records in use */
+#define PF_SOLVER_SCALARS 16     /* words before the first indirect record */
+
+/* Indirect-dispatch record k: words PF_SOLVER_SCALARS + 4k .. +2 = workgroups (x, y, z); its
+ * full size, restored at the start of every solve, at PF_SOLVER_SCALARS + 4 (PF_SOLVER_MAX_RECORDS + k). */
+#define PF_SOLVER_MAX_RECORDS 16
+#define PF_SOLVER_WORDS (PF_SOLVER_SCALARS + 8 * PF_SOLVER_MAX_RECORDS)
+
+/* Explicit uniform locations of the solver kernels (set by glProgramUniform before each pass). */
+#define PF_LOC_SOLVER_DIMS 0     /* ivec4: cells per axis and cell count of the level worked on */
+#define PF_LOC_SOLVER_COLOR 1    /* uint: red-black colour (0: i+j+k even) */
+#define PF_LOC_SOLVER_OMEGA 2    /* float: relaxation weight */
+#define PF_LOC_SOLVER_RECORD 3   /* uint: indirect record a kernel reads or writes */
+#define PF_LOC_SOLVER_COUNT 4    /* uint: iterations, sweeps or partial sums, per kernel */
+#define PF_LOC_SOLVER_TOLERANCE 5 /* float: relative residual to reach */
+#define PF_LOC_SOLVER_ITERATIONS 6 /* uint: iterations done since the previous convergence check */
+
+#endif

@@ -1,0 +1,103 @@
+#include "sim/solvers/common/solve_control.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "solvers/common/solver_state.h"
+
+namespace pf {
+
+namespace {
+int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
+}  // namespace
+
+std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid) {
+    gl_ = &gl;
+    grid_ = grid;
+    gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups_x_);
+    std::vector<uint32_t> zeros(PF_SOLVER_WORDS, 0u);
+    state_ = gl::Buffer(gl, zeros.size() * 4, GL_DYNAMIC_COPY);
+    state_.upload(0, zeros.size() * 4, zeros.data());
+    const int64_t groups = ceil_div(grid.cells, PF_WORKGROUP_SIZE);
+    const int64_t gx = std::min<int64_t>(groups, max_groups_x_);
+    partials_ = uint32_t(gx * ceil_div(groups, gx));  // a 2D dispatch may add idle workgroups
+    partials_buffer_ = gl::Buffer(gl, size_t(partials_) * 16, GL_DYNAMIC_COPY);
+    add_record(grid.cells);
+    for (gl::ProgramId id : {gl::ProgramId::solver_rhs_stats, gl::ProgramId::solver_begin, gl::ProgramId::solver_residual,
+                             gl::ProgramId::solver_check, gl::ProgramId::solver_report}) {
+        if (std::string error = runner.prepare(id); !error.empty()) return error;
+        set_dims(runner.program(id), grid.size);
+    }
+    return {};
+}
+
+uint32_t SolveControl::add_record(uint64_t invocations) {
+    const uint32_t k = records_++;
+    const int64_t groups = ceil_div(int64_t(invocations), PF_WORKGROUP_SIZE);
+    const int64_t gx = std::min<int64_t>(groups, max_groups_x_);
+    const uint32_t full[4] = {uint32_t(gx), uint32_t(ceil_div(groups, gx)), 1u, 0u};
+    // The live record and its full size (begin_solve copies one onto the other), and the count.
+    state_.upload((PF_SOLVER_SCALARS + 4 * k) * 4, 16, full);
+    state_.upload((PF_SOLVER_SCALARS + 4 * (PF_SOLVER_MAX_RECORDS + k)) * 4, 16, full);
+    state_.upload(PF_SOLVER_RECORDS * 4, 4, &records_);
+    return k;
+}
+
+Indirect SolveControl::record(uint32_t k) const { return Indirect{&state_, (PF_SOLVER_SCALARS + 4 * k) * 4}; }
+
+void SolveControl::set_dims(GLuint program, glm::ivec3 dims) const {
+    gl_->ProgramUniform4i(program, PF_LOC_SOLVER_DIMS, dims.x, dims.y, dims.z, dims.x * dims.y * dims.z);
+}
+
+void SolveControl::begin(PassRunner& runner, StatId stat, const PressureProblem& problem, bool another_round) {
+    runner.run({gl::ProgramId::solver_rhs_stats,
+                stat,
+                grid_.cells,
+                {{PF_SLOT_CELL_TYPE, &problem.cell_type}, {PF_SLOT_RHS, &problem.rhs},
+                 {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}}});
+    const GLuint begin = runner.program(gl::ProgramId::solver_begin);
+    gl_->ProgramUniform1ui(begin, PF_LOC_SOLVER_COUNT, partials_);
+    gl_->ProgramUniform1f(begin, PF_LOC_SOLVER_TOLERANCE, problem.params.pressure_tolerance);
+    gl_->ProgramUniform1ui(begin, PF_LOC_SOLVER_ITERATIONS, another_round ? 1u : 0u);
+    runner.run({gl::ProgramId::solver_begin,
+                stat,
+                PF_WORKGROUP_SIZE,
+                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}, {PF_SLOT_SOLVER_STATE, &state_}}});
+}
+
+void SolveControl::residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct) {
+    runner.run({gl::ProgramId::solver_residual,
+                stat,
+                grid_.cells,
+                {{PF_SLOT_CELL_TYPE, &problem.cell_type},
+                 {PF_SLOT_RHS, &problem.rhs},
+                 {PF_SLOT_SOLVER_X, &problem.pressure},
+                 {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
+                 {PF_SLOT_SOLVER_STATE, &state_}},
+                direct ? Indirect{} : record(0)});
+}
+
+void SolveControl::check(PassRunner& runner, StatId stat, const PressureProblem& problem, uint32_t iterations) {
+    residual(runner, stat, problem, false);
+    const GLuint check = runner.program(gl::ProgramId::solver_check);
+    gl_->ProgramUniform1ui(check, PF_LOC_SOLVER_COUNT, partials_);
+    gl_->ProgramUniform1ui(check, PF_LOC_SOLVER_ITERATIONS, iterations);
+    runner.run({gl::ProgramId::solver_check,
+                stat,
+                PF_WORKGROUP_SIZE,
+                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}, {PF_SLOT_SOLVER_STATE, &state_}}});
+}
+
+void SolveControl::finish(PassRunner& runner, StatId stat, const PressureProblem& problem) {
+    residual(runner, stat, problem, true);
+    const GLuint report = runner.program(gl::ProgramId::solver_report);
+    gl_->ProgramUniform1ui(report, PF_LOC_SOLVER_COUNT, partials_);
+    runner.run({gl::ProgramId::solver_report,
+                stat,
+                PF_WORKGROUP_SIZE,
+                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
+                 {PF_SLOT_SOLVER_STATE, &state_},
+                 {PF_SLOT_SOLVER_STATUS, &problem.status}}});
+}
+
+}  // namespace pf

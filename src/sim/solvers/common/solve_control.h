@@ -1,0 +1,57 @@
+// What every pressure solver shares: the state buffer whose scalars and indirect-dispatch
+// records let the GPU decide convergence (shaders/solvers/common/solver_state.h), the
+// per-workgroup partial sums, the start of a solve (null-space detection, b.b), convergence
+// checks, and the final residual report into the simulation's status buffer.
+//
+// Flow of one solve: begin() → the solver's iterations, whose cell-wide passes dispatch
+// through record(k) → check() now and then (stationary solvers) → finish(). Once a check (or a
+// Krylov scalar step) finds the tolerance met, it zeroes the records: every later iteration
+// of that solve dispatches no workgroups, and the CPU has not waited for anything.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "sim/solvers/pressure_solver.h"
+
+namespace pf {
+
+class SolveControl {
+public:
+    // Allocates the state and partials buffers and builds the shared programs; record 0 is
+    // the fine grid's cells. Returns an error message, empty on success.
+    std::string init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid);
+    // Adds an indirect record dispatching `invocations` (a coarser grid level); its index.
+    uint32_t add_record(uint64_t invocations);
+    Indirect record(uint32_t k) const;
+    // Workgroups (and partial sums) of a cell-wide pass over the fine grid.
+    uint32_t partial_count() const { return partials_; }
+
+    // Resets the state for a new solve of `problem` (tolerance, singular mean, b.b); a further
+    // round of the same solve (`another_round`) keeps counting its iterations.
+    void begin(PassRunner& runner, StatId stat, const PressureProblem& problem, bool another_round = false);
+    // Residual of `x` against the tolerance; `iterations` done since the previous check.
+    // Skipped (indirectly) once converged.
+    void check(PassRunner& runner, StatId stat, const PressureProblem& problem, uint32_t iterations);
+    // The final residual of the problem's pressure and the iteration count, into the status buffer.
+    void finish(PassRunner& runner, StatId stat, const PressureProblem& problem);
+
+    const gl::Buffer& state() const { return state_; }
+    const gl::Buffer& partials() const { return partials_buffer_; }
+    // Sets the level-size uniform of a solver program (all solver kernels have one).
+    void set_dims(GLuint program, glm::ivec3 dims) const;
+    glm::ivec3 dims() const { return grid_.size; }
+
+private:
+    void residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct);
+
+    const gl::Api* gl_ = nullptr;
+    SolverGrid grid_{};
+    gl::Buffer state_, partials_buffer_;
+    uint32_t partials_ = 0;
+    uint32_t records_ = 0;
+    GLint max_groups_x_ = 65535;
+};
+
+}  // namespace pf

@@ -1,0 +1,200 @@
+// Every pressure solver on manufactured Poisson problems, checked in double precision on the
+// CPU: it stops at its tolerance (the residual the GPU reports is the residual the CPU
+// measures), agrees with the converged CPU reference, handles the singular closed full box
+// (the constant null space), and with separation solves the complementarity problem.
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "api/handle.h"
+#include "reference/cpu_reference.h"
+#include "support/sim_fixture.h"
+
+namespace pf::test {
+namespace {
+
+struct Problem {
+    ref::Grid grid;
+    std::vector<uint8_t> type;
+    std::vector<double> rhs;
+};
+
+// FLUID in the lower 70% of the domain with 8% of those cells AIR (bubbles, a ragged free
+// surface), AIR above; random right-hand side in pascals' units.
+Problem bubbly_tank(glm::ivec3 n, uint32_t seed) {
+    Problem pb{ref::Grid{n.x, n.y, n.z, 0.05, glm::dvec3(0.0)}, {}, {}};
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0), b(-500.0, 1000.0);
+    pb.type.assign(size_t(pb.grid.cells()), ref::AIR);
+    pb.rhs.assign(size_t(pb.grid.cells()), 0.0);
+    for (int k = 0; k < n.z; ++k)
+        for (int j = 0; j < n.y; ++j)
+            for (int i = 0; i < n.x; ++i) {
+                const int c = pb.grid.cell_index(i, j, k);
+                if (j < int(0.7 * n.y) && u(rng) > 0.08) {
+                    pb.type[size_t(c)] = ref::FLUID;
+                    pb.rhs[size_t(c)] = b(rng);
+                }
+            }
+    return pb;
+}
+
+// Every cell FLUID: no AIR, so A is singular (constants); the rhs has a non-zero mean.
+Problem closed_full_box(glm::ivec3 n, uint32_t seed) {
+    Problem pb{ref::Grid{n.x, n.y, n.z, 0.05, glm::dvec3(0.0)}, {}, {}};
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> b(-300.0, 700.0);
+    pb.type.assign(size_t(pb.grid.cells()), ref::FLUID);
+    for (int c = 0; c < pb.grid.cells(); ++c) pb.rhs.push_back(b(rng));
+    return pb;
+}
+
+double norm(const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v) s += x * x;
+    return std::sqrt(s);
+}
+
+struct Solved {
+    std::vector<double> p;
+    uint32_t iterations = 0;
+    float reported_residual = 0;
+};
+
+struct SolverCase {
+    pf_pressure_solver solver;
+    const char* name;
+};
+
+class Solvers : public GpuTest, public ::testing::WithParamInterface<SolverCase> {
+protected:
+    Solved solve(const Problem& pb, float tolerance, uint32_t cap, uint32_t separation, float jacobi_omega = 1.0f) {
+        pf_sim_desc d = test_desc(uint32_t(pb.grid.nx), uint32_t(pb.grid.ny), uint32_t(pb.grid.nz), 0.05f);
+        d.params.pressure_solver = GetParam().solver;
+        d.params.pressure_tolerance = tolerance;
+        d.params.pressure_iterations = cap;
+        d.params.separation = separation;
+        d.params.jacobi_omega = jacobi_omega;
+        SimPtr handle = create(d);
+        EXPECT_TRUE(handle);
+        if (!handle) return {};
+        Simulation& sim = *handle->impl;
+        std::vector<uint32_t> type(pb.type.begin(), pb.type.end());
+        std::vector<float> rhs(pb.rhs.begin(), pb.rhs.end()), p(pb.rhs.size(), 0.0f);
+        EXPECT_EQ(sim.solve_for_test(type, rhs, p), PF_OK);
+        const std::vector<uint32_t> status = sim.read_grid(GridBuffer::status);
+        Solved out;
+        out.p.assign(p.begin(), p.end());
+        out.iterations = status[PF_STATUS_SOLVER_ITERATIONS];
+        std::memcpy(&out.reported_residual, &status[PF_STATUS_SOLVER_RESIDUAL], 4);
+        EXPECT_EQ(sim.runner().binding_errors(), 0u);
+        return out;
+    }
+};
+
+// Relative residual |b - A p| / |b| in double, with b as the GPU saw it (floats).
+double relative_residual(const Problem& pb, const std::vector<double>& p, bool remove_mean) {
+    std::vector<double> b(pb.rhs.size());
+    double mean = 0;
+    int fluid = 0;
+    for (size_t c = 0; c < b.size(); ++c) {
+        b[c] = pb.type[c] == ref::FLUID ? double(float(pb.rhs[c])) : 0.0;
+        if (pb.type[c] == ref::FLUID) mean += b[c], ++fluid;
+    }
+    mean = remove_mean ? mean / fluid : 0.0;
+    const std::vector<double> ap = ref::laplacian(pb.grid, pb.type, p);
+    std::vector<double> r(b.size(), 0.0);
+    for (size_t c = 0; c < b.size(); ++c) {
+        if (pb.type[c] != ref::FLUID) continue;
+        b[c] -= mean;
+        r[c] = b[c] - ap[c];
+    }
+    return norm(r) / norm(b);
+}
+
+TEST_P(Solvers, ConvergesToItsToleranceAndAgreesWithTheReference) {
+    const Problem pb = bubbly_tank({14, 12, 10}, 5);
+    const float tol = 1e-5f;
+    const Solved s = solve(pb, tol, 10000, 0);
+    ASSERT_EQ(s.p.size(), pb.rhs.size());
+    EXPECT_GT(s.iterations, 0u);
+    EXPECT_LT(s.iterations, 10000u) << "stopped by the cap, not the tolerance";
+    EXPECT_LE(s.reported_residual, tol);
+    // What the GPU reports is what the CPU measures (float rounding of a 1e-5 residual).
+    const double rel = relative_residual(pb, s.p, false);
+    EXPECT_LE(rel, 1.5 * tol);
+    EXPECT_NEAR(rel, double(s.reported_residual), 0.25 * tol);
+
+    std::vector<double> rhs_f(pb.rhs.size());
+    for (size_t c = 0; c < rhs_f.size(); ++c) rhs_f[c] = double(float(pb.rhs[c]));
+    const std::vector<double> exact = ref::solve_pressure_exact(pb.grid, pb.type, rhs_f);
+    std::vector<double> err(exact.size());
+    for (size_t c = 0; c < err.size(); ++c) err[c] = s.p[c] - exact[c];
+    // |e| / |x| <= cond(A) |r| / |b|; cond(A) of this 14x12x10 problem is below 200.
+    EXPECT_LT(norm(err) / norm(exact), 200.0 * tol);
+    RecordProperty("iterations", int(s.iterations));
+}
+
+TEST_P(Solvers, ClosedFullBoxIsSingularAndStillConverges) {
+    const Problem pb = closed_full_box({10, 8, 9}, 3);
+    const float tol = 1e-5f;
+    // Separation on: there is nothing to separate into. Jacobi is damped (0.8) here: with
+    // omega = 1 in a closed box, where nearly every cell has 6 neighbours, the checkerboard
+    // error mode has an iteration eigenvalue near -1 and survives thousands of sweeps (measured:
+    // residual 7e-3 after 10000), which is Jacobi's nature, not the null-space handling.
+    const Solved s = solve(pb, tol, 10000, 1, 0.8f);
+    ASSERT_EQ(s.p.size(), pb.rhs.size());
+    EXPECT_LT(s.iterations, 10000u);
+    EXPECT_LE(s.reported_residual, tol);
+    // The mean of b is not in the range of A: only b - mean is solvable, and it is solved.
+    EXPECT_LE(relative_residual(pb, s.p, true), 1.5 * tol);
+    // Without removing it the residual could not fall below |mean| / |b|.
+    EXPECT_GT(relative_residual(pb, s.p, false), 100.0 * tol);
+    for (double p : s.p) ASSERT_TRUE(std::isfinite(p));
+}
+
+TEST_P(Solvers, SeparationSatisfiesComplementarity) {
+    Problem pb = bubbly_tank({14, 12, 10}, 9);
+    // Strong suction in part of the liquid (b < 0 wants p < 0): the constraint is active there.
+    for (size_t c = 0; c < pb.rhs.size(); ++c)
+        if (pb.type[c] == ref::FLUID && (c % 7) < 3) pb.rhs[c] = -4000.0;
+    const Solved s = solve(pb, 1e-5f, 10000, 1);
+    ASSERT_EQ(s.p.size(), pb.rhs.size());
+    std::vector<double> b(pb.rhs.size());
+    for (size_t c = 0; c < b.size(); ++c) b[c] = double(float(pb.rhs[c]));
+    const std::vector<double> ap = ref::laplacian(pb.grid, pb.type, s.p);
+    double b_norm = norm(b), violation = 0;
+    int active = 0, free_cells = 0;
+    for (size_t c = 0; c < b.size(); ++c) {
+        if (pb.type[c] != ref::FLUID) continue;
+        ASSERT_GE(s.p[c], 0.0) << "cell " << c;
+        const double r = b[c] - ap[c];
+        if (s.p[c] > 0.0) {
+            ++free_cells;
+            violation += r * r;
+        } else {
+            ++active;
+            violation += std::max(r, 0.0) * std::max(r, 0.0);  // at p = 0, A p - b >= 0
+        }
+    }
+    EXPECT_GT(active, 50);
+    EXPECT_GT(free_cells, 50);
+    const double rel = std::sqrt(violation) / b_norm;
+    EXPECT_NEAR(rel, double(s.reported_residual), 1e-5 + 1e-3 * rel) << "reported = measured";
+    RecordProperty("complementarity_residual", std::to_string(rel));
+    // Stationary solvers project every update and meet the tolerance; the CG family runs a
+    // fixed number of active-set rounds (4), which on this adversarial pattern leaves a measured
+    // 3.1e-3 (8 rounds reach the tolerance; the unconstrained solve alone leaves 0.127).
+    const bool stationary = GetParam().solver == PF_PRESSURE_SOLVER_JACOBI || GetParam().solver == PF_PRESSURE_SOLVER_RBGS;
+    EXPECT_LE(rel, stationary ? 1.5e-5 : 1e-2);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllSolvers, Solvers,
+                         ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_JACOBI, "jacobi"},
+                                           SolverCase{PF_PRESSURE_SOLVER_RBGS, "rbgs"},
+                                           SolverCase{PF_PRESSURE_SOLVER_CG, "cg"},
+                                           SolverCase{PF_PRESSURE_SOLVER_PCG, "pcg"}),
+                         [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace pf::test
