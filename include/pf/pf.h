@@ -79,7 +79,8 @@ typedef enum pf_pressure_solver {
     PF_PRESSURE_SOLVER_RBGS = 1,     /**< red-black Gauss-Seidel / SOR (sor_omega); a check every 4 iterations */
     PF_PRESSURE_SOLVER_CG = 2,       /**< conjugate gradients, no preconditioner */
     PF_PRESSURE_SOLVER_PCG = 3,      /**< conjugate gradients, Jacobi (diagonal) preconditioner */
-    PF_PRESSURE_SOLVER_COUNT = 4,
+    PF_PRESSURE_SOLVER_MGPCG = 4,    /**< conjugate gradients, multigrid V-cycle preconditioner (McAdams et al. 2010) */
+    PF_PRESSURE_SOLVER_COUNT = 5,
     PF_PRESSURE_SOLVER_FORCE32 = 0x7fffffff
 } pf_pressure_solver;
 

@@ -33,6 +33,14 @@
 #define PF_SLOT_SOLVER_Z 3       /* preconditioned residual (kernels that do not read the rhs) */
 #define PF_SLOT_SOLVER_STATUS 0  /* the simulation's status buffer, in the final check only */
 #define PF_SLOT_SOLVER_WORKING_TYPE 2 /* cell types with separated cells held at p = 0 (CG family) */
+/* storage blocks of the multigrid kernels (shaders/solvers/mgpcg/): a level and the next coarser one */
+#define PF_SLOT_MG_TYPE 6        /* the level's cell types */
+#define PF_SLOT_MG_R 3           /* the level's right-hand side (the residual it corrects) */
+#define PF_SLOT_MG_E 0           /* the level's correction */
+#define PF_SLOT_MG_TMP 1         /* the level's residual after smoothing */
+#define PF_SLOT_MG_COARSE_TYPE 2
+#define PF_SLOT_MG_COARSE_R 4
+#define PF_SLOT_MG_COARSE_E 5
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */

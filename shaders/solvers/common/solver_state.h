@@ -36,5 +36,6 @@
 #define PF_LOC_SOLVER_COUNT 4    /* uint: iterations, sweeps or partial sums, per kernel */
 #define PF_LOC_SOLVER_TOLERANCE 5 /* float: relative residual to reach */
 #define PF_LOC_SOLVER_ITERATIONS 6 /* uint: iterations done since the previous convergence check */
+#define PF_LOC_SOLVER_COARSE_DIMS 7 /* ivec4: the next coarser multigrid level's size */
 
 #endif

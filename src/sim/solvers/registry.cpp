@@ -1,6 +1,7 @@
 // The one place that maps pf_pressure_solver values to solver classes.
 #include "sim/solvers/cg/cg_solver.h"
 #include "sim/solvers/jacobi/jacobi_solver.h"
+#include "sim/solvers/mgpcg/multigrid.h"
 #include "sim/solvers/pressure_solver.h"
 #include "sim/solvers/rbgs/rbgs_solver.h"
 
@@ -14,6 +15,9 @@ std::unique_ptr<PressureSolver> make_pressure_solver(pf_pressure_solver kind) {
             return std::make_unique<ConjugateGradientSolver>(ConjugateGradientSolver::Preconditioner::none, "cg");
         case PF_PRESSURE_SOLVER_PCG:
             return std::make_unique<ConjugateGradientSolver>(ConjugateGradientSolver::Preconditioner::jacobi, "pcg");
+        case PF_PRESSURE_SOLVER_MGPCG:
+            return std::make_unique<ConjugateGradientSolver>(ConjugateGradientSolver::Preconditioner::stored, "mgpcg",
+                                                             std::make_unique<Multigrid>());
         default: return nullptr;
     }
 }

@@ -118,6 +118,7 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
     };
 
     control_.begin(runner, stat_, problem, another_round);
+    if (stored_) stored_->begin(runner, precondition_stat_, type);
     runner.run({init_program(), stat_, grid_.cells,
                 {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_RHS, &problem.rhs}, {PF_SLOT_SOLVER_X, &x},
                  {PF_SLOT_SOLVER_R, &r_}, {PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state}}});

@@ -22,6 +22,8 @@ class StoredPreconditioner {
 public:
     virtual ~StoredPreconditioner() = default;
     virtual std::string init(const gl::Api& gl, PassRunner& runner, SolveControl& control) = 0;
+    // Once per Krylov solve, before the first apply: the system's cell types are fixed until the next.
+    virtual void begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_type) = 0;
     // z = M^-1 r on FLUID cells of `cell_type`; dispatches through the control's records so a
     // converged solve skips it. M must be symmetric positive definite (CG requires it).
     virtual void apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_type, const gl::Buffer& r,
