@@ -35,6 +35,9 @@ struct Options {
     uint32_t warmup = 20;
     uint32_t steps = 100;
     uint32_t pressure_iterations = 40;
+    std::string solver;         // empty: the scene's
+    float tolerance = 0;        // 0: the scene's
+    int separation = -1;        // -1: the scene's
     uint32_t max_substeps = 0; // 0: the scene's
     float frame_dt = 0;        // 0: the scene's
     std::string json_path, csv_path;
@@ -53,6 +56,9 @@ void print_usage(std::FILE* f) {
                  "  --steps M                measured steps (default 100)\n"
                  "  --pressure-iterations N  Jacobi iterations per substep for every scene (default 40,\n"
                  "                           the original's \"step (40 Jacobi iterations)\")\n"
+                 "  --solver NAME            pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
+                 "  --tolerance T            pressure_tolerance (relative residual) for every scene\n"
+                 "  --separation 0|1         override the scenes' separation\n"
                  "  --max-substeps N         override the scenes' max_substeps (1 = one substep per step)\n"
                  "  --frame-dt S             override the scenes' frame_dt (seconds per pf_step)\n"
                  "  --json PATH              write results as JSON\n"
@@ -78,6 +84,13 @@ Options parse_args(int argc, char** argv) {
             o.steps = pfs::parse_u32(args.value(), "--steps", 1, 1000000);
         } else if (a == "--pressure-iterations") {
             o.pressure_iterations = pfs::parse_u32(args.value(), "--pressure-iterations", 1, 10000);
+        } else if (a == "--solver") {
+            o.solver = args.value();
+            pfs::parse_solver(o.solver, "--solver");
+        } else if (a == "--tolerance") {
+            o.tolerance = pfs::parse_float(args.value(), "--tolerance", 1e-12f, 0.999f);
+        } else if (a == "--separation") {
+            o.separation = int(pfs::parse_u32(args.value(), "--separation", 0, 1));
         } else if (a == "--max-substeps") {
             o.max_substeps = pfs::parse_u32(args.value(), "--max-substeps", 1, 64);
         } else if (a == "--frame-dt") {
@@ -139,6 +152,8 @@ struct Result {
     bool gpu_valid = false;
     uint32_t flags = 0;
     float max_speed = 0;
+    pfs::Summary solver_iterations, solver_residual;
+    std::vector<std::pair<std::string, pfs::Summary>> pass_list;  // pf_get_pass_stats entries, ms per step
 };
 
 // Run one scene; fills r (r.error on failure).
@@ -152,14 +167,19 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
 
     pf_sim_desc desc = pfs::make_sim_desc(r.scene, pfs::get_proc, pfs::stderr_logger(opt.verbose));
     desc.params.pressure_iterations = opt.pressure_iterations;
+    if (!opt.solver.empty()) desc.params.pressure_solver = pfs::parse_solver(opt.solver, "--solver");
+    if (opt.tolerance > 0) desc.params.pressure_tolerance = opt.tolerance;
+    if (opt.separation >= 0) desc.params.separation = uint32_t(opt.separation);
     if (opt.max_substeps) desc.params.max_substeps = opt.max_substeps;
     r.params = desc.params;
     r.max_particles = desc.max_particles;
     r.ppc = desc.fill_particles_per_cell;
 
-    std::printf("\n[%s] %s\n  grid %ux%ux%u, cell %.4g m; %u Jacobi iterations, max_substeps %u, frame_dt %.5g s\n",
+    std::printf("\n[%s] %s\n  grid %ux%ux%u, cell %.4g m; solver %s, at most %u iterations, tolerance %g, "
+                "separation %u, max_substeps %u, frame_dt %.5g s\n",
                 r.name.c_str(), path.c_str(), desc.grid_size[0], desc.grid_size[1], desc.grid_size[2],
-                double(desc.cell_size), desc.params.pressure_iterations, desc.params.max_substeps,
+                double(desc.cell_size), pfs::solver_name(desc.params.pressure_solver), desc.params.pressure_iterations,
+                double(desc.params.pressure_tolerance), desc.params.separation, desc.params.max_substeps,
                 double(r.frame_dt));
     std::fflush(stdout);
 
@@ -197,13 +217,23 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
         float total;
     };
     std::map<uint64_t, Gpu> gpu; // distinct gpu_step -> timings
-    std::vector<double> wall, cpu;
+    std::vector<double> wall, cpu, iterations, residual;
+    std::map<std::string, std::vector<double>> pass_list;
+    std::vector<std::string> pass_order;
     auto collect = [&]() {
         if (st.gpu_step >= first && st.gpu_step <= last && !gpu.count(st.gpu_step)) {
             Gpu g{};
             std::copy(st.gpu_ms, st.gpu_ms + PF_PASS_COUNT, g.ms);
             g.total = st.gpu_total_ms;
             gpu[st.gpu_step] = g;
+            uint32_t n = 0;
+            pfs::check(pf_get_pass_count(sim.get(), &n), "pf_get_pass_count");
+            for (uint32_t i = 0; i < n; ++i) {
+                pf_pass_stats ps{};
+                pfs::check(pf_get_pass_stats(sim.get(), i, &ps), "pf_get_pass_stats");
+                if (!pass_list.count(ps.name)) pass_order.push_back(ps.name);
+                pass_list[ps.name].push_back(ps.gpu_ms);
+            }
         }
     };
 
@@ -220,6 +250,8 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
         wall.push_back(s1 - s0);
         cpu.push_back(st.cpu_ms);
         substeps_of[st.steps] = st.substeps;
+        iterations.push_back(st.solver_iterations);
+        residual.push_back(st.solver_residual);
         for (int p = 0; p < PF_PASS_COUNT; ++p) r.dispatches[p] = std::max(r.dispatches[p], st.dispatches[p]);
         collect();
         if ((i + 1) % progress_every == 0 && i + 1 < opt.steps) {
@@ -261,9 +293,14 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     r.gpu_per_substep = pfs::summarize(tot_sub);
     for (int p = 0; p < PF_PASS_COUNT; ++p) r.gpu_pass[p] = pfs::summarize(pass[p]);
     r.gpu_valid = r.gpu_samples > 0 && r.gpu_total.max > 0;
+    r.solver_iterations = pfs::summarize(iterations);
+    r.solver_residual = pfs::summarize(residual);
+    for (const std::string& name : pass_order) r.pass_list.emplace_back(name, pfs::summarize(pass_list[name]));
 
     std::printf("  wall %.3f ms/step (median), gpu %.3f ms/step (median of %zu), substeps %.2f\n", r.wall.median,
                 r.gpu_total.median, r.gpu_samples, r.substeps.mean);
+    std::printf("  solver: %.1f iterations (mean of the most per step; max %.0f), final residual %.3g (mean; max %.3g)\n",
+                r.solver_iterations.mean, r.solver_iterations.max, r.solver_residual.mean, r.solver_residual.max);
     sim.reset();
     glFinish();
 }
@@ -291,7 +328,13 @@ ojson result_json(const Result& r) {
     p["cfl"] = r.params.cfl;
     p["max_substeps"] = r.params.max_substeps;
     p["extrapolation_layers"] = r.params.extrapolation_layers;
+    p["separation"] = r.params.separation;
+    p["pressure_solver"] = pfs::solver_name(r.params.pressure_solver);
+    p["pressure_tolerance"] = r.params.pressure_tolerance;
+    p["sor_omega"] = r.params.sor_omega;
     j["params"] = p;
+    j["solver_iterations"] = summary_json(r.solver_iterations);
+    j["solver_residual"] = summary_json(r.solver_residual);
     j["create_ms"] = r.create_ms;
     j["fill_ms"] = r.fill_ms;
     j["substeps_per_step"] = summary_json(r.substeps);
@@ -310,6 +353,9 @@ ojson result_json(const Result& r) {
         passes[pf_pass_name(pf_pass(k))] = pj;
     }
     g["passes_ms_per_step"] = passes;
+    ojson list;
+    for (const auto& [name, summary] : r.pass_list) list[name] = summary_json(summary);
+    g["pass_list_ms_per_step"] = list;
     j["gpu"] = g;
     j["flags"] = flag_list(r.flags);
     j["max_speed"] = r.max_speed;

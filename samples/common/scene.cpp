@@ -228,7 +228,8 @@ Scene parse_scene(const std::string& text, const std::string& path) {
     if (auto it = root.find("params"); it != root.end()) {
         const json& pr = p.object(*it, "params");
         p.check_keys(pr, "params", {"gravity", "flip_ratio", "pressure_iterations", "jacobi_omega", "cfl",
-                                    "max_substeps", "extrapolation_layers", "separation"});
+                                    "max_substeps", "extrapolation_layers", "separation", "pressure_solver",
+                                    "pressure_tolerance", "sor_omega"});
         if (auto v = pr.find("gravity"); v != pr.end()) {
             const vec3f g = p.vec3(*v, "params.gravity");
             for (int a = 0; a < 3; ++a) s.params.gravity[a] = g[a];
@@ -243,6 +244,17 @@ Scene parse_scene(const std::string& text, const std::string& path) {
         if (auto v = pr.find("extrapolation_layers"); v != pr.end())
             s.params.extrapolation_layers = p.u32(*v, "params.extrapolation_layers", 1, 16);
         if (auto v = pr.find("separation"); v != pr.end()) s.params.separation = p.u32(*v, "params.separation", 0, 1);
+        if (auto v = pr.find("pressure_solver"); v != pr.end()) {
+            if (!v->is_string()) p.fail("params.pressure_solver", std::string("must be a string, found ") + v->type_name());
+            try {
+                s.params.pressure_solver = parse_solver(v->get<std::string>(), "value");
+            } catch (const Error& e) {
+                p.fail("params.pressure_solver", e.what());
+            }
+        }
+        if (auto v = pr.find("pressure_tolerance"); v != pr.end())
+            s.params.pressure_tolerance = p.real(*v, "params.pressure_tolerance", 0.0, 1.0, true);
+        if (auto v = pr.find("sor_omega"); v != pr.end()) s.params.sor_omega = p.real(*v, "params.sor_omega", 0.0, 2.0, true);
     }
 
     if (auto it = root.find("frame_dt"); it != root.end()) s.frame_dt = p.real(*it, "frame_dt", 0.0, 1.0, true);

@@ -150,6 +150,22 @@ float parse_float(const std::string& text, const char* option, float lo, float h
     return static_cast<float>(v);
 }
 
+namespace {
+const char* const kSolverNames[PF_PRESSURE_SOLVER_COUNT] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
+}  // namespace
+
+pf_pressure_solver parse_solver(const std::string& name, const char* what) {
+    for (int i = 0; i < PF_PRESSURE_SOLVER_COUNT; ++i)
+        if (name == kSolverNames[i]) return pf_pressure_solver(i);
+    std::string known;
+    for (const char* n : kSolverNames) known += std::string(known.empty() ? "" : ", ") + n;
+    throw Error(std::string(what) + ": unknown pressure solver '" + name + "' (known: " + known + ")");
+}
+
+const char* solver_name(pf_pressure_solver solver) {
+    return solver >= 0 && solver < PF_PRESSURE_SOLVER_COUNT ? kSolverNames[solver] : "unknown";
+}
+
 void parse_size(const std::string& text, const char* option, uint32_t& w, uint32_t& h) {
     const size_t x = text.find_first_of("xX");
     if (x == std::string::npos) throw Error(std::string(option) + ": expected WxH, got '" + text + "'");

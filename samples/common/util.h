@@ -74,6 +74,10 @@ private:
 /// Strict number parsing for command-line options; throw Error naming the option.
 uint32_t parse_u32(const std::string& text, const char* option, uint32_t lo, uint32_t hi);
 float parse_float(const std::string& text, const char* option, float lo, float hi);
+/// Pressure solver by name ("jacobi", "rbgs", "cg", "pcg", "mgpcg"); throws Error naming `what`.
+pf_pressure_solver parse_solver(const std::string& name, const char* what);
+/// The name parse_solver takes for `solver`.
+const char* solver_name(pf_pressure_solver solver);
 /// "WxH" -> w, h (each 16..16384).
 void parse_size(const std::string& text, const char* option, uint32_t& w, uint32_t& h);
 

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# The pressure-solver sweep recorded in docs/accuracy.md: every solver on the dam breaks at a
+# relative-residual tolerance of 1e-4, with and without separation, plus the original's 40
+# Jacobi sweeps. Usage: scripts/bench_solvers.sh OUTDIR [BIN_DIR]  (on the GPU machine, after
+# `source scripts/device_env.sh`; BIN_DIR defaults to build-dev).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+out=${1:?usage: bench_solvers.sh OUTDIR [BIN_DIR]}
+bin=${2:-build-dev}
+mkdir -p "$out"
+export PF_SCENES_DIR="$PWD/samples/scenes"
+run() {  # name, then pf_bench arguments
+  local name=$1; shift
+  "$bin/pf_bench" --warmup 20 --steps 60 --json "$out/$name.json" "$@" > "$out/$name.log" 2>&1 || echo "FAILED: $name"
+  grep -E "solver:|wall .* ms/step" "$out/$name.log" | sed "s/^/$name: /"
+}
+for scene in dam_break_1m; do
+  run "${scene}_jacobi40" "$scene" --solver jacobi --pressure-iterations 40
+  for sep in 1 0; do
+    run "${scene}_jacobi_tol_sep$sep" "$scene" --solver jacobi --tolerance 1e-4 --pressure-iterations 2000 --separation $sep
+    run "${scene}_rbgs_sep$sep" "$scene" --solver rbgs --tolerance 1e-4 --pressure-iterations 1000 --separation $sep
+    run "${scene}_pcg_sep$sep" "$scene" --solver pcg --tolerance 1e-4 --pressure-iterations 400 --separation $sep
+    run "${scene}_mgpcg_sep$sep" "$scene" --solver mgpcg --tolerance 1e-4 --pressure-iterations 40 --separation $sep
+  done
+done
+run dam_break_10m_jacobi40 dam_break_10m --solver jacobi --pressure-iterations 40 --steps 30
+run dam_break_10m_mgpcg_sep0 dam_break_10m --solver mgpcg --tolerance 1e-4 --pressure-iterations 40 --separation 0 --steps 30
+run dam_break_10m_mgpcg_sep1 dam_break_10m --solver mgpcg --tolerance 1e-4 --pressure-iterations 40 --separation 1 --steps 30
