@@ -51,6 +51,10 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
     if (p.separation > 1) return bad("params.separation must be 0 or 1, got " + std::to_string(p.separation));
     if (uint32_t(p.pressure_solver) >= PF_PRESSURE_SOLVER_COUNT)
         return bad("params.pressure_solver is not a pf_pressure_solver value, got " + std::to_string(int(p.pressure_solver)));
+    if (uint32_t(p.transfer) >= PF_TRANSFER_COUNT)
+        return bad("params.transfer is not a pf_transfer value, got " + std::to_string(int(p.transfer)));
+    if (uint32_t(p.advection) >= PF_ADVECTION_COUNT)
+        return bad("params.advection is not a pf_advection value, got " + std::to_string(int(p.advection)));
     if (p.extrapolation_layers < 1 || p.extrapolation_layers > 16)
         return bad("params.extrapolation_layers must be in [1, 16], got " + std::to_string(p.extrapolation_layers));
     return PF_OK;
