@@ -151,7 +151,7 @@ typedef enum pf_pass {
     PF_PASS_PRESSURE_SOLVE = 5,   /**< Jacobi iterations */
     PF_PASS_VELOCITY_UPDATE = 6,  /**< subtract pressure gradient, free-slip walls */
     PF_PASS_EXTRAPOLATE = 7,      /**< extend velocity into air faces */
-    PF_PASS_G2P = 8,              /**< grid-to-particle PIC/FLIP blend */
+    PF_PASS_G2P = 8,              /**< grid-to-particle transfer (PIC/FLIP blend or APIC) */
     PF_PASS_ADVECT = 9,           /**< move particles, keep them in the domain */
     PF_PASS_COUNT = 10,
     PF_PASS_FORCE32 = 0x7fffffff
