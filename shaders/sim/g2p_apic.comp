@@ -42,6 +42,8 @@ void main() {
     }
     uint flags = 0u;
     float speed;
+    // The factor C is multiplied by: v's own guard factor, then 0 for a non-finite C, then the
+    // |C|_F dx <= max_speed limit.
     float scale = limit_velocity(v, flags, speed);
     bool c_finite = true;
     for (int a = 0; a < 3; ++a) c_finite = c_finite && !any(isnan(c[a])) && !any(isinf(c[a]));
