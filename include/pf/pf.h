@@ -84,11 +84,33 @@ typedef enum pf_pressure_solver {
     PF_PRESSURE_SOLVER_FORCE32 = 0x7fffffff
 } pf_pressure_solver;
 
+/** Grid-particle velocity transfers (G2P and P2G), cheapest first (docs/design.md §4). */
+typedef enum pf_transfer {
+    PF_TRANSFER_PIC_FLIP = 0,     /**< PIC/FLIP blend by params.flip_ratio (the original) */
+    PF_TRANSFER_APIC = 1,         /**< affine PIC (Jiang et al. 2015): each particle carries a velocity
+                                       gradient, so rotation and shear survive the transfers without
+                                       FLIP's noise; params.flip_ratio is ignored. 48 bytes more GPU
+                                       memory per particle slot, allocated on first use */
+    PF_TRANSFER_COUNT = 2,
+    PF_TRANSFER_FORCE32 = 0x7fffffff
+} pf_transfer;
+
+/** Particle advection integrators, cheapest first (docs/design.md §4). */
+typedef enum pf_advection {
+    PF_ADVECTION_EULER = 0,       /**< explicit Euler with the particle's velocity (the original) */
+    PF_ADVECTION_RK2 = 1,         /**< midpoint rule through the grid velocity (2 samples per substep) */
+    PF_ADVECTION_RK3 = 2,         /**< Ralston's third-order Runge-Kutta through the grid velocity
+                                       (3 samples per substep) */
+    PF_ADVECTION_COUNT = 3,
+    PF_ADVECTION_FORCE32 = 0x7fffffff
+} pf_advection;
+
 /** Parameters that may change between steps (pf_set_params). Fields marked "0 = default"
  *  take their default when zero; gravity, flip_ratio and separation take zero literally. */
 typedef struct pf_sim_params {
     float gravity[3];             /**< body acceleration in m/s^2; default (0, -9.81, 0) */
-    float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 */
+    float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 (ignored with
+                                       PF_TRANSFER_APIC) */
     uint32_t pressure_iterations; /**< most solver iterations per substep (a Jacobi sweep, a red-black pair,
                                        a CG step), 1..10000; 0 = default 40 */
     float jacobi_omega;           /**< Jacobi relaxation weight in (0, 1]; 0 = default 1 (the original) */
@@ -102,10 +124,12 @@ typedef struct pf_sim_params {
     pf_pressure_solver pressure_solver; /**< which solver; default (0) PF_PRESSURE_SOLVER_JACOBI. Every solver
                                        stops at pressure_tolerance or after pressure_iterations; with
                                        separation the stationary ones project every update onto p >= 0 and
-                                       the CG family adds 4 projected Gauss-Seidel sweeps (docs/design.md) */
+                                       the CG family runs active-set rounds (docs/design.md §4.6) */
     float pressure_tolerance;     /**< relative residual |b - A p| / |b| at which a solve stops, (0, 1);
                                        0 = default 1e-4. Checked on the GPU, never waited for */
     float sor_omega;              /**< over-relaxation of PF_PRESSURE_SOLVER_RBGS in (0, 2); 0 = default 1.6 */
+    pf_transfer transfer;         /**< grid-particle transfer; default (0) PF_TRANSFER_PIC_FLIP */
+    pf_advection advection;       /**< particle integrator; default (0) PF_ADVECTION_EULER */
 } pf_sim_params;
 
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
@@ -138,7 +162,7 @@ typedef enum pf_pass {
     PF_PASS_PRESSURE_SOLVE = 5,   /**< Jacobi iterations */
     PF_PASS_VELOCITY_UPDATE = 6,  /**< subtract pressure gradient, free-slip walls */
     PF_PASS_EXTRAPOLATE = 7,      /**< extend velocity into air faces */
-    PF_PASS_G2P = 8,              /**< grid-to-particle PIC/FLIP blend */
+    PF_PASS_G2P = 8,              /**< grid-to-particle transfer (PIC/FLIP blend or APIC) */
     PF_PASS_ADVECT = 9,           /**< move particles, keep them in the domain */
     PF_PASS_COUNT = 10,
     PF_PASS_FORCE32 = 0x7fffffff

@@ -60,6 +60,16 @@ Stencil face_stencil(int axis, vec3 g) {
     return Stencil(ivec3(b), s - b);
 }
 
+// Derivative of face_stencil's clamped coordinate s with respect to g, per axis: 1 where
+// g - off_c lies inside [0, N_c - 1], 0 where the clamp holds s still (there the interpolant
+// is constant along that axis, so its gradient is 0). Used by APIC's affine vectors.
+vec3 stencil_slope(int axis, vec3 g) {
+    vec3 offset = vec3(0.5);
+    offset[axis] = 0.0;
+    vec3 s = g - offset;
+    return vec3(greaterThanEqual(s, vec3(0.0))) * vec3(lessThanEqual(s, vec3(face_dims(axis)) - 1.0));
+}
+
 // Weight of stencil node base + d, d in {0,1}^3.
 float stencil_weight(vec3 frac, ivec3 d) {
     vec3 w = mix(1.0 - frac, frac, vec3(d));
@@ -77,4 +87,13 @@ ivec3 stencil_offset(int n) { return ivec3(n & 1, (n >> 1) & 1, (n >> 2) & 1); }
 // mirrored inputs give bit-mirrored sums (a left-to-right sum would not).
 float mirror_sum(float t[8]) {
     return ((t[0] + t[1]) + (t[2] + t[3])) + ((t[4] + t[5]) + (t[6] + t[7]));
+}
+
+// Wall clamp of every advection scheme: the grid coordinate is kept in [eps, n - eps], the
+// same margin on every side (no wall bias). Positions already inside are returned unchanged.
+const float kWallMargin = 1e-3;  // cells
+vec3 keep_in_domain(vec3 x) {
+    vec3 g = grid_coord(x);
+    vec3 clamped = clamp(g, vec3(kWallMargin), vec3(sim.grid.xyz) - kWallMargin);
+    return mix(x, sim.origin.xyz + clamped * sim.dx, notEqual(g, clamped));
 }

@@ -16,6 +16,8 @@
 #define PF_SLOT_CELL_COUNT 5
 #define PF_SLOT_CELL_TYPE 6
 #define PF_SLOT_STATUS 7
+/* APIC affine vectors (3 vec4 per particle), bound by P2G and G2P only: neither binds cell_type */
+#define PF_SLOT_PARTICLE_AFFINE 6
 /* storage blocks: pressure and extrapolation kernels (no particle buffers bound there) */
 #define PF_SLOT_PRESSURE 0
 #define PF_SLOT_PRESSURE_OUT 1

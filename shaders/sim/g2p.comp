@@ -11,6 +11,7 @@ layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_
 layout(std430, binding = PF_SLOT_FACE_VEL_OLD) readonly buffer FaceVelOld { float face_vel_old[]; };
 #endif
 layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
+#include "common/particle_velocity.glsl"
 
 void main() {
     uint i = flat_id();
@@ -44,19 +45,8 @@ void main() {
     vec3 v = (1.0 - r) * v_pic + r * (vel[i].xyz + delta);
 #endif
     uint flags = 0u;
-    if (any(isnan(v)) || any(isinf(v))) {
-        v = vec3(0.0);
-        flags |= PF_GPU_FLAG_NONFINITE;
-    }
-    float speed = length(v);
-    float max_speed = sim.max_speed;
-    if (speed > max_speed) {
-        v *= max_speed / speed;
-        speed = max_speed;
-        flags |= PF_GPU_FLAG_SPEED_CLAMPED;
-    }
-    if (flags != 0u) atomicOr(status[PF_STATUS_FLAGS], flags);
-    // Non-negative floats order like their bit patterns.
-    atomicMax(status[PF_STATUS_MAX_SPEED], floatBitsToUint(speed));
+    float speed;
+    limit_velocity(v, flags, speed);
+    publish_status(speed, flags);
     vel[i] = vec4(v, 0.0);
 }

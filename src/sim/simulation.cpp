@@ -130,14 +130,13 @@ pf_result Simulation::init() {
                       r.add_stat("extrapolate", PF_PASS_EXTRAPOLATE),
                       r.add_stat("g2p", PF_PASS_G2P),
                       r.add_stat("advect", PF_PASS_ADVECT)};
-    const ProgramId needed[] = {ProgramId::fill, ProgramId::p2g, ProgramId::grid_forces, ProgramId::classify,
-                                ProgramId::pressure_setup, ProgramId::velocity_update,
-                                ProgramId::extrapolate, ProgramId::advect,
-                                desc_.params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic};
+    const ProgramId needed[] = {ProgramId::fill, ProgramId::grid_forces, ProgramId::classify,
+                                ProgramId::pressure_setup, ProgramId::velocity_update, ProgramId::extrapolate};
     for (ProgramId id : needed) {
         if (std::string error = r.prepare(id); !error.empty())
             return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
     }
+    if (pf_result res = prepare_particle_passes(desc_.params, "pf_create"); res != PF_OK) return res;
     if (pf_result res = solver_for(desc_.params, "pf_create", &solver_); res != PF_OK) return res;
     // Pressure starts at zero (warm start of the first solve); everything else is written
     // before it is read.
@@ -162,6 +161,54 @@ pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, Pr
     }
     *out = slot.get();
     return PF_OK;
+}
+
+Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& params) {
+    ParticlePrograms p{};
+    const bool apic = params.transfer == PF_TRANSFER_APIC;
+    p.p2g = apic ? ProgramId::p2g_apic : ProgramId::p2g;
+    // Pure PIC skips the FLIP delta (and its u_old reads) in a permutation of its own.
+    p.g2p = apic ? ProgramId::g2p_apic : params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
+    p.advect = params.advection == PF_ADVECTION_RK2   ? ProgramId::advect_rk2
+               : params.advection == PF_ADVECTION_RK3 ? ProgramId::advect_rk3
+                                                      : ProgramId::advect;
+    return p;
+}
+
+pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const char* fn) {
+    const ParticlePrograms programs = particle_programs(params);
+    for (ProgramId id : {programs.p2g, programs.g2p, programs.advect}) {
+        if (std::string error = runner_->prepare(id); !error.empty())
+            return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    }
+    if (params.transfer != PF_TRANSFER_APIC || affine_.bytes() != 0) return PF_OK;
+    const uint64_t bytes = uint64_t(desc_.max_particles) * 48u;
+    GLint64 max_block = 0;
+    gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+    if (bytes > uint64_t(max_block)) {
+        return log_.error(PF_ERROR_CAPACITY, std::string(fn) + ": APIC needs a buffer of " + std::to_string(bytes) +
+                                                 " bytes (48 per particle), more than this GL's "
+                                                 "GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
+                                                 "); lower max_particles");
+    }
+    gl::Buffer made(gl_, size_t(bytes), GL_DYNAMIC_COPY);
+    if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
+        return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
+                          std::string(fn) + ": allocating " + std::to_string(bytes >> 20) +
+                              " MiB of APIC affine vectors failed (GL error " + hex(err) + ")");
+    }
+    affine_ = std::move(made);
+    return PF_OK;
+}
+
+void Simulation::zero_affine(uint32_t first, uint32_t count) {
+    if (affine_.bytes() == 0 || count == 0) return;
+    if (first == 0) {
+        fill(affine_, count * 12u, 0u, stat_.clear);
+        return;
+    }
+    const std::vector<float> zeros(size_t(count) * 12, 0.0f);
+    affine_.upload(size_t(first) * 48, zeros.size() * 4, zeros.data());
 }
 
 void Simulation::fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat) {
@@ -199,9 +246,12 @@ void Simulation::run_substep() {
 
     fill(face_accum_, uint32_t(faces_) * 2, 0u, stat_.clear);
     fill(cell_count_, uint32_t(cells_), 0u, stat_.clear);
-    r.run({ProgramId::p2g, stat_.p2g, np,
-           {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_ACCUM, &face_accum_},
-            {PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_STATUS, &status_}}});
+    const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
+        accum{PF_SLOT_FACE_ACCUM, &face_accum_}, count{PF_SLOT_CELL_COUNT, &cell_count_},
+        status{PF_SLOT_STATUS, &status_}, affine{PF_SLOT_PARTICLE_AFFINE, &affine_};
+    const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
+    r.run({particle_programs(desc_.params).p2g, stat_.p2g, np,
+           apic ? Bindings{pos, vel, accum, count, status, affine} : Bindings{pos, vel, accum, count, status}});
     r.run({ProgramId::grid_forces, stat_.grid_forces, faces,
            {{PF_SLOT_FACE_ACCUM, &face_accum_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}}});
     r.run({ProgramId::classify, stat_.classify, cells,
@@ -220,11 +270,26 @@ void Simulation::run_substep() {
                 {PF_SLOT_FACE_VALID_OUT, &face_valid_[1 - valid_current_]}}});
         valid_current_ = 1 - valid_current_;
     }
-    const bool pic = desc_.params.flip_ratio <= 0.0f;
-    r.run({pic ? ProgramId::g2p_pic : ProgramId::g2p_flip, stat_.g2p, np,
-           {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_},
-            {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}, {PF_SLOT_STATUS, &status_}}});
-    r.run({ProgramId::advect, stat_.advect, np, {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}}});
+    run_g2p_and_advect();
+}
+
+void Simulation::run_g2p_and_advect() {
+    PassRunner& r = *runner_;
+    const uint32_t np = particle_count_;
+    const ParticlePrograms programs = particle_programs(desc_.params);
+    const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
+        face_vel{PF_SLOT_FACE_VEL, &face_vel_}, status{PF_SLOT_STATUS, &status_};
+    if (desc_.params.transfer == PF_TRANSFER_APIC) {
+        r.run({programs.g2p, stat_.g2p, np, {pos, vel, face_vel, {PF_SLOT_PARTICLE_AFFINE, &affine_}, status}});
+    } else {
+        r.run({programs.g2p, stat_.g2p, np, {pos, vel, face_vel, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}, status}});
+    }
+    // Euler moves particles with their own (G2P) velocity, Runge-Kutta through the grid's.
+    if (desc_.params.advection == PF_ADVECTION_EULER) {
+        r.run({programs.advect, stat_.advect, np, {pos, vel}});
+    } else {
+        r.run({programs.advect, stat_.advect, np, {pos, face_vel}});
+    }
 }
 
 uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
@@ -306,6 +371,17 @@ pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, con
     return PF_OK;
 }
 
+pf_result Simulation::run_g2p_and_advect_for_test(float dt) {
+    gl::StateGuard guard(gl_, gl_state_);
+    ++steps_;
+    runner_->begin_step(steps_, 1);
+    upload_uniforms(dt);
+    run_g2p_and_advect();
+    runner_->end_step();
+    gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
+    return PF_OK;
+}
+
 void Simulation::poll_status() const {
     for (int s = 0; s < kReadbackSlots; ++s) {
         if (!fences_[s]) continue;
@@ -344,6 +420,7 @@ pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t
         gl::StateGuard guard(gl_, gl_state_);
         pos_.upload(size_t(particle_count_) * 16, size_t(n) * 16, pos4.data());
         vel_.upload(size_t(particle_count_) * 16, size_t(n) * 16, vel4.data());
+        zero_affine(particle_count_, n);  // APIC: a new particle starts as plain PIC (C = 0)
     }
     particle_count_ += n;
     added_speed_ = (added_at_step_ > status_step_) ? std::max(added_speed_, fastest) : fastest;
@@ -382,7 +459,7 @@ void Simulation::clear_flags() {
 
 pf_result Simulation::clear_particles() {
     gl::StateGuard guard(gl_, gl_state_);
-    particle_count_ = 0;
+    particle_count_ = 0;  // freed slots' APIC affine vectors are zeroed when add_particles reuses them
     fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
     added_speed_ = 0.0f;
     gpu_max_speed_ = 0.0f;
@@ -412,11 +489,13 @@ pf_result Simulation::push(const float center[3], float radius, const float dv[3
 pf_result Simulation::set_params(const pf_sim_params& params) {
     // Everything the new parameters need is built first, so a failure changes nothing.
     gl::StateGuard guard(gl_, gl_state_);
-    const gl::ProgramId g2p = params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
-    if (std::string error = runner_->prepare(g2p); !error.empty())
-        return log_.error(PF_ERROR_SHADER_COMPILE, "pf_set_params: " + error);
+    if (pf_result r = prepare_particle_passes(params, "pf_set_params"); r != PF_OK) return r;
     PressureSolver* solver = nullptr;
     if (pf_result r = solver_for(params, "pf_set_params", &solver); r != PF_OK) return r;
+    // Affine vectors left from an earlier APIC period do not belong to today's velocities:
+    // entering APIC starts every particle from C = 0 (plain PIC for its first transfer).
+    if (params.transfer == PF_TRANSFER_APIC && desc_.params.transfer != PF_TRANSFER_APIC)
+        zero_affine(0, particle_count_);
     solver_ = solver;
     desc_.params = params;
     return PF_OK;
@@ -482,8 +561,8 @@ void Simulation::pass_stats(uint32_t index, pf_pass_stats& out) const {
     out.dispatches = s.dispatches;
 }
 
-std::vector<uint32_t> Simulation::read_grid(GridBuffer which) const {
-    const gl::Buffer* b = nullptr;
+const gl::Buffer& Simulation::grid_buffer(GridBuffer which) const {
+    const gl::Buffer* b = &status_;
     switch (which) {
         case GridBuffer::face_accum: b = &face_accum_; break;
         case GridBuffer::face_vel: b = &face_vel_; break;
@@ -495,11 +574,37 @@ std::vector<uint32_t> Simulation::read_grid(GridBuffer which) const {
         case GridBuffer::rhs: b = &rhs_; break;
         case GridBuffer::status: b = &status_; break;
     }
-    std::vector<uint32_t> words(b->bytes() / 4);
+    return *b;
+}
+
+std::vector<uint32_t> Simulation::read_grid(GridBuffer which) const {
+    const gl::Buffer& b = grid_buffer(which);
+    std::vector<uint32_t> words(b.bytes() / 4);
     gl::StateGuard guard(gl_, gl_state_);
     gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    b->download(0, b->bytes(), words.data());
+    b.download(0, b.bytes(), words.data());
     return words;
+}
+
+void Simulation::write_grid_for_test(GridBuffer which, const std::vector<uint32_t>& words) {
+    const gl::Buffer& b = grid_buffer(which);
+    gl::StateGuard guard(gl_, gl_state_);
+    b.upload(0, std::min(b.bytes(), words.size() * 4), words.data());
+}
+
+std::vector<float> Simulation::read_affine() const {
+    if (affine_.bytes() == 0) return {};
+    std::vector<float> values(size_t(particle_count_) * 12);
+    gl::StateGuard guard(gl_, gl_state_);
+    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    affine_.download(0, values.size() * 4, values.data());
+    return values;
+}
+
+void Simulation::write_affine_for_test(const std::vector<float>& values) {
+    if (affine_.bytes() == 0) return;
+    gl::StateGuard guard(gl_, gl_state_);
+    affine_.upload(0, std::min(affine_.bytes(), values.size() * 4), values.data());
 }
 
 }  // namespace pf

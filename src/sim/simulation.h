@@ -61,6 +61,14 @@ public:
     pf_result solve_for_test(const std::vector<uint32_t>& cell_type, const std::vector<float>& rhs,
                              std::vector<float>& pressure);
     std::vector<uint32_t> read_grid(GridBuffer which) const;
+    void write_grid_for_test(GridBuffer which, const std::vector<uint32_t>& words);
+    // Only the last two passes of a substep (G2P and advection) on the face velocities as they
+    // are: tests of the integrators set face_vel with write_grid_for_test.
+    pf_result run_g2p_and_advect_for_test(float dt);
+    // APIC affine vectors of the live particles, 12 floats each (c_x, c_y, c_z as vec4s);
+    // empty while APIC was never used.
+    std::vector<float> read_affine() const;
+    void write_affine_for_test(const std::vector<float>& values);
     const PassRunner& runner() const { return *runner_; }
 
 private:
@@ -68,8 +76,19 @@ private:
     pf_result init();
     // The solver for params.pressure_solver, made and initialised on first use (kept after).
     pf_result solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out);
+    // The per-particle programs params select (transfer, flip ratio, advection).
+    struct ParticlePrograms {
+        gl::ProgramId p2g, g2p, advect;
+    };
+    static ParticlePrograms particle_programs(const pf_sim_params& params);
+    // Builds those programs and, for APIC, allocates the affine buffer (first use only), so
+    // that a failure leaves the running simulation untouched.
+    pf_result prepare_particle_passes(const pf_sim_params& params, const char* fn);
+    void zero_affine(uint32_t first, uint32_t count);
     void upload_uniforms(float dt);
     void run_substep();
+    void run_g2p_and_advect();
+    const gl::Buffer& grid_buffer(GridBuffer which) const;
     void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat);
     void poll_status() const;
 
@@ -90,6 +109,7 @@ private:
 
     // particles
     gl::Buffer pos_, vel_;
+    gl::Buffer affine_;  // APIC: 3 vec4 per particle slot (c_x, c_y, c_z); allocated on first use
     uint32_t particle_count_ = 0;
     // grid
     int32_t cells_ = 0;

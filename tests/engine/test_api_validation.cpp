@@ -40,9 +40,11 @@ bool same_params(const pf_sim_params& a, const pf_sim_params& b) { return std::m
 std::string params_str(const pf_sim_params& p) {
     char buf[256];
     std::snprintf(buf, sizeof buf,
-                  "g=(%g,%g,%g) flip=%g iters=%u omega=%g cfl=%g substeps=%u layers=%u solver=%d tol=%g sor=%g",
+                  "g=(%g,%g,%g) flip=%g iters=%u omega=%g cfl=%g substeps=%u layers=%u solver=%d tol=%g sor=%g "
+                  "transfer=%d advection=%d",
                   p.gravity[0], p.gravity[1], p.gravity[2], p.flip_ratio, p.pressure_iterations, p.jacobi_omega, p.cfl,
-                  p.max_substeps, p.extrapolation_layers, int(p.pressure_solver), p.pressure_tolerance, p.sor_omega);
+                  p.max_substeps, p.extrapolation_layers, int(p.pressure_solver), p.pressure_tolerance, p.sor_omega,
+                  int(p.transfer), int(p.advection));
     return buf;
 }
 
@@ -84,6 +86,12 @@ std::vector<ParamCase> bad_param_cases() {
         {"sor_omega 2", "sor_omega", [](pf_sim_params& p) { p.sor_omega = 2.0f; }},
         {"sor_omega -1", "sor_omega", [](pf_sim_params& p) { p.sor_omega = -1.0f; }},
         {"sor_omega NaN", "sor_omega", [](pf_sim_params& p) { p.sor_omega = kNaN; }},
+        {"transfer COUNT", "transfer", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_COUNT; }},
+        {"transfer -1", "transfer", [](pf_sim_params& p) { p.transfer = pf_transfer(-1); }},
+        {"transfer FORCE32", "transfer", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_FORCE32; }},
+        {"advection COUNT", "advection", [](pf_sim_params& p) { p.advection = PF_ADVECTION_COUNT; }},
+        {"advection -1", "advection", [](pf_sim_params& p) { p.advection = pf_advection(-1); }},
+        {"advection FORCE32", "advection", [](pf_sim_params& p) { p.advection = PF_ADVECTION_FORCE32; }},
         {"gravity[0] +Inf", "gravity", [](pf_sim_params& p) { p.gravity[0] = kInf; }},
         {"gravity[1] -Inf", "gravity", [](pf_sim_params& p) { p.gravity[1] = -kInf; }},
         {"gravity[2] NaN", "gravity", [](pf_sim_params& p) { p.gravity[2] = kNaN; }},
@@ -453,6 +461,8 @@ TEST_F(ApiValidation, SetParamsRejectsAndKeepsParams) {
     custom.cfl = 2.5f;
     custom.max_substeps = 5;
     custom.extrapolation_layers = 3;
+    custom.transfer = PF_TRANSFER_APIC;
+    custom.advection = PF_ADVECTION_RK3;
     ASSERT_EQ(pf_set_params(sim_.get(), &custom), PF_OK) << last_log();
     for (const ParamCase& c : bad_param_cases()) {
         SCOPED_TRACE(c.name);
@@ -479,6 +489,8 @@ TEST_F(ApiValidation, SetParamsAcceptsBoundaryValues) {
     hi.pressure_solver = pf_pressure_solver(PF_PRESSURE_SOLVER_COUNT - 1);
     hi.pressure_tolerance = 0.999f;
     hi.sor_omega = 1.999f;
+    hi.transfer = pf_transfer(PF_TRANSFER_COUNT - 1);
+    hi.advection = pf_advection(PF_ADVECTION_COUNT - 1);
     pf_sim_params lo = pf_default_sim_params();
     lo.flip_ratio = 0.0f;
     lo.pressure_iterations = 1;
@@ -519,6 +531,8 @@ TEST_F(ApiValidation, ZeroedParamsTakeDefaultsButGravityAndFlipStayZero) {
     EXPECT_EQ(got.gravity[1], 0.0f);  // not the default -9.81
     EXPECT_EQ(got.gravity[2], 0.0f);
     EXPECT_EQ(got.flip_ratio, 0.0f);  // pure PIC, not the default 0.95
+    EXPECT_EQ(got.transfer, PF_TRANSFER_PIC_FLIP);
+    EXPECT_EQ(got.advection, PF_ADVECTION_EULER);
     // Observable: with zero gravity a liquid at rest stays at rest (default gravity would give
     // 9.81 m/s^2 * 1/60 s = 0.16 m/s after one frame). Bound: 1e-4 m/s.
     ParticleState before = read_all(sim_.get());

@@ -3,9 +3,14 @@
 // input to that pass (read back from the buffers the substep leaves behind), so a
 // tolerance only has to cover float-vs-double rounding of that one pass. P2G is compared
 // in its fixed-point units, where the bound is the rounding of each contribution.
+// Each seed runs three pipelines: PIC/FLIP with Euler (the original), and APIC with RK2 and
+// with RK3 (APIC's P2G starts from random affine vectors written into the particle buffer).
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
+#include <string>
+#include <tuple>
 
 #include "api/handle.h"
 #include "reference/cpu_reference.h"
@@ -55,26 +60,95 @@ Scene random_scene(uint32_t seed, const pf_sim_desc& d, int count, float speed) 
     return s;
 }
 
-// Number of (particle, node) contributions per face: bounds the fixed-point rounding.
-std::vector<int> contributions(const ref::Grid& g, const ref::Particles& p) {
-    std::vector<int> n(size_t(g.faces()), 0);
-    for (const glm::dvec3& x : p.pos) {
-        const glm::dvec3 gc = g.to_grid(x);
+// Calls f(particle, component, face, weight, node grid position) for every (particle, node)
+// contribution of P2G (the §3 stencil).
+template <class F> void for_each_contribution(const ref::Grid& g, const ref::Particles& p, F&& f) {
+    for (size_t q = 0; q < p.pos.size(); ++q) {
+        const glm::dvec3 gc = g.to_grid(p.pos[q]);
         for (int c = 0; c < 3; ++c) {
             const glm::dvec3 dims = glm::dvec3(g.face_dims(c));
             const glm::dvec3 s = glm::clamp(gc - ref::Grid::face_offset_g(c), glm::dvec3(0.0), dims - 1.0);
-            const glm::ivec3 b = glm::ivec3(glm::min(glm::floor(s), dims - 2.0));
+            const glm::dvec3 b = glm::min(glm::floor(s), dims - 2.0);
+            const glm::dvec3 frac = s - b;
             for (int k = 0; k < 2; ++k)
                 for (int j = 0; j < 2; ++j)
-                    for (int i = 0; i < 2; ++i) ++n[size_t(g.face_index(c, b.x + i, b.y + j, b.z + k))];
+                    for (int i = 0; i < 2; ++i) {
+                        const glm::dvec3 d(i, j, k);
+                        const glm::dvec3 w = glm::mix(1.0 - frac, frac, d);
+                        const glm::ivec3 node = glm::ivec3(b + d);
+                        f(q, c, g.face_index(c, node.x, node.y, node.z), w.x * w.y * w.z,
+                          b + d + ref::Grid::face_offset_g(c));
+                    }
         }
     }
+}
+
+// Number of (particle, node) contributions per face: bounds the fixed-point rounding.
+std::vector<int> contributions(const ref::Grid& g, const ref::Particles& p) {
+    std::vector<int> n(size_t(g.faces()), 0);
+    for_each_contribution(g, p, [&](size_t, int, int face, double, glm::dvec3) { ++n[size_t(face)]; });
     return n;
 }
 
-class GpuVsReference : public GpuTest, public ::testing::WithParamInterface<uint32_t> {};
+constexpr double kEps = 1.0 / 16777216.0;  // 2^-24: float rounding, relative
+
+// Largest error of a float grid coordinate computed as (x - origin) / dx: two roundings, each
+// at most half an ulp of the largest coordinate (ulp(x) <= x 2^-23), doubled for margin.
+double grid_coordinate_error(const ref::Grid& g) {
+    return 2.0 * double(std::max({g.nx, g.ny, g.nz})) * 2.0 * kEps;
+}
+
+// Per face, the bound on |GPU - exact| of APIC's fixed-point momentum. Each contribution is
+// roundEven(w (v_a + c_a . r) S_m) with r = (node - g) dx computed in float from the GPU's
+// grid coordinate: 1/2 for the rounding to an integer, plus S_m times the float error of the
+// addend: a few roundings of w |q| (4 eps), the weight's error from the coordinate error dg
+// (|dw| <= 3 dg, each factor's slope is at most 1) times |q|, and w sum_k |c_ak| |dr_k|, with
+// |dr_k| <= (dg + 2 eps |r_k / dx|) dx.
+std::vector<double> apic_momentum_bound(const ref::Grid& g, const ref::Particles& p, double s_m) {
+    std::vector<double> bound(size_t(g.faces()), 0.0);
+    const double dg = grid_coordinate_error(g);
+    for_each_contribution(g, p, [&](size_t q, int c, int face, double w, glm::dvec3 node) {
+        const glm::dvec3 gp = g.to_grid(p.pos[q]);
+        const glm::dvec3 r = (node - gp) * g.dx;
+        const glm::dvec3 ca = p.affine[q][c];
+        const double addend = std::abs(p.vel[q][c] + glm::dot(ca, r));
+        double dr_term = 0;
+        for (int k = 0; k < 3; ++k) dr_term += std::abs(ca[k]) * (dg + 2.0 * kEps * std::abs(node[k] - gp[k])) * g.dx;
+        bound[size_t(face)] += 0.5 + s_m * (4.0 * kEps * w * addend + 3.0 * dg * addend + w * dr_term);
+    });
+    return bound;
+}
+
+// True when float rounding of the grid coordinate (dg) could put the particle on the other
+// side of a node plane of some lattice than its exact coordinate: there the gradient of the
+// trilinear interpolant (APIC's C) jumps, so GPU and reference may legitimately differ.
+bool near_a_node_plane(const ref::Grid& g, const glm::dvec3& world) {
+    const double dg = grid_coordinate_error(g);
+    const glm::dvec3 gc = g.to_grid(world);
+    for (int c = 0; c < 3; ++c)
+        for (int a = 0; a < 3; ++a) {
+            const double s = gc[a] - ref::Grid::face_offset_g(c)[a];
+            if (std::abs(s - std::round(s)) <= 2.0 * dg) return true;
+        }
+    return false;
+}
+
+struct Pipeline {
+    const char* name;
+    pf_transfer transfer;
+    pf_advection advection;
+};
+void PrintTo(const Pipeline& p, std::ostream* os) { *os << p.name; }
+const Pipeline kPipelines[] = {{"FlipEuler", PF_TRANSFER_PIC_FLIP, PF_ADVECTION_EULER},
+                               {"ApicRk2", PF_TRANSFER_APIC, PF_ADVECTION_RK2},
+                               {"ApicRk3", PF_TRANSFER_APIC, PF_ADVECTION_RK3}};
+
+class GpuVsReference : public GpuTest, public ::testing::WithParamInterface<std::tuple<uint32_t, Pipeline>> {};
 
 TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
+    const uint32_t seed = std::get<0>(GetParam());
+    const Pipeline pipeline = std::get<1>(GetParam());
+    const bool apic = pipeline.transfer == PF_TRANSFER_APIC;
     pf_sim_desc d = test_desc(12, 10, 8, 0.1f);
     d.origin[0] = -0.5f;
     d.origin[1] = 0.25f;
@@ -85,30 +159,51 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
     d.params.jacobi_omega = 0.8f;
     d.params.extrapolation_layers = 3;
     d.params.gravity[0] = 1.5f;         // every axis gets a body force
-    d.params.separation = GetParam() % 2;  // odd seeds: projected Jacobi (p >= 0)
+    d.params.separation = seed % 2;     // odd seeds: projected Jacobi (p >= 0)
+    d.params.transfer = pipeline.transfer;
+    d.params.advection = pipeline.advection;
     d.params.gravity[2] = -0.5f;
     const double dt = 0.01, rho = d.density;
     const glm::dvec3 gravity(d.params.gravity[0], d.params.gravity[1], d.params.gravity[2]);
 
-    Scene sc = random_scene(GetParam(), d, 2500, 2.0f);
+    Scene sc = random_scene(seed, d, 2500, 2.0f);
     SimPtr handle = create(d);
     ASSERT_TRUE(handle);
     ASSERT_EQ(pf_add_particles(handle.get(), sc.pos.data(), sc.vel.data(), uint32_t(sc.particles.pos.size())), PF_OK)
         << last_log();
     Simulation& sim = *handle->impl;
+    if (apic) {
+        // Added particles start with C = 0; give them random affine vectors of up to 10 / s
+        // (|c . r| up to ~4.5 m/s over a stencil, comparable to the velocities).
+        const std::vector<float> zero = sim.read_affine();
+        ASSERT_EQ(zero.size(), sc.particles.pos.size() * 12);
+        for (float v : zero) ASSERT_EQ(v, 0.0f);
+        std::mt19937 rng(seed + 100);
+        std::uniform_real_distribution<float> uc(-10.0f, 10.0f);
+        std::vector<float> affine(zero.size(), 0.0f);
+        sc.particles.affine.resize(sc.particles.pos.size());
+        for (size_t i = 0; i < sc.particles.pos.size(); ++i)
+            for (int a = 0; a < 3; ++a)
+                for (int k = 0; k < 3; ++k) {
+                    affine[i * 12 + size_t(a) * 4 + size_t(k)] = uc(rng);
+                    sc.particles.affine[i][a][k] = affine[i * 12 + size_t(a) * 4 + size_t(k)];
+                }
+        sim.write_affine_for_test(affine);
+    }
     ASSERT_EQ(sim.run_substep_for_test(float(dt)), PF_OK);
     const ref::Grid& g = sc.grid;
 
     // P2G, in fixed-point units: each contribution rounds by at most 1/2, plus float
     // rounding of w*v*S (relative 2^-23 per contribution, bounded by S per contribution).
     const double s_m = 1048576.0 / d.max_speed, s_w = 1048576.0;
-    const ref::P2GResult p2g = ref::p2g(g, sc.particles);
+    const ref::P2GResult p2g = apic ? ref::p2g_apic(g, sc.particles) : ref::p2g(g, sc.particles);
     const std::vector<uint32_t> accum = sim.read_grid(GridBuffer::face_accum);
     const std::vector<int> n = contributions(g, sc.particles);
+    const std::vector<double> apic_bound = apic ? apic_momentum_bound(g, sc.particles, s_m) : std::vector<double>();
     double worst_m = 0, worst_w = 0;
     for (int f = 0; f < g.faces(); ++f) {
         const double m_gpu = double(int32_t(accum[2 * f])), w_gpu = double(int32_t(accum[2 * f + 1]));
-        const double tol_m = n[f] * (0.5 + 4.0 * d.max_speed * s_m * 1.2e-7) + 1e-9;
+        const double tol_m = (apic ? apic_bound[f] : n[f] * (0.5 + 4.0 * d.max_speed * s_m * 1.2e-7)) + 1e-9;
         const double tol_w = n[f] * (0.5 + s_w * 1.2e-7) + 1e-9;
         worst_m = std::max(worst_m, std::abs(m_gpu - p2g.momentum[f] * s_m) / tol_m);
         worst_w = std::max(worst_w, std::abs(w_gpu - p2g.weight[f] * s_w) / tol_w);
@@ -170,19 +265,57 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
 
     // G2P from the GPU's face velocities, then advection.
     ref::Particles expect = sc.particles;
-    ref::g2p(g, expect, vel, vel_old, d.params.flip_ratio, d.max_speed);
+    if (apic)
+        ref::g2p_apic(g, expect, vel, d.max_speed);
+    else
+        ref::g2p(g, expect, vel, vel_old, d.params.flip_ratio, d.max_speed);
     ref::Particles moved = expect;
-    ref::advect(g, moved, dt);
+    if (pipeline.advection == PF_ADVECTION_EULER)
+        ref::advect(g, moved, dt);
+    else
+        ref::advect_rk(g, moved, vel, dt, ref::Advection(pipeline.advection));
+    // Velocities: 1e-5 relative to the largest face velocity covers the float interpolation.
+    // Positions: Euler's 1e-6 m (a few ulps of ~2 m coordinates); Runge-Kutta adds dt times
+    // each stage's velocity error, which is the interpolation error plus the field's change
+    // over the stage position's error (Lipschitz constant at most 2 v_scale / dx per axis).
+    const double tol_v = 1e-5 * v_scale;
+    const double tol_x = pipeline.advection == PF_ADVECTION_EULER
+                             ? 1e-6
+                             : 1e-6 + dt * tol_v * (1.0 + dt * 6.0 * v_scale / g.dx);
     ParticleState got = read_all(handle.get());
     for (size_t i = 0; i < got.count(); ++i) {
         for (int a = 0; a < 3; ++a) {
-            ASSERT_NEAR(got.vel[i * 3 + a], expect.vel[i][a], 1e-5 * v_scale) << "particle " << i;
-            ASSERT_NEAR(got.pos[i * 3 + a], moved.pos[i][a], 1e-6) << "particle " << i;
+            ASSERT_NEAR(got.vel[i * 3 + a], expect.vel[i][a], tol_v) << "particle " << i;
+            ASSERT_NEAR(got.pos[i * 3 + a], moved.pos[i][a], tol_x) << "particle " << i;
         }
     }
+    if (!apic) return;
+    // APIC's C = sum u_i grad w_i / dx: the float sums round by a few eps of sum |u_i| |dw_i|
+    // <= 2 v_scale per axis (16 eps), and the coordinate error dg moves C by at most the
+    // interpolant's mixed derivatives, 4 v_scale per cell per axis (3 axes: 12 dg).
+    const std::vector<float> affine = sim.read_affine();
+    ASSERT_EQ(affine.size(), got.count() * 12);
+    const double tol_c = (32.0 * kEps + 12.0 * grid_coordinate_error(g)) * v_scale / g.dx;
+    size_t skipped = 0;
+    double worst_c = 0;
+    for (size_t i = 0; i < got.count(); ++i) {
+        if (near_a_node_plane(g, expect.pos[i])) {
+            ++skipped;
+            continue;
+        }
+        for (int a = 0; a < 3; ++a)
+            for (int k = 0; k < 3; ++k)
+                worst_c = std::max(worst_c, std::abs(affine[i * 12 + size_t(a) * 4 + size_t(k)] - expect.affine[i][a][k]));
+    }
+    EXPECT_LE(worst_c, tol_c) << "APIC affine vectors off by more than their rounding bound";
+    EXPECT_LT(skipped, got.count() / 100) << "too many particles on node planes to check C";
 }
 
-INSTANTIATE_TEST_SUITE_P(RandomSeeds, GpuVsReference, ::testing::Values(1u, 2u, 3u, 4u));
+INSTANTIATE_TEST_SUITE_P(RandomSeeds, GpuVsReference,
+                         ::testing::Combine(::testing::Values(1u, 2u, 3u, 4u), ::testing::ValuesIn(kPipelines)),
+                         [](const auto& info) {
+                             return std::get<1>(info.param).name + std::to_string(std::get<0>(info.param));
+                         });
 
 }  // namespace
 }  // namespace pf::test

@@ -53,13 +53,19 @@ TEST_F(PassPipeline, EveryPassBindsEverySlotItsProgramUses) {
     ASSERT_EQ(pf_push(handle.get(), c, 0.3f, dv), PF_OK);
     for (uint32_t solver = 0; solver < PF_PRESSURE_SOLVER_COUNT; ++solver) {
         for (uint32_t separation : {0u, 1u}) {
-            pf_sim_params p{};
-            ASSERT_EQ(pf_get_params(handle.get(), &p), PF_OK);
-            p.pressure_solver = pf_pressure_solver(solver);
-            p.separation = separation;
-            p.flip_ratio = separation ? 0.95f : 0.0f;  // both G2P permutations
-            ASSERT_EQ(pf_set_params(handle.get(), &p), PF_OK) << last_log();
-            for (int i = 0; i < 3; ++i) ASSERT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);
+            for (uint32_t transfer = 0; transfer < PF_TRANSFER_COUNT; ++transfer) {
+                for (uint32_t advection = 0; advection < PF_ADVECTION_COUNT; ++advection) {
+                    pf_sim_params p{};
+                    ASSERT_EQ(pf_get_params(handle.get(), &p), PF_OK);
+                    p.pressure_solver = pf_pressure_solver(solver);
+                    p.separation = separation;
+                    p.flip_ratio = separation ? 0.95f : 0.0f;  // both PIC/FLIP G2P permutations
+                    p.transfer = pf_transfer(transfer);
+                    p.advection = pf_advection(advection);
+                    ASSERT_EQ(pf_set_params(handle.get(), &p), PF_OK) << last_log();
+                    for (int i = 0; i < 3; ++i) ASSERT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);
+                }
+            }
         }
     }
     ASSERT_EQ(pf_clear_particles(handle.get()), PF_OK);

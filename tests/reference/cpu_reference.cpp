@@ -51,6 +51,46 @@ Stencil stencil(const Grid& grid, int c, const glm::dvec3& g) {
     return st;
 }
 
+// The §3 stencil with each node's grid position and the gradient of its weight with respect
+// to the particle's grid coordinate (0 along an axis where the clamp holds the stencil).
+struct AffineStencil {
+    int index[8];
+    double weight[8];
+    glm::dvec3 node_g[8];
+    glm::dvec3 grad_g[8];
+};
+
+AffineStencil affine_stencil(const Grid& grid, int c, const glm::dvec3& g) {
+    const glm::ivec3 n = grid.face_dims(c);
+    const glm::dvec3 off = Grid::face_offset_g(c);
+    int b[3];
+    double f[3], slope[3];
+    for (int a = 0; a < 3; ++a) {
+        const double unclamped = g[a] - off[a];
+        const double s = std::clamp(unclamped, 0.0, double(n[a] - 1));
+        slope[a] = (unclamped >= 0.0 && unclamped <= double(n[a] - 1)) ? 1.0 : 0.0;
+        b[a] = std::min(int(std::floor(s)), n[a] - 2);
+        f[a] = s - b[a];
+    }
+    AffineStencil st;
+    int m = 0;
+    for (int dk = 0; dk < 2; ++dk)
+        for (int dj = 0; dj < 2; ++dj)
+            for (int di = 0; di < 2; ++di, ++m) {
+                const int d[3] = {di, dj, dk};
+                double w[3], dw[3];
+                for (int a = 0; a < 3; ++a) {
+                    w[a] = d[a] ? f[a] : 1.0 - f[a];
+                    dw[a] = (d[a] ? 1.0 : -1.0) * slope[a];
+                }
+                st.index[m] = grid.face_index(c, b[0] + di, b[1] + dj, b[2] + dk);
+                st.weight[m] = w[0] * w[1] * w[2];
+                st.node_g[m] = glm::dvec3(b[0] + di, b[1] + dj, b[2] + dk) + off;
+                st.grad_g[m] = glm::dvec3(dw[0] * w[1] * w[2], w[0] * dw[1] * w[2], w[0] * w[1] * dw[2]);
+            }
+    return st;
+}
+
 bool is_fluid(const std::vector<uint8_t>& type, int cell) { return type[cell] == FLUID; }
 
 // Visits the in-domain face neighbours of cell (i,j,k) (walls are not neighbours, §4.6).
@@ -90,6 +130,24 @@ P2GResult p2g(const Grid& grid, const Particles& particles) {
         for (int a = 0; a < 3; ++a)
             cell[a] = std::clamp(int(std::floor(g[a])), 0, grid.cell_dims()[a] - 1);
         ++r.count[grid.cell_index(cell.x, cell.y, cell.z)];
+    }
+    return r;
+}
+
+P2GResult p2g_apic(const Grid& grid, const Particles& particles) {
+    // Weights and counts as in plain P2G; the momentum is summed again with the affine term.
+    P2GResult r = p2g(grid, Particles{particles.pos, std::vector<glm::dvec3>(particles.pos.size()), {}});
+    for (double& m : r.momentum) m = 0.0;
+    for (size_t p = 0; p < particles.pos.size(); ++p) {
+        const glm::dvec3 g = grid.to_grid(particles.pos[p]);
+        const Affine c = p < particles.affine.size() ? particles.affine[p] : Affine{};
+        for (int comp = 0; comp < 3; ++comp) {
+            const AffineStencil st = affine_stencil(grid, comp, g);
+            for (int m = 0; m < 8; ++m) {
+                const glm::dvec3 to_node = grid.to_world(st.node_g[m]) - particles.pos[p];
+                r.momentum[st.index[m]] += st.weight[m] * (particles.vel[p][comp] + glm::dot(c[comp], to_node));
+            }
+        }
     }
     return r;
 }
@@ -291,21 +349,73 @@ void g2p(const Grid& grid, Particles& particles, const std::vector<double>& vel,
     }
 }
 
-void advect(const Grid& grid, Particles& particles, double dt) {
+glm::dvec3 interpolate_gradient(const Grid& grid, const std::vector<double>& field, int c, glm::dvec3 world_pos) {
+    const AffineStencil st = affine_stencil(grid, c, grid.to_grid(world_pos));
+    glm::dvec3 out(0.0);
+    for (int m = 0; m < 8; ++m) out += field[st.index[m]] * st.grad_g[m];
+    return out / grid.dx; // d/dx = (1/dx) d/dg
+}
+
+void g2p_apic(const Grid& grid, Particles& particles, const std::vector<double>& vel, double max_speed) {
+    particles.affine.resize(particles.pos.size());
+    auto finite = [](const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    for (size_t p = 0; p < particles.pos.size(); ++p) {
+        glm::dvec3 v = interpolate(grid, vel, particles.pos[p]);
+        Affine c;
+        for (int a = 0; a < 3; ++a) c[a] = interpolate_gradient(grid, vel, a, particles.pos[p]);
+        double scale = 1.0;
+        if (!finite(v)) {
+            v = glm::dvec3(0.0);
+            scale = 0.0;
+        } else if (glm::length(v) > max_speed) {
+            scale = max_speed / glm::length(v);
+            v *= scale;
+        }
+        if (!finite(c[0]) || !finite(c[1]) || !finite(c[2])) scale = 0.0;
+        const double norm = std::sqrt(glm::dot(c[0], c[0]) + glm::dot(c[1], c[1]) + glm::dot(c[2], c[2])) * scale;
+        const double limit = max_speed / grid.dx; // |C|_F dx <= max_speed bounds P2G's addends
+        if (norm > limit) scale *= limit / norm;
+        for (int a = 0; a < 3; ++a) c[a] = scale == 0.0 ? glm::dvec3(0.0) : c[a] * scale;
+        particles.vel[p] = v;
+        particles.affine[p] = c;
+    }
+}
+
+glm::dvec3 keep_in_domain(const Grid& grid, glm::dvec3 world_pos) {
     const double eps = 1e-3; // cells; same on every side so the clamp is mirror symmetric
     const glm::dvec3 n(grid.cell_dims());
-    for (size_t p = 0; p < particles.pos.size(); ++p) {
-        glm::dvec3 g = grid.to_grid(particles.pos[p] + dt * particles.vel[p]);
-        g = glm::clamp(g, glm::dvec3(eps), n - eps);
-        particles.pos[p] = grid.to_world(g);
+    return grid.to_world(glm::clamp(grid.to_grid(world_pos), glm::dvec3(eps), n - eps));
+}
+
+void advect(const Grid& grid, Particles& particles, double dt) {
+    for (size_t p = 0; p < particles.pos.size(); ++p)
+        particles.pos[p] = keep_in_domain(grid, particles.pos[p] + dt * particles.vel[p]);
+}
+
+void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>& vel, double dt,
+               Advection scheme) {
+    auto u = [&](const glm::dvec3& x) { return interpolate(grid, vel, keep_in_domain(grid, x)); };
+    for (glm::dvec3& x0 : particles.pos) {
+        const glm::dvec3 k1 = u(x0);
+        const glm::dvec3 k2 = u(x0 + 0.5 * dt * k1);
+        glm::dvec3 x;
+        if (scheme == Advection::rk2) {
+            x = x0 + dt * k2; // midpoint
+        } else {
+            const glm::dvec3 k3 = u(x0 + 0.75 * dt * k2); // Ralston's third order
+            x = x0 + dt * (2.0 / 9.0 * k1 + 1.0 / 3.0 * k2 + 4.0 / 9.0 * k3);
+        }
+        x0 = keep_in_domain(grid, x);
     }
 }
 
 void substep(const Grid& grid, Particles& particles, SubstepState& state, glm::dvec3 gravity,
              double dt, double density, double flip_ratio, int jacobi_iterations, double omega,
-             int extrapolation_layers, double max_speed, bool no_tension) {
+             int extrapolation_layers, double max_speed, bool no_tension, Transfer transfer,
+             Advection advection) {
     if (state.pressure.size() != size_t(grid.cells())) state.pressure.assign(grid.cells(), 0.0);
-    const P2GResult acc = p2g(grid, particles);                                 // 1-2
+    const bool apic = transfer == Transfer::apic;
+    const P2GResult acc = apic ? p2g_apic(grid, particles) : p2g(grid, particles); // 1-2
     const GridForces forces = grid_forces(grid, acc, gravity, dt);              // 3
     const std::vector<uint8_t> type = classify(grid, acc.count);                // 4
     const std::vector<double> b = pressure_rhs(grid, type, forces.vel, density, dt); // 5
@@ -314,8 +424,14 @@ void substep(const Grid& grid, Particles& particles, SubstepState& state, glm::d
                          : solve_pressure_exact(grid, type, b);
     VelocityUpdate upd = velocity_update(grid, type, forces.vel, state.pressure, density, dt); // 7
     extrapolate(grid, upd, extrapolation_layers);                               // 8
-    g2p(grid, particles, upd.vel, forces.vel_old, flip_ratio, max_speed);        // 9
-    advect(grid, particles, dt);                                                // 10
+    if (apic)                                                                   // 9
+        g2p_apic(grid, particles, upd.vel, max_speed);
+    else
+        g2p(grid, particles, upd.vel, forces.vel_old, flip_ratio, max_speed);
+    if (advection == Advection::euler)                                          // 10
+        advect(grid, particles, dt);
+    else
+        advect_rk(grid, particles, upd.vel, dt, advection);
 }
 
 } // namespace pf::ref

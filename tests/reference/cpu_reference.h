@@ -5,6 +5,7 @@
 // exact (unquantised) P2G sums; everything else follows the contract literally.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -46,9 +47,17 @@ struct Grid {
 
 enum CellType : uint8_t { AIR = 0, FLUID = 1, SOLID = 2 };
 
+// APIC affine vectors of one particle: c[a] is the gradient of velocity component a (1/s).
+using Affine = std::array<glm::dvec3, 3>;
+
 struct Particles {
     std::vector<glm::dvec3> pos, vel;
+    std::vector<Affine> affine;  // APIC only: one per particle (empty: all zero)
 };
+
+// pf_transfer and pf_advection, for substep().
+enum class Transfer { pic_flip = 0, apic = 1 };
+enum class Advection { euler = 0, rk2 = 1, rk3 = 2 };
 
 // Face fields: one std::vector<double> of size grid.faces(), u then v then w.
 
@@ -59,6 +68,9 @@ struct P2GResult {
     std::vector<uint32_t> count;
 };
 P2GResult p2g(const Grid& grid, const Particles& particles);
+
+// §4.2 with APIC: each contribution is w·(v_c + c_c·(x_i - x_p)), x_i the node's world position.
+P2GResult p2g_apic(const Grid& grid, const Particles& particles);
 
 // §4.4: FLUID if count > 0, else AIR.
 std::vector<uint8_t> classify(const Grid& grid, const std::vector<uint32_t>& count);
@@ -117,8 +129,24 @@ glm::dvec3 interpolate(const Grid& grid, const std::vector<double>& field, glm::
 void g2p(const Grid& grid, Particles& particles, const std::vector<double>& vel,
          const std::vector<double>& vel_old, double flip_ratio, double max_speed);
 
+// §3 with APIC: the gradient (1/s) of component c's interpolant at world_pos, Σ u_i ∇w_i; 0
+// along an axis where the stencil clamp holds (g - off_c outside [0, N_c - 1]).
+glm::dvec3 interpolate_gradient(const Grid& grid, const std::vector<double>& field, int c, glm::dvec3 world_pos);
+
+// §4.9 with APIC: v = I(u), c_a = ∇I(u_a); non-finite v → v = 0 and C = 0, non-finite C → C = 0;
+// |v| > max_speed → v and C scaled by max_speed/|v|; then |C|_F·dx > max_speed → C scaled to it.
+void g2p_apic(const Grid& grid, Particles& particles, const std::vector<double>& vel, double max_speed);
+
 // §4.10: x += dt·v, then g = clamp(g, ε, n - ε), ε = 1e-3 cells.
 void advect(const Grid& grid, Particles& particles, double dt);
+
+// The wall clamp of every advection scheme: g = clamp(g, ε, n - ε).
+glm::dvec3 keep_in_domain(const Grid& grid, glm::dvec3 world_pos);
+
+// §4.10 Runge-Kutta through the grid velocity (vel, interpolated as in §3): midpoint (rk2) or
+// Ralston's third order (rk3); every stage position and the result go through keep_in_domain.
+void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>& vel, double dt,
+               Advection scheme);
 
 // Pressure (Pa) per cell, the warm start of the next substep's solve. Resized to
 // grid.cells() zeros when its size does not match.
@@ -131,6 +159,7 @@ struct SubstepState {
 void substep(const Grid& grid, Particles& particles, SubstepState& state, glm::dvec3 gravity,
              double dt, double density, double flip_ratio, int jacobi_iterations, double omega,
              int extrapolation_layers, double max_speed,
-             bool no_tension = false);
+             bool no_tension = false, Transfer transfer = Transfer::pic_flip,
+             Advection advection = Advection::euler);
 
 } // namespace pf::ref

@@ -377,6 +377,152 @@ TEST(Reference, AdvectEulerAndClamp) {
     EXPECT_NEAR(g1.z, 5.9, 1e-12);
 }
 
+// A face field sampling the affine velocity V(x) = a + G x (V_c at each face of lattice c).
+struct AffineField {
+    glm::dvec3 a;
+    glm::dmat3 G;  // glm is column-major: G[k][c] = dV_c/dx_k
+    glm::dvec3 at(const glm::dvec3& x) const { return a + G * x; }
+    std::vector<double> faces(const Grid& grid) const {
+        std::vector<double> f(grid.faces());
+        for (int c = 0; c < 3; ++c) {
+            const glm::ivec3 d = grid.face_dims(c);
+            for (int k = 0; k < d.z; ++k)
+                for (int j = 0; j < d.y; ++j)
+                    for (int i = 0; i < d.x; ++i)
+                        f[grid.face_index(c, i, j, k)] =
+                            at(grid.to_world(glm::dvec3(i, j, k) + Grid::face_offset_g(c)))[c];
+        }
+        return f;
+    }
+};
+
+const AffineField kShearAndSpin{glm::dvec3(0.3, -0.2, 0.1),
+                                glm::dmat3(0.5, -1.5, 0.25, 1.5, -0.25, 0.75, -0.5, 0.2, 0.1)};
+
+// Away from the clamped border the trilinear interpolant reproduces an affine field, so APIC's
+// G2P returns its value and, as affine vectors, the rows of its gradient. Where the clamp holds
+// an axis (within half a cell of a wall on a tangential lattice) that gradient entry is 0.
+TEST(Reference, ApicG2PRecoversAnAffineFieldAndItsGradient) {
+    const Grid grid{6, 5, 4, 0.2, glm::dvec3(-0.3, 0.2, 1.0)};
+    const std::vector<double> faces = kShearAndSpin.faces(grid);
+    Particles p = random_particles(grid, 200, glm::dvec3(0.5), glm::dvec3(5.5, 4.5, 3.5), 0.0, 21);
+    g2p_apic(grid, p, faces, 100.0);
+    ASSERT_EQ(p.affine.size(), p.pos.size());
+    for (size_t i = 0; i < p.pos.size(); ++i) {
+        const glm::dvec3 want = kShearAndSpin.at(p.pos[i]);
+        for (int c = 0; c < 3; ++c) {
+            EXPECT_NEAR(p.vel[i][c], want[c], 1e-12);
+            for (int k = 0; k < 3; ++k) EXPECT_NEAR(p.affine[i][c][k], kShearAndSpin.G[k][c], 1e-11);
+        }
+    }
+    // In the clamped band next to the x = 0 wall, the v and w lattices hold x still.
+    Particles edge{{grid.to_world(glm::dvec3(0.2, 2.5, 2.0))}, {glm::dvec3(0.0)}, {}};
+    g2p_apic(grid, edge, faces, 100.0);
+    EXPECT_NEAR(edge.affine[0][0][0], kShearAndSpin.G[0][0], 1e-11);  // u lattice: unclamped in x
+    EXPECT_EQ(edge.affine[0][1][0], 0.0);
+    EXPECT_EQ(edge.affine[0][2][0], 0.0);
+    EXPECT_NEAR(edge.affine[0][1][1], kShearAndSpin.G[1][1], 1e-11);
+}
+
+// The speed clamp scales C with v; |C|_F dx is then limited to max_speed; NaN zeroes both.
+TEST(Reference, ApicG2PClampsAndGuards) {
+    const Grid grid{6, 6, 6, 0.1, glm::dvec3(0.0)};
+    std::vector<double> faces = kShearAndSpin.faces(grid);
+    Particles p{{grid.to_world(glm::dvec3(3.2, 2.7, 3.4))}, {glm::dvec3(0.0)}, {}};
+    Particles free = p;
+    g2p_apic(grid, free, faces, 100.0);
+    const double speed = glm::length(free.vel[0]);
+    Particles slow = p;
+    g2p_apic(grid, slow, faces, 0.5 * speed);
+    EXPECT_NEAR(glm::length(slow.vel[0]), 0.5 * speed, 1e-12);
+    for (int a = 0; a < 3; ++a)
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(slow.affine[0][a][k], 0.5 * free.affine[0][a][k], 1e-12);
+    // A fast spin about the particle: v = 0 there, |C|_F = sqrt(2) 100 / s, limited to max_speed / dx.
+    const glm::dvec3 centre = p.pos[0];
+    const glm::dmat3 spin(0.0, 100.0, 0.0, -100.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+    const AffineField vortex{-(spin * centre), spin};
+    Particles steep = p;
+    g2p_apic(grid, steep, vortex.faces(grid), 1.0);
+    double norm2 = 0;
+    for (const glm::dvec3& c : steep.affine[0]) norm2 += glm::dot(c, c);
+    EXPECT_NEAR(std::sqrt(norm2) * grid.dx, 1.0, 1e-12);
+    EXPECT_NEAR(steep.affine[0][1][0] / steep.affine[0][0][1], -1.0, 1e-12);  // still a rotation
+    EXPECT_LT(glm::length(steep.vel[0]), 1e-12);
+    std::fill(faces.begin(), faces.begin() + grid.face_count(0), std::numeric_limits<double>::quiet_NaN());
+    g2p_apic(grid, p, faces, 100.0);
+    EXPECT_EQ(p.vel[0], glm::dvec3(0.0));
+    for (const glm::dvec3& c : p.affine[0]) EXPECT_EQ(c, glm::dvec3(0.0));
+}
+
+// APIC's P2G is affine-exact: particles anywhere that carry an affine field (v = V(x_p), C = G)
+// hand every face they reach the field's value there, M / W = V_c(x_i), however unevenly they
+// are spread. Plain PIC's P2G only gets the average of the particles' velocities.
+TEST(Reference, ApicP2GTransfersAnAffineFieldExactly) {
+    const Grid grid{6, 5, 4, 0.2, glm::dvec3(-0.3, 0.2, 1.0)};
+    Particles p = random_particles(grid, 60, glm::dvec3(0.0), glm::dvec3(6.0, 5.0, 4.0), 0.0, 23);
+    Affine c;
+    for (int a = 0; a < 3; ++a) c[a] = glm::dvec3(kShearAndSpin.G[0][a], kShearAndSpin.G[1][a], kShearAndSpin.G[2][a]);
+    for (size_t i = 0; i < p.pos.size(); ++i) {
+        p.vel[i] = kShearAndSpin.at(p.pos[i]);
+        p.affine.push_back(c);
+    }
+    const P2GResult apic = p2g_apic(grid, p), pic = p2g(grid, p);
+    const std::vector<double> want = kShearAndSpin.faces(grid);
+    double worst_apic = 0, worst_pic = 0;
+    for (int f = 0; f < grid.faces(); ++f) {
+        if (!(apic.weight[f] > 0.0)) continue;
+        EXPECT_EQ(apic.weight[f], pic.weight[f]);
+        worst_apic = std::max(worst_apic, std::abs(apic.momentum[f] / apic.weight[f] - want[f]));
+        worst_pic = std::max(worst_pic, std::abs(pic.momentum[f] / pic.weight[f] - want[f]));
+    }
+    EXPECT_LT(worst_apic, 1e-12);
+    EXPECT_GT(worst_pic, 0.05);  // the same particles through plain P2G (the test can fail)
+    EXPECT_EQ(apic.count, pic.count);
+}
+
+// On an affine field x' = a + G x (exact in the interior) one Runge-Kutta step of order p is
+// the Taylor polynomial of the flow to degree p: x + h f + h^2/2 G f (+ h^3/6 G^2 f), f = a + G x.
+TEST(Reference, RungeKuttaStepsAreTheTaylorPolynomialsOnAnAffineField) {
+    const Grid grid{8, 8, 8, 0.25, glm::dvec3(-1.0)};
+    const std::vector<double> faces = kShearAndSpin.faces(grid);
+    const Particles start = random_particles(grid, 50, glm::dvec3(2.5), glm::dvec3(5.5), 0.0, 25);
+    const double h = 0.1;
+    for (Advection scheme : {Advection::rk2, Advection::rk3}) {
+        Particles p = start;
+        advect_rk(grid, p, faces, h, scheme);
+        for (size_t i = 0; i < p.pos.size(); ++i) {
+            const glm::dvec3 f = kShearAndSpin.at(start.pos[i]);
+            glm::dvec3 want = start.pos[i] + h * f + h * h / 2.0 * (kShearAndSpin.G * f);
+            if (scheme == Advection::rk3) want += h * h * h / 6.0 * (kShearAndSpin.G * (kShearAndSpin.G * f));
+            for (int a = 0; a < 3; ++a) EXPECT_NEAR(p.pos[i][a], want[a], 1e-13) << int(scheme);
+        }
+    }
+}
+
+// Every stage position and the result go through the wall clamp: a particle rushing at a wall
+// stops at the margin, and its later stages sample the field there, not beyond the wall.
+TEST(Reference, RungeKuttaKeepsStagesInsideTheDomain) {
+    const Grid grid{4, 4, 4, 0.5, glm::dvec3(0.0)};
+    std::vector<double> faces(grid.faces(), 0.0);
+    // u grows towards the x = 4 wall; a stage beyond the wall would sample the clamped value.
+    for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i <= 4; ++i) faces[grid.face_index(0, i, j, k)] = 10.0 + i;
+    for (Advection scheme : {Advection::rk2, Advection::rk3}) {
+        Particles p{{grid.to_world(glm::dvec3(3.5, 2.0, 2.0))}, {glm::dvec3(0.0)}, {}};
+        advect_rk(grid, p, faces, 1.0, scheme);
+        EXPECT_NEAR(grid.to_grid(p.pos[0]).x, 4.0 - 1e-3, 1e-12);
+        EXPECT_NEAR(grid.to_grid(p.pos[0]).y, 2.0, 1e-12);
+    }
+    // Midpoint from g = 1.2 with dt such that the half step lands beyond the wall: the stage is
+    // clamped to 4 - eps, where u = 10 + 4 - eps (in grid units 2 (14 - eps) per second).
+    Particles p{{grid.to_world(glm::dvec3(1.2, 2.0, 2.0))}, {glm::dvec3(0.0)}, {}};
+    const double dt = 0.3;  // half step: 1.2 + 0.15 * 11.2 / 0.5 = 4.56 > 4
+    advect_rk(grid, p, faces, dt, Advection::rk2);
+    const double k2 = 10.0 + (4.0 - 1e-3);
+    EXPECT_NEAR(grid.to_grid(p.pos[0]).x, std::min(1.2 + dt * k2 / 0.5, 4.0 - 1e-3), 1e-12);
+}
+
 // A blob far from walls in free fall: uniform velocity is divergence free, so pressure is
 // ~0 and every particle (PIC and FLIP alike) just gains dt·g.
 TEST(Reference, FreeFallBlobGainsGravity) {
