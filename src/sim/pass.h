@@ -1,7 +1,8 @@
 // A compute pass described as data: the program, the buffer on every storage slot it uses,
-// its size (invocations, or an indirect-argument record written on the GPU) and the entry of
-// the per-pass statistics list it counts towards. PassRunner binds everything a pass names on
-// every dispatch, so no pass depends on bindings an earlier one left behind.
+// the value of every explicit-location uniform it uses, its size (invocations, or an
+// indirect-argument record written on the GPU) and the entry of the per-pass statistics list it
+// counts towards. PassRunner binds and sets everything a pass names on every dispatch, so no
+// pass depends on bindings or uniform values an earlier one left behind.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -42,6 +43,61 @@ private:
     uint32_t count_ = 0;
 };
 
+// One explicit-location uniform value (`layout(location = N) uniform ...` in the kernel).
+struct Uniform {
+    enum class Kind : uint8_t { uint1, float1, ivec4, vec4 };
+    GLint location = -1;
+    Kind kind = Kind::uint1;
+    union {
+        uint32_t u;
+        float f;
+        int32_t i[4];
+        float v[4];
+    } value{};
+
+    static Uniform uint1(GLint location, uint32_t v) {
+        Uniform u{location, Kind::uint1, {}};
+        u.value.u = v;
+        return u;
+    }
+    static Uniform float1(GLint location, float v) {
+        Uniform u{location, Kind::float1, {}};
+        u.value.f = v;
+        return u;
+    }
+    static Uniform ivec4(GLint location, int32_t x, int32_t y, int32_t z, int32_t w) {
+        Uniform u{location, Kind::ivec4, {}};
+        u.value.i[0] = x, u.value.i[1] = y, u.value.i[2] = z, u.value.i[3] = w;
+        return u;
+    }
+    static Uniform vec4(GLint location, float x, float y, float z, float w) {
+        Uniform u{location, Kind::vec4, {}};
+        u.value.v[0] = x, u.value.v[1] = y, u.value.v[2] = z, u.value.v[3] = w;
+        return u;
+    }
+};
+
+// The uniform values of one pass (at most kMaxUniforms).
+class Uniforms {
+public:
+    static constexpr size_t kMaxUniforms = 6;
+    Uniforms() = default;
+    Uniforms(std::initializer_list<Uniform> values) {
+        for (const Uniform& u : values) values_[count_++] = u;  // PassRunner rejects count_ > kMaxUniforms
+    }
+    const Uniform* begin() const { return values_.data(); }
+    const Uniform* end() const { return values_.data() + count_; }
+    uint32_t mask() const {
+        uint32_t m = 0;
+        for (const Uniform& u : *this) m |= u.location >= 0 && u.location < 32 ? 1u << u.location : 0u;
+        return m;
+    }
+
+private:
+    std::array<Uniform, kMaxUniforms> values_{};
+    uint32_t count_ = 0;
+};
+
 // Indirect dispatch arguments: three uints (groups x, y, z) at `offset` in `buffer`, written by
 // an earlier pass (solvers write zero groups once they have converged).
 struct Indirect {
@@ -55,6 +111,7 @@ struct Pass {
     uint64_t invocations = 0;  // direct dispatch: one invocation per item (0: skipped)
     Bindings binds;
     Indirect indirect{};       // when indirect.buffer is set, invocations is ignored
+    Uniforms uniforms{};
 };
 
 }  // namespace pf

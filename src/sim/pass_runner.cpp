@@ -10,7 +10,8 @@ int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
 
 PassRunner::PassRunner(const gl::Api& gl, const Log& log, const gl::Buffer& uniforms, GLuint uniform_slot)
     : gl_(gl), log_(log), uniforms_(uniforms), uniform_slot_(uniform_slot), programs_(gl), timers_(gl),
-      used_slots_(size_t(gl::ProgramId::count), 0u), reported_(size_t(gl::ProgramId::count), false) {
+      used_slots_(size_t(gl::ProgramId::count), 0u), used_uniforms_(size_t(gl::ProgramId::count), 0u),
+      reported_(size_t(gl::ProgramId::count), false) {
     gl_.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups_x_);
 }
 
@@ -38,6 +39,17 @@ std::string PassRunner::prepare(gl::ProgramId id) {
         if (slot >= 0 && slot < 32) mask |= 1u << slot;
     }
     used_slots_[size_t(id)] = mask;
+    // The default-block uniforms the linker kept, by explicit location (block members have none).
+    GLint uniforms = 0;
+    gl_.GetProgramInterfaceiv(p, GL_UNIFORM, GL_ACTIVE_RESOURCES, &uniforms);
+    uint32_t locations = 0;
+    for (GLint u = 0; u < uniforms; ++u) {
+        const GLenum props[2] = {GL_LOCATION, GL_BLOCK_INDEX};
+        GLint values[2] = {-1, -1};
+        gl_.GetProgramResourceiv(p, GL_UNIFORM, GLuint(u), 2, props, 2, nullptr, values);
+        if (values[1] == -1 && values[0] >= 0 && values[0] < 32) locations |= 1u << values[0];
+    }
+    used_uniforms_[size_t(id)] = locations;
     return {};
 }
 
@@ -67,17 +79,19 @@ void PassRunner::run(const Pass& pass) {
     const GLuint program = programs_.built(pass.program);
     const size_t pid = size_t(pass.program);
     const uint32_t missing = used_slots_[pid] & ~pass.binds.mask();
-    if (!program || missing) {
+    const uint32_t unset = used_uniforms_[pid] & ~pass.uniforms.mask();
+    if (!program || missing || unset) {
         ++binding_errors_;
         if (!reported_[pid]) {
             reported_[pid] = true;
-            log_.error(PF_ERROR_INVALID_STATE,
-                       std::string("internal: pass ") + gl::program_info(pass.program).id +
-                           (program ? " leaves storage slots unbound (mask " + gl::hex(missing) + ")"
-                                    : " was run before its program was prepared"));
+            std::string what = !program ? " was run before its program was prepared"
+                               : missing ? " leaves storage slots unbound (mask " + gl::hex(missing) + ")"
+                                         : " leaves uniform locations unset (mask " + gl::hex(unset) + ")";
+            log_.error(PF_ERROR_INVALID_STATE, std::string("internal: pass ") + gl::program_info(pass.program).id + what);
         }
         if (!program) return;
     }
+    set_uniforms(program, pid, pass.uniforms);
     gl_.UseProgram(program);
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, uniform_slot_, uniforms_.id());
     for (const Bind& b : pass.binds) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b.slot, b.buffer->id());
@@ -92,6 +106,22 @@ void PassRunner::run(const Pass& pass) {
     }
     // Every pass reads what the previous one wrote; indirect arguments are written by passes too.
     gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+}
+
+void PassRunner::set_uniforms(GLuint program, size_t pid, const Uniforms& uniforms) {
+    for (const Uniform& u : uniforms) {
+        if (u.location < 0 || u.location >= 32 || !(used_uniforms_[pid] & (1u << u.location))) continue;
+        switch (u.kind) {
+            case Uniform::Kind::uint1: gl_.ProgramUniform1ui(program, u.location, u.value.u); break;
+            case Uniform::Kind::float1: gl_.ProgramUniform1f(program, u.location, u.value.f); break;
+            case Uniform::Kind::ivec4:
+                gl_.ProgramUniform4i(program, u.location, u.value.i[0], u.value.i[1], u.value.i[2], u.value.i[3]);
+                break;
+            case Uniform::Kind::vec4:
+                gl_.ProgramUniform4f(program, u.location, u.value.v[0], u.value.v[1], u.value.v[2], u.value.v[3]);
+                break;
+        }
+    }
 }
 
 }  // namespace pf

@@ -3,10 +3,11 @@
 // dispatch and times it. Timing follows the statistics list: consecutive passes of one entry
 // share a pair of GPU timestamps, a new entry starts a new pair.
 //
-// The runner checks each pass against its program: the storage slots the linked program
-// actually uses (queried from the GL) must all be bound by the pass. A missing binding is a
-// bug in pflip; it is logged once per program and counted (binding_errors(), asserted to be
-// 0 by the tests).
+// The runner checks each pass against its program: the storage slots and the explicit-location
+// uniforms the linked program actually uses (queried from the GL) must all be bound and set by
+// the pass. A missing one is a bug in pflip; it is logged once per program and counted
+// (binding_errors(), asserted to be 0 by the tests). Uniform values a pass names that the
+// linker removed are skipped (setting them would be a GL error on drivers that remove them).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -43,7 +44,7 @@ public:
 
     // Builds `id` (once) and learns which storage slots it uses. Empty string on success.
     std::string prepare(gl::ProgramId id);
-    // GL name of a prepared program (for glProgramUniform*), 0 if not prepared.
+    // GL name of a prepared program, 0 if not prepared.
     GLuint program(gl::ProgramId id) const { return programs_.built(id); }
 
     // Starts a step: clears the dispatch counts and opens a timing slot.
@@ -65,7 +66,10 @@ private:
     gl::ProgramCache programs_;
     gl::TimerRing timers_;
     std::vector<Stat> stats_;
+    void set_uniforms(GLuint program, size_t pid, const Uniforms& uniforms);
+
     std::vector<uint32_t> used_slots_;   // per ProgramId: bit mask of storage slots in use
+    std::vector<uint32_t> used_uniforms_;  // per ProgramId: bit mask of explicit uniform locations in use
     std::vector<bool> reported_;         // per ProgramId: a binding error was logged
     GLint max_groups_x_ = 65535;
     bool step_open_ = false;

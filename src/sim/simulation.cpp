@@ -212,10 +212,8 @@ void Simulation::zero_affine(uint32_t first, uint32_t count) {
 }
 
 void Simulation::fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat) {
-    const GLuint p = runner_->program(ProgramId::fill);
-    gl_.ProgramUniform1ui(p, PF_LOC_FILL_COUNT, words);
-    gl_.ProgramUniform1ui(p, PF_LOC_FILL_VALUE, value);
-    runner_->run({ProgramId::fill, stat, words, {{PF_SLOT_FILL, &buffer}}});
+    runner_->run({ProgramId::fill, stat, words, {{PF_SLOT_FILL, &buffer}}, {},
+                  {Uniform::uint1(PF_LOC_FILL_COUNT, words), Uniform::uint1(PF_LOC_FILL_VALUE, value)}});
 }
 
 void Simulation::upload_uniforms(float dt) {
@@ -471,13 +469,13 @@ pf_result Simulation::push(const float center[3], float radius, const float dv[3
     gl::StateGuard guard(gl_, gl_state_);
     if (std::string error = runner_->prepare(ProgramId::push); !error.empty())
         return log_.error(PF_ERROR_SHADER_COMPILE, "pf_push: " + error);
-    const GLuint p = runner_->program(ProgramId::push);
-    gl_.ProgramUniform4f(p, PF_LOC_PUSH_CENTER_RADIUS, center[0], center[1], center[2], radius);
-    gl_.ProgramUniform4f(p, PF_LOC_PUSH_DV_MAX_SPEED, dv[0], dv[1], dv[2], desc_.max_speed);
-    gl_.ProgramUniform1ui(p, PF_LOC_PUSH_COUNT, particle_count_);
     // Between steps: neither timed nor counted in a step's statistics.
     runner_->run({ProgramId::push, stat_.g2p, particle_count_,
-                  {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_STATUS, &status_}}});
+                  {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_STATUS, &status_}},
+                  {},
+                  {Uniform::vec4(PF_LOC_PUSH_CENTER_RADIUS, center[0], center[1], center[2], radius),
+                   Uniform::vec4(PF_LOC_PUSH_DV_MAX_SPEED, dv[0], dv[1], dv[2], desc_.max_speed),
+                   Uniform::uint1(PF_LOC_PUSH_COUNT, particle_count_)}});
     // The push may make particles faster than the last readback knew: CFL must see it.
     const float known = added_at_step_ > status_step_ ? std::max(added_speed_, gpu_max_speed_) : gpu_max_speed_;
     added_speed_ = std::min(desc_.max_speed, known + std::sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]));

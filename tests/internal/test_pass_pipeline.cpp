@@ -1,6 +1,7 @@
 // The pass pipeline's own contracts: the uniform block declared once has the same member
-// offsets in C++ and in the GL's std140 layout; every pass binds every storage slot its program
-// uses (checked by the runner against the linked program); a pass that forgets one is caught.
+// offsets in C++ and in the GL's std140 layout; every pass binds every storage slot and sets
+// every explicit-location uniform its program uses (checked by the runner against the linked
+// program); a pass that forgets one is caught.
 #include <cstring>
 
 #include "api/handle.h"
@@ -89,6 +90,14 @@ TEST_F(PassPipeline, AMissingBindingIsCaught) {
     // A pass whose program was never prepared is refused, not dispatched.
     runner.run({gl::ProgramId::advect, stat, 64, {}});
     EXPECT_EQ(runner.binding_errors(), 2u);
+    // The fill kernel reads two uniforms: a pass that sets one of them is caught (the other
+    // would keep whatever value an earlier pass left in the program).
+    ASSERT_EQ(runner.prepare(gl::ProgramId::fill), "");
+    runner.run({gl::ProgramId::fill, stat, 64, {{PF_SLOT_FILL, &a}}, {},
+                {Uniform::uint1(PF_LOC_FILL_COUNT, 64), Uniform::uint1(PF_LOC_FILL_VALUE, 7)}});
+    EXPECT_EQ(runner.binding_errors(), 2u);
+    runner.run({gl::ProgramId::fill, stat, 64, {{PF_SLOT_FILL, &a}}, {}, {Uniform::uint1(PF_LOC_FILL_COUNT, 64)}});
+    EXPECT_EQ(runner.binding_errors(), 3u);
 }
 
 }  // namespace

@@ -54,7 +54,6 @@ pf_result ConjugateGradientSolver::init(const gl::Api& gl, PassRunner& runner, c
     for (ProgramId id : programs) {
         if (!error.empty()) break;
         error = runner.prepare(id);
-        if (error.empty()) control_.set_dims(runner.program(id), grid.size);
     }
     if (error.empty() && stored_) error = stored_->init(gl, runner, control_);
     if (!error.empty()) return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
@@ -75,19 +74,30 @@ void ConjugateGradientSolver::solve(PassRunner& runner, const PressureProblem& p
     gl_->BindBuffer(GL_COPY_WRITE_BUFFER, working_type_.id());
     gl_->CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, GLsizeiptr(grid_.cells) * 4);
     const PressureProblem working{working_type_, problem.rhs, problem.pressure, problem.status, problem.params};
-    const Bindings clamp_binds = {{PF_SLOT_CELL_TYPE, &problem.cell_type},
-                                  {PF_SLOT_SOLVER_X, &problem.pressure},
-                                  {PF_SLOT_SOLVER_STATE, &control_.state()}};
+    const Pass clamp{ProgramId::separation_clamp,
+                     stat_,
+                     grid_.cells,
+                     {{PF_SLOT_CELL_TYPE, &problem.cell_type},
+                      {PF_SLOT_SOLVER_X, &problem.pressure},
+                      {PF_SLOT_SOLVER_STATE, &control_.state()}},
+                     {},
+                     {control_.dims_uniform()}};
     krylov(runner, working, false);
     for (uint32_t round = 0; round < kActiveSetRounds; ++round) {
-        runner.run({ProgramId::separation_active_set, stat_, grid_.cells,
-                    {{PF_SLOT_CELL_TYPE, &problem.cell_type}, {PF_SLOT_RHS, &problem.rhs},
-                     {PF_SLOT_SOLVER_X, &problem.pressure}, {PF_SLOT_SOLVER_WORKING_TYPE, &working_type_},
-                     {PF_SLOT_SOLVER_STATE, &control_.state()}}});
-        runner.run({ProgramId::separation_clamp, stat_, grid_.cells, clamp_binds});
+        runner.run({ProgramId::separation_active_set,
+                    stat_,
+                    grid_.cells,
+                    {{PF_SLOT_CELL_TYPE, &problem.cell_type},
+                     {PF_SLOT_RHS, &problem.rhs},
+                     {PF_SLOT_SOLVER_X, &problem.pressure},
+                     {PF_SLOT_SOLVER_WORKING_TYPE, &working_type_},
+                     {PF_SLOT_SOLVER_STATE, &control_.state()}},
+                    {},
+                    {control_.dims_uniform()}});
+        runner.run(clamp);
         krylov(runner, working, true);
     }
-    runner.run({ProgramId::separation_clamp, stat_, grid_.cells, clamp_binds});
+    runner.run(clamp);
     control_.finish(runner, stat_, problem);
 }
 
@@ -97,31 +107,31 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
     const gl::Buffer& state = control_.state();
     const gl::Buffer& partials = control_.partials();
     const Indirect cells = control_.record(0);
-    for (ProgramId id : {ProgramId::cg_start, ProgramId::cg_alpha, ProgramId::cg_beta})
-        gl_->ProgramUniform1ui(runner.program(id), PF_LOC_SOLVER_COUNT, control_.partial_count());
+    const Uniform dims = control_.dims_uniform();
     auto scalars = [&](ProgramId id) {
-        runner.run({id, stat_, PF_WORKGROUP_SIZE, {{PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state}}});
+        runner.run({id, stat_, PF_WORKGROUP_SIZE, {{PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state}},
+                    {}, {Uniform::uint1(PF_LOC_SOLVER_COUNT, control_.partial_count())}});
     };
     auto precondition = [&] {
         stored_->apply(runner, precondition_stat_, type, r_, z_);
         runner.run({ProgramId::cg_zstats, stat_, 0,
                     {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_R, &r_}, {PF_SLOT_SOLVER_Z, &z_},
                      {PF_SLOT_SOLVER_PARTIALS, &partials}},
-                    cells});
+                    cells, {dims}});
     };
     auto direction = [&] {
-        const gl::Buffer& source = stored_ ? z_ : r_;
+        const Bind source = stored_ ? Bind{PF_SLOT_SOLVER_Z, &z_} : Bind{PF_SLOT_SOLVER_R, &r_};
         runner.run({direction_program(), stat_, 0,
-                    {{PF_SLOT_CELL_TYPE, &type}, {stored_ ? GLuint(PF_SLOT_SOLVER_Z) : GLuint(PF_SLOT_SOLVER_R), &source},
-                     {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_STATE, &state}},
-                    cells});
+                    {{PF_SLOT_CELL_TYPE, &type}, source, {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_STATE, &state}},
+                    cells, {dims}});
     };
 
     control_.begin(runner, stat_, problem, another_round);
     if (stored_) stored_->begin(runner, precondition_stat_, type);
     runner.run({init_program(), stat_, grid_.cells,
                 {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_RHS, &problem.rhs}, {PF_SLOT_SOLVER_X, &x},
-                 {PF_SLOT_SOLVER_R, &r_}, {PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state}}});
+                 {PF_SLOT_SOLVER_R, &r_}, {PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state}},
+                {}, {dims}});
     if (stored_) precondition();
     scalars(ProgramId::cg_start);
     direction();
@@ -129,13 +139,13 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
         runner.run({ProgramId::cg_matvec, stat_, 0,
                     {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_Q, &q_},
                      {PF_SLOT_SOLVER_PARTIALS, &partials}},
-                    cells});
+                    cells, {dims}});
         scalars(ProgramId::cg_alpha);
         runner.run({update_program(), stat_, 0,
                     {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_X, &x}, {PF_SLOT_SOLVER_R, &r_},
                      {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_Q, &q_}, {PF_SLOT_SOLVER_PARTIALS, &partials},
                      {PF_SLOT_SOLVER_STATE, &state}},
-                    cells});
+                    cells, {dims}});
         if (stored_) precondition();
         scalars(ProgramId::cg_beta);
         if (k + 1 < problem.params.pressure_iterations) direction();

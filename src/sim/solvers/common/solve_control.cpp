@@ -12,7 +12,6 @@ int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
 }  // namespace
 
 std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid) {
-    gl_ = &gl;
     grid_ = grid;
     gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups_x_);
     std::vector<uint32_t> zeros(PF_SOLVER_WORDS, 0u);
@@ -26,7 +25,6 @@ std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const Solv
     for (gl::ProgramId id : {gl::ProgramId::solver_rhs_stats, gl::ProgramId::solver_begin, gl::ProgramId::solver_residual,
                              gl::ProgramId::solver_check, gl::ProgramId::solver_report}) {
         if (std::string error = runner.prepare(id); !error.empty()) return error;
-        set_dims(runner.program(id), grid.size);
     }
     return {};
 }
@@ -45,8 +43,8 @@ uint32_t SolveControl::add_record(uint64_t invocations) {
 
 Indirect SolveControl::record(uint32_t k) const { return Indirect{&state_, (PF_SOLVER_SCALARS + 4 * k) * 4}; }
 
-void SolveControl::set_dims(GLuint program, glm::ivec3 dims) const {
-    gl_->ProgramUniform4i(program, PF_LOC_SOLVER_DIMS, dims.x, dims.y, dims.z, dims.x * dims.y * dims.z);
+Uniform SolveControl::dims_uniform(glm::ivec3 dims) {
+    return Uniform::ivec4(PF_LOC_SOLVER_DIMS, dims.x, dims.y, dims.z, dims.x * dims.y * dims.z);
 }
 
 void SolveControl::begin(PassRunner& runner, StatId stat, const PressureProblem& problem, bool another_round) {
@@ -54,15 +52,17 @@ void SolveControl::begin(PassRunner& runner, StatId stat, const PressureProblem&
                 stat,
                 grid_.cells,
                 {{PF_SLOT_CELL_TYPE, &problem.cell_type}, {PF_SLOT_RHS, &problem.rhs},
-                 {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}}});
-    const GLuint begin = runner.program(gl::ProgramId::solver_begin);
-    gl_->ProgramUniform1ui(begin, PF_LOC_SOLVER_COUNT, partials_);
-    gl_->ProgramUniform1f(begin, PF_LOC_SOLVER_TOLERANCE, problem.params.pressure_tolerance);
-    gl_->ProgramUniform1ui(begin, PF_LOC_SOLVER_ITERATIONS, another_round ? 1u : 0u);
+                 {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}},
+                {},
+                {dims_uniform()}});
     runner.run({gl::ProgramId::solver_begin,
                 stat,
                 PF_WORKGROUP_SIZE,
-                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}, {PF_SLOT_SOLVER_STATE, &state_}}});
+                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}, {PF_SLOT_SOLVER_STATE, &state_}},
+                {},
+                {Uniform::uint1(PF_LOC_SOLVER_COUNT, partials_),
+                 Uniform::float1(PF_LOC_SOLVER_TOLERANCE, problem.params.pressure_tolerance),
+                 Uniform::uint1(PF_LOC_SOLVER_ITERATIONS, another_round ? 1u : 0u)}});
 }
 
 void SolveControl::residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct) {
@@ -74,30 +74,30 @@ void SolveControl::residual(PassRunner& runner, StatId stat, const PressureProbl
                  {PF_SLOT_SOLVER_X, &problem.pressure},
                  {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
                  {PF_SLOT_SOLVER_STATE, &state_}},
-                direct ? Indirect{} : record(0)});
+                direct ? Indirect{} : record(0),
+                {dims_uniform()}});
 }
 
 void SolveControl::check(PassRunner& runner, StatId stat, const PressureProblem& problem, uint32_t iterations) {
     residual(runner, stat, problem, false);
-    const GLuint check = runner.program(gl::ProgramId::solver_check);
-    gl_->ProgramUniform1ui(check, PF_LOC_SOLVER_COUNT, partials_);
-    gl_->ProgramUniform1ui(check, PF_LOC_SOLVER_ITERATIONS, iterations);
     runner.run({gl::ProgramId::solver_check,
                 stat,
                 PF_WORKGROUP_SIZE,
-                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}, {PF_SLOT_SOLVER_STATE, &state_}}});
+                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}, {PF_SLOT_SOLVER_STATE, &state_}},
+                {},
+                {Uniform::uint1(PF_LOC_SOLVER_COUNT, partials_), Uniform::uint1(PF_LOC_SOLVER_ITERATIONS, iterations)}});
 }
 
 void SolveControl::finish(PassRunner& runner, StatId stat, const PressureProblem& problem) {
     residual(runner, stat, problem, true);
-    const GLuint report = runner.program(gl::ProgramId::solver_report);
-    gl_->ProgramUniform1ui(report, PF_LOC_SOLVER_COUNT, partials_);
     runner.run({gl::ProgramId::solver_report,
                 stat,
                 PF_WORKGROUP_SIZE,
                 {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
                  {PF_SLOT_SOLVER_STATE, &state_},
-                 {PF_SLOT_SOLVER_STATUS, &problem.status}}});
+                 {PF_SLOT_SOLVER_STATUS, &problem.status}},
+                {},
+                {Uniform::uint1(PF_LOC_SOLVER_COUNT, partials_)}});
 }
 
 }  // namespace pf

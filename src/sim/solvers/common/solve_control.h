@@ -39,14 +39,14 @@ public:
 
     const gl::Buffer& state() const { return state_; }
     const gl::Buffer& partials() const { return partials_buffer_; }
-    // Sets the level-size uniform of a solver program (all solver kernels have one).
-    void set_dims(GLuint program, glm::ivec3 dims) const;
+    // The level-size uniform of the solver kernels that work on cells.
+    static Uniform dims_uniform(glm::ivec3 dims);
+    Uniform dims_uniform() const { return dims_uniform(grid_.size); }
     glm::ivec3 dims() const { return grid_.size; }
 
 private:
     void residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct);
 
-    const gl::Api* gl_ = nullptr;
     SolverGrid grid_{};
     gl::Buffer state_, partials_buffer_;
     uint32_t partials_ = 0;

@@ -14,14 +14,12 @@ pf_result JacobiSolver::init(const gl::Api& gl, PassRunner& runner, const Solver
     std::string error = control_.init(gl, runner, grid);
     if (error.empty()) error = runner.prepare(gl::ProgramId::jacobi);
     if (!error.empty()) return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    control_.set_dims(runner.program(gl::ProgramId::jacobi), grid.size);
     stat_ = runner.add_stat("jacobi", PF_PASS_PRESSURE_SOLVE);
     return PF_OK;
 }
 
 void JacobiSolver::solve(PassRunner& runner, const PressureProblem& problem) {
     const uint32_t sweeps = problem.params.pressure_iterations;
-    gl_->ProgramUniform1f(runner.program(gl::ProgramId::jacobi), PF_LOC_JACOBI_OMEGA, problem.params.jacobi_omega);
     control_.begin(runner, stat_, problem);
     // Sweeps alternate direction; an odd count starts from a copy in the scratch buffer, so
     // every sweep with the parity of the last one writes the problem's pressure buffer. Checks
@@ -44,7 +42,8 @@ void JacobiSolver::solve(PassRunner& runner, const PressureProblem& problem) {
                      {PF_SLOT_PRESSURE, src},
                      {PF_SLOT_PRESSURE_OUT, dst},
                      {PF_SLOT_SOLVER_STATE, &control_.state()}},
-                    control_.record(0)});
+                    control_.record(0),
+                    {control_.dims_uniform(), Uniform::float1(PF_LOC_JACOBI_OMEGA, problem.params.jacobi_omega)}});
         std::swap(src, dst);
         if (k < sweeps && k % kCheckEvery == sweeps % kCheckEvery) {
             control_.check(runner, stat_, problem, k - checked);

@@ -38,9 +38,8 @@ private:
     const gl::Buffer& e_of(size_t l) const { return l == 0 ? *fine_e_ : levels_[l].e; }
     void smooth(PassRunner& runner, StatId stat, size_t l, bool from_zero, bool red_first);
     void vcycle(PassRunner& runner, StatId stat, size_t l);
-    void set_dims(GLuint program, const Level& level, const Level* coarse) const;
+    static Uniform coarse_dims(const Level& coarse);
 
-    const gl::Api* gl_ = nullptr;
     const SolveControl* control_ = nullptr;
     std::vector<Level> levels_;
     const gl::Buffer* fine_type_ = nullptr;

@@ -18,16 +18,12 @@ public:
     void solve(PassRunner& runner, const PressureProblem& problem) override;
 
 private:
-    const gl::Api* gl_ = nullptr;
+    // One red and one black half-sweep; skipped (indirectly) once the solve has converged.
+    void sweep(PassRunner& runner, const PressureProblem& problem);
+
     SolverGrid grid_{};
     SolveControl control_;
     StatId stat_ = 0;
 };
-
-// One red and one black sweep of projected (when separation is on) SOR over the fine grid,
-// dispatched through `indirect` (or directly when it has no buffer). Shared by the red-black
-// solver and the Krylov solvers' separation step.
-void red_black_sweep(PassRunner& runner, const gl::Api& gl, StatId stat, const PressureProblem& problem,
-                     const SolveControl& control, float omega, Indirect indirect);
 
 }  // namespace pf
