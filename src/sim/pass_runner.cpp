@@ -92,6 +92,10 @@ void PassRunner::run(const Pass& pass) {
         if (!program) return;
     }
     set_uniforms(program, pid, pass.uniforms);
+    // Every pass may read what earlier passes wrote; an indirect one also reads its workgroup
+    // counts, which a pass may have written (the barrier goes before the dispatch, so a copy
+    // or readback after the last pass brings its own: copy() and the step's end).
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (pass.indirect.buffer ? GL_COMMAND_BARRIER_BIT : 0));
     gl_.UseProgram(program);
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, uniform_slot_, uniforms_.id());
     for (const Bind& b : pass.binds) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b.slot, b.buffer->id());
@@ -104,8 +108,13 @@ void PassRunner::run(const Pass& pass) {
         const int64_t gy = ceil_div(groups, gx);
         gl_.DispatchCompute(GLuint(gx), GLuint(gy), 1);
     }
-    // Every pass reads what the previous one wrote; indirect arguments are written by passes too.
-    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+}
+
+void PassRunner::copy(const gl::Buffer& src, const gl::Buffer& dst, size_t bytes) {
+    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // copies read what shaders wrote
+    gl_.BindBuffer(GL_COPY_READ_BUFFER, src.id());
+    gl_.BindBuffer(GL_COPY_WRITE_BUFFER, dst.id());
+    gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, GLsizeiptr(bytes));
 }
 
 void PassRunner::set_uniforms(GLuint program, size_t pid, const Uniforms& uniforms) {

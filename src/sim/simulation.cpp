@@ -257,7 +257,9 @@ void Simulation::run_substep() {
     r.run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
             {PF_SLOT_PRESSURE, &pressure_}}});
-    solver_->solve(r, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params});
+    // What this solver needed recently (a readback of another solver's step says nothing).
+    const uint32_t recent = recent_solver_ == desc_.params.pressure_solver ? recent_iterations_ : kUnknownIterations;
+    solver_->solve(r, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params, recent});
     r.run({ProgramId::velocity_update, stat_.velocity_update, faces,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
             {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}}});
@@ -313,8 +315,9 @@ pf_result Simulation::step(float frame_dt) {
 
     // The max-speed word restarts every step; flag bits accumulate (a pf_push between steps
     // may have set one) until pf_clear_flags.
-    const uint32_t zeros[3] = {0, 0, 0};  // max speed, solver iterations, solver residual
-    static_assert(PF_STATUS_SOLVER_ITERATIONS == PF_STATUS_MAX_SPEED + 1 && PF_STATUS_SOLVER_RESIDUAL == PF_STATUS_MAX_SPEED + 2,
+    const uint32_t zeros[4] = {0, 0, 0, 0};  // max speed, solver iterations, residual, round iterations
+    static_assert(PF_STATUS_SOLVER_ITERATIONS == PF_STATUS_MAX_SPEED + 1 && PF_STATUS_SOLVER_RESIDUAL == PF_STATUS_MAX_SPEED + 2 &&
+                      PF_STATUS_SOLVER_ROUND_ITERATIONS == PF_STATUS_MAX_SPEED + 3,
                   "the per-step status words are contiguous");
     status_.upload(PF_STATUS_MAX_SPEED * 4, sizeof(zeros), zeros);
     upload_uniforms(frame_dt / float(substeps));
@@ -324,11 +327,10 @@ pf_result Simulation::step(float frame_dt) {
     // Status readback ring: copy now, read once the fence has passed (never wait).
     const int slot = int(steps_ % kReadbackSlots);
     if (fences_[slot]) gl_.DeleteSync(fences_[slot]);  // too old to matter: dropped
-    gl_.BindBuffer(GL_COPY_READ_BUFFER, status_.id());
-    gl_.BindBuffer(GL_COPY_WRITE_BUFFER, readback_[slot].id());
-    gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, PF_STATUS_WORDS * 4);
+    runner_->copy(status_, readback_[slot], PF_STATUS_WORDS * 4);
     fences_[slot] = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     fence_step_[slot] = steps_;
+    fence_solver_[slot] = desc_.params.pressure_solver;
 
     // Engines may read the particle buffers as vertex data, SSBOs or by copying.
     gl_.MemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
@@ -397,6 +399,8 @@ void Simulation::poll_status() const {
             status_step_ = fence_step_[s];
             std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
             solver_iterations_ = words[PF_STATUS_SOLVER_ITERATIONS];
+            recent_iterations_ = words[PF_STATUS_SOLVER_ROUND_ITERATIONS];
+            recent_solver_ = fence_solver_[s];
             std::memcpy(&solver_residual_, &words[PF_STATUS_SOLVER_RESIDUAL], sizeof(float));
         }
     }

@@ -95,6 +95,43 @@ TEST_F(PassStats, SolverIterationsAndResidualAreReported) {
     }
 }
 
+// Issued iterations follow what the solver needed a few steps ago: once that is read back,
+// a solve with a cap of 400 issues a few dozen CG iterations (5 dispatches each), not 400,
+// and still meets its tolerance.
+TEST_F(PassStats, IssuedIterationsFollowTheReadBackNeed) {
+    pf_sim_desc d = test_desc(12, 12, 12, 0.05f);
+    d.params.pressure_solver = PF_PRESSURE_SOLVER_PCG;
+    d.params.pressure_tolerance = 1e-4f;
+    d.params.pressure_iterations = 400;
+    d.params.separation = 0;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.6f, 0.3f, 0.6f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    auto pcg_dispatches_per_substep = [&] {
+        const auto list = pass_list(sim.get());
+        pf_stats st{};
+        EXPECT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+        return double(list.at("pcg").dispatches) / st.substeps;
+    };
+    ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+    const double first = pcg_dispatches_per_substep();
+    EXPECT_GT(first, 5.0 * 400) << "nothing read back yet: the whole cap is issued";
+    for (int i = 0; i < 6; ++i) {
+        glFinish();  // lets the status readback of the previous step arrive
+        ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+    }
+    const double later = pcg_dispatches_per_substep();
+    glFinish();
+    pf_stats st{};
+    ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+    EXPECT_LT(later, 5.0 * (1.5 * st.solver_iterations + 4) + 30);
+    EXPECT_LT(later, first / 4);
+    EXPECT_LE(st.solver_residual, 1e-4f);
+    RecordProperty("dispatches_first", std::to_string(first));
+    RecordProperty("dispatches_later", std::to_string(later));
+}
+
 TEST_F(PassStats, BadArgumentsAreRefused) {
     SimPtr sim = create(test_desc(8, 8, 8));
     ASSERT_TRUE(sim);

@@ -33,7 +33,14 @@ void main() {
     set_state_float(PF_SOLVER_ALPHA, 0.0);
     set_state_float(PF_SOLVER_BETA, 0.0);
     set_state_float(PF_SOLVER_Z_MEAN, 0.0);
-    if (u_keep_iterations == 0u) state[PF_SOLVER_ITERATIONS] = 0u;
+    if (u_keep_iterations == 0u) {
+        state[PF_SOLVER_ITERATIONS] = 0u;
+        state[PF_SOLVER_ROUND_MAX] = 0u;
+    } else {
+        uint round = state[PF_SOLVER_ITERATIONS] - state[PF_SOLVER_ROUND_START];
+        state[PF_SOLVER_ROUND_MAX] = max(state[PF_SOLVER_ROUND_MAX], round);
+    }
+    state[PF_SOLVER_ROUND_START] = state[PF_SOLVER_ITERATIONS];
     state[PF_SOLVER_CONVERGED] = 0u;
     set_state_float(PF_SOLVER_RESIDUAL, 1.0);
     set_state_float(PF_SOLVER_TOLERANCE, u_tolerance);

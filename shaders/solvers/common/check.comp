@@ -26,6 +26,8 @@ void main() {
     set_state_float(PF_SOLVER_RESIDUAL, rel);
 #if PF_CHECK_FINAL
     atomicMax(status[PF_STATUS_SOLVER_ITERATIONS], state[PF_SOLVER_ITERATIONS]);
+    uint round = state[PF_SOLVER_ITERATIONS] - state[PF_SOLVER_ROUND_START];
+    atomicMax(status[PF_STATUS_SOLVER_ROUND_ITERATIONS], max(state[PF_SOLVER_ROUND_MAX], round));
     atomicMax(status[PF_STATUS_SOLVER_RESIDUAL], floatBitsToUint(rel));  // rel >= 0: bits order like values
 #else
     state[PF_SOLVER_ITERATIONS] += u_iterations;

@@ -21,7 +21,9 @@
 #define PF_SOLVER_TOLERANCE 12   /* float: stop when the relative residual is at or below this */
 #define PF_SOLVER_PARTIALS 13    /* uint: partial sums written by the cell-wide reduction kernels */
 #define PF_SOLVER_RECORDS 14     /* uint: indirect-dispatch records in use */
-#define PF_SOLVER_SCALARS 16     /* words before the first indirect record */
+#define PF_SOLVER_ROUND_START 15 /* uint: ITERATIONS when the current round (of an active-set solve) began */
+#define PF_SOLVER_ROUND_MAX 17   /* uint: most iterations of a finished round of this solve */
+#define PF_SOLVER_SCALARS 20     /* words before the first indirect record (a multiple of 4) */
 
 /* Indirect-dispatch record k: words PF_SOLVER_SCALARS + 4k .. +2 = workgroups (x, y, z); its
  * full size, restored at the start of every solve, at PF_SOLVER_SCALARS + 4 (PF_SOLVER_MAX_RECORDS + k). */

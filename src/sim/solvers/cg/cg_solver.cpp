@@ -38,7 +38,6 @@ ProgramId ConjugateGradientSolver::direction_program() const {
 
 pf_result ConjugateGradientSolver::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid,
                                         const Log& log, const char* fn) {
-    gl_ = &gl;
     grid_ = grid;
     const size_t bytes = size_t(grid.cells) * 4;
     r_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY);
@@ -70,10 +69,9 @@ void ConjugateGradientSolver::solve(PassRunner& runner, const PressureProblem& p
     }
     // Active-set rounds on a working copy of the cell types; the report measures the
     // complementarity residual with the real ones.
-    gl_->BindBuffer(GL_COPY_READ_BUFFER, problem.cell_type.id());
-    gl_->BindBuffer(GL_COPY_WRITE_BUFFER, working_type_.id());
-    gl_->CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, GLsizeiptr(grid_.cells) * 4);
-    const PressureProblem working{working_type_, problem.rhs, problem.pressure, problem.status, problem.params};
+    runner.copy(problem.cell_type, working_type_, size_t(grid_.cells) * 4);
+    const PressureProblem working{working_type_, problem.rhs,    problem.pressure,
+                                  problem.status, problem.params, problem.recent_iterations};
     const Pass clamp{ProgramId::separation_clamp,
                      stat_,
                      grid_.cells,
@@ -135,7 +133,8 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
     if (stored_) precondition();
     scalars(ProgramId::cg_start);
     direction();
-    for (uint32_t k = 0; k < problem.params.pressure_iterations; ++k) {
+    const uint32_t issued = issued_iterations(problem);
+    for (uint32_t k = 0; k < issued; ++k) {
         runner.run({ProgramId::cg_matvec, stat_, 0,
                     {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_Q, &q_},
                      {PF_SLOT_SOLVER_PARTIALS, &partials}},
@@ -148,7 +147,7 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
                     cells, {dims}});
         if (stored_) precondition();
         scalars(ProgramId::cg_beta);
-        if (k + 1 < problem.params.pressure_iterations) direction();
+        if (k + 1 < issued) direction();
     }
 }
 

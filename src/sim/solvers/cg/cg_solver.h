@@ -56,7 +56,6 @@ private:
     Preconditioner kind_;
     const char* name_;
     std::unique_ptr<StoredPreconditioner> stored_;
-    const gl::Api* gl_ = nullptr;
     SolverGrid grid_{};
     SolveControl control_;
     gl::Buffer r_, p_, q_, z_, working_type_;

@@ -8,7 +8,6 @@ namespace pf {
 
 pf_result JacobiSolver::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid, const Log& log,
                              const char* fn) {
-    gl_ = &gl;
     grid_ = grid;
     scratch_ = gl::Buffer(gl, size_t(grid.cells) * 4, GL_DYNAMIC_COPY);
     std::string error = control_.init(gl, runner, grid);
@@ -19,7 +18,7 @@ pf_result JacobiSolver::init(const gl::Api& gl, PassRunner& runner, const Solver
 }
 
 void JacobiSolver::solve(PassRunner& runner, const PressureProblem& problem) {
-    const uint32_t sweeps = problem.params.pressure_iterations;
+    const uint32_t sweeps = issued_iterations(problem);
     control_.begin(runner, stat_, problem);
     // Sweeps alternate direction; an odd count starts from a copy in the scratch buffer, so
     // every sweep with the parity of the last one writes the problem's pressure buffer. Checks
@@ -27,9 +26,7 @@ void JacobiSolver::solve(PassRunner& runner, const PressureProblem& problem) {
     const gl::Buffer* src = &problem.pressure;
     const gl::Buffer* dst = &scratch_;
     if (sweeps % 2 == 1) {
-        gl_->BindBuffer(GL_COPY_READ_BUFFER, problem.pressure.id());
-        gl_->BindBuffer(GL_COPY_WRITE_BUFFER, scratch_.id());
-        gl_->CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, GLsizeiptr(grid_.cells) * 4);
+        runner.copy(problem.pressure, scratch_, size_t(grid_.cells) * 4);
         std::swap(src, dst);
     }
     uint32_t checked = 0;

@@ -17,7 +17,6 @@ public:
     void solve(PassRunner& runner, const PressureProblem& problem) override;
 
 private:
-    const gl::Api* gl_ = nullptr;
     SolverGrid grid_{};
     SolveControl control_;
     gl::Buffer scratch_;

@@ -32,7 +32,7 @@ void RedBlackSolver::sweep(PassRunner& runner, const PressureProblem& problem) {
 }
 
 void RedBlackSolver::solve(PassRunner& runner, const PressureProblem& problem) {
-    const uint32_t iterations = problem.params.pressure_iterations;
+    const uint32_t iterations = issued_iterations(problem);
     control_.begin(runner, stat_, problem);
     uint32_t checked = 0;
     for (uint32_t k = 1; k <= iterations; ++k) {
