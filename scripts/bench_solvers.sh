@@ -14,6 +14,15 @@ run() {  # name, then pf_bench arguments
   "$bin/pf_bench" --warmup 20 --steps 60 --json "$out/$name.json" "$@" > "$out/$name.log" 2>&1 || echo "FAILED: $name"
   grep -E "solver:|wall .* ms/step" "$out/$name.log" | sed "s/^/$name: /"
 }
+if [ "${QUICK:-0}" = 1 ]; then  # the main points only
+  run dam_break_1m_jacobi40 dam_break_1m --solver jacobi --pressure-iterations 40
+  for sep in 0 1; do
+    run dam_break_1m_mgpcg_sep$sep dam_break_1m --solver mgpcg --tolerance 1e-4 --pressure-iterations 40 --separation $sep
+    run dam_break_10m_mgpcg_sep$sep dam_break_10m --solver mgpcg --tolerance 1e-4 --pressure-iterations 40 --separation $sep --steps 30
+  done
+  run dam_break_1m_pcg_sep0 dam_break_1m --solver pcg --tolerance 1e-4 --pressure-iterations 400 --separation 0
+  exit 0
+fi
 for scene in dam_break_1m; do
   run "${scene}_jacobi40" "$scene" --solver jacobi --pressure-iterations 40
   for sep in 1 0; do

@@ -2,6 +2,6 @@
 #ifndef PF_MULTIGRID_LIMITS_H
 #define PF_MULTIGRID_LIMITS_H
 #define PF_MG_COARSE_CELLS 1024   /* coarsening stops at a level this small (solved in one workgroup) */
-#define PF_MG_COARSE_SWEEPS 24    /* symmetric red-black sweep pairs of the coarsest level */
+#define PF_MG_COARSE_SWEEPS 32    /* black-red half-sweep pairs of the coarsest level (after one red) */
 #define PF_MG_MAX_LEVELS 12
 #endif
