@@ -166,6 +166,85 @@ const char* solver_name(pf_pressure_solver solver) {
     return solver >= 0 && solver < PF_PRESSURE_SOLVER_COUNT ? kSolverNames[solver] : "unknown";
 }
 
+namespace {
+const char* const kTransferNames[PF_TRANSFER_COUNT] = {"pic_flip", "apic"};
+const char* const kAdvectionNames[PF_ADVECTION_COUNT] = {"euler", "rk2", "rk3"};
+
+/// Index of `name` in names[0..n); throws Error listing the known names otherwise.
+template <size_t N>
+int parse_name(const char* const (&names)[N], const std::string& name, const char* what, const char* kind) {
+    for (size_t i = 0; i < N; ++i)
+        if (name == names[i]) return int(i);
+    std::string known;
+    for (const char* n : names) known += std::string(known.empty() ? "" : ", ") + n;
+    throw Error(std::string(what) + ": unknown " + kind + " '" + name + "' (known: " + known + ")");
+}
+}  // namespace
+
+pf_transfer parse_transfer(const std::string& name, const char* what) {
+    return pf_transfer(parse_name(kTransferNames, name, what, "transfer"));
+}
+
+const char* transfer_name(pf_transfer transfer) {
+    return transfer >= 0 && transfer < PF_TRANSFER_COUNT ? kTransferNames[transfer] : "unknown";
+}
+
+pf_advection parse_advection(const std::string& name, const char* what) {
+    return pf_advection(parse_name(kAdvectionNames, name, what, "advection"));
+}
+
+const char* advection_name(pf_advection advection) {
+    return advection >= 0 && advection < PF_ADVECTION_COUNT ? kAdvectionNames[advection] : "unknown";
+}
+
+bool ParamOverrides::parse(ArgCursor& args) {
+    const std::string& a = args.option();
+    if (a == "--solver") {
+        solver = parse_solver(args.value(), "--solver");
+        has_solver = true;
+    } else if (a == "--tolerance") {
+        // The library takes (0, 1); the bounds keep a typo like "1e4" from passing.
+        tolerance = parse_float(args.value(), "--tolerance", 1e-12f, 0.999f);
+        has_tolerance = true;
+    } else if (a == "--transfer") {
+        transfer = parse_transfer(args.value(), "--transfer");
+        has_transfer = true;
+    } else if (a == "--advection") {
+        advection = parse_advection(args.value(), "--advection");
+        has_advection = true;
+    } else {
+        return false;
+    }
+    return true;
+}
+
+void ParamOverrides::apply(pf_sim_params& p) const {
+    if (has_solver) p.pressure_solver = solver;
+    if (has_tolerance) p.pressure_tolerance = tolerance;
+    if (has_transfer) p.transfer = transfer;
+    if (has_advection) p.advection = advection;
+}
+
+const char* ParamOverrides::usage() {
+    return "  --solver NAME       pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
+           "  --tolerance T       relative residual at which a pressure solve stops, (0, 1) (default: the scene's)\n"
+           "  --transfer pic_flip|apic  grid-particle transfer (default: the scene's)\n"
+           "  --advection euler|rk2|rk3  particle integrator (default: the scene's)\n";
+}
+
+pf_result get_pass_list(const pf_sim* sim, std::vector<pf_pass_stats>& out) {
+    out.clear();
+    uint32_t n = 0;
+    if (pf_result r = pf_get_pass_count(sim, &n); r != PF_OK) return r;
+    out.resize(n);
+    for (uint32_t i = 0; i < n; ++i)
+        if (pf_result r = pf_get_pass_stats(sim, i, &out[i]); r != PF_OK) {
+            out.clear();
+            return r;
+        }
+    return PF_OK;
+}
+
 void parse_size(const std::string& text, const char* option, uint32_t& w, uint32_t& h) {
     const size_t x = text.find_first_of("xX");
     if (x == std::string::npos) throw Error(std::string(option) + ": expected WxH, got '" + text + "'");

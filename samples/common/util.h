@@ -78,6 +78,37 @@ float parse_float(const std::string& text, const char* option, float lo, float h
 pf_pressure_solver parse_solver(const std::string& name, const char* what);
 /// The name parse_solver takes for `solver`.
 const char* solver_name(pf_pressure_solver solver);
+/// Grid-particle transfer by name ("pic_flip", "apic"); throws Error naming `what`.
+pf_transfer parse_transfer(const std::string& name, const char* what);
+/// The name parse_transfer takes for `transfer`.
+const char* transfer_name(pf_transfer transfer);
+/// Particle advection by name ("euler", "rk2", "rk3"); throws Error naming `what`.
+pf_advection parse_advection(const std::string& name, const char* what);
+/// The name parse_advection takes for `advection`.
+const char* advection_name(pf_advection advection);
+
+/// The accuracy knobs the interactive samples take on the command line (--solver, --tolerance,
+/// --transfer, --advection). Each overrides the scene's value only when given, so a scene file
+/// stays the single source of everything else.
+struct ParamOverrides {
+    bool has_solver = false, has_tolerance = false, has_transfer = false, has_advection = false;
+    pf_pressure_solver solver = PF_PRESSURE_SOLVER_JACOBI;
+    float tolerance = 0;
+    pf_transfer transfer = PF_TRANSFER_PIC_FLIP;
+    pf_advection advection = PF_ADVECTION_EULER;
+
+    /// If args.option() is one of the four, consumes its value (strictly parsed) and returns
+    /// true; false leaves args untouched for the caller's own options.
+    bool parse(ArgCursor& args);
+    /// Writes the given overrides into p.
+    void apply(pf_sim_params& p) const;
+    /// The --help lines of the four options.
+    static const char* usage();
+};
+
+/// The runtime per-pass statistics list (pf_get_pass_count / pf_get_pass_stats), in the
+/// library's order. Names stay valid until pf_destroy.
+pf_result get_pass_list(const pf_sim* sim, std::vector<pf_pass_stats>& out);
 /// "WxH" -> w, h (each 16..16384).
 void parse_size(const std::string& text, const char* option, uint32_t& w, uint32_t& h);
 

@@ -7,7 +7,8 @@
 // framebuffer (pf_render_ssf, or pf_render_particles for the debug view) over the world's
 // colour and depth, and the image is read back to frame_NNNN.png. With --video the PNGs are
 // encoded to an H.264 MP4 by ffmpeg. At the end it prints pflip's per-pass GPU timings of the
-// simulation and of the rendering, and the wall time per step.
+// simulation (the runtime pass list, so the active solver's own passes show) and of the
+// rendering, the pressure solver's iterations and final residual, and the wall time per step.
 //
 // Only the public API (pf/pf.h) is used for the simulation and the liquid.
 
@@ -30,6 +31,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -60,6 +62,7 @@ struct Options {
     float fps = 0;                    // 0: real time
     bool verbose = false;
     bool debug = false;
+    pfs::ParamOverrides overrides;    // --solver, --tolerance, --transfer, --advection
 };
 
 void print_usage(std::FILE* f) {
@@ -80,12 +83,13 @@ void print_usage(std::FILE* f) {
                  "  --color-by speed|vx|vy|vz|height|uniform  particle colouring (with --render particles)\n"
                  "  --video FILE.mp4    encode the PNGs to H.264 with ffmpeg (needs ffmpeg on PATH)\n"
                  "  --fps F             video frame rate (default: real time, 1 / (frame_dt * every))\n"
+                 "%s"
                  "  --verbose           pflip's info messages and EGL details\n"
                  "  --debug-context     request a debug GL context\n"
                  "  -h, --help          this text\n"
                  "environment: PF_EGL_PLATFORM=device|surfaceless, PF_EGL_DEVICE=N, PF_SCENES_DIR=DIR\n"
                  "scenes directory: %s\n",
-                 pfs::scenes_dir().c_str());
+                 pfs::ParamOverrides::usage(), pfs::scenes_dir().c_str());
 }
 
 Options parse_args(int argc, char** argv) {
@@ -95,6 +99,8 @@ Options parse_args(int argc, char** argv) {
         if (a == "-h" || a == "--help") {
             print_usage(stdout);
             std::exit(0);
+        } else if (o.overrides.parse(args)) {
+            // an accuracy knob, applied over the scene's parameters
         } else if (a == "--scene") {
             o.scene = args.value();
         } else if (a == "--frames") {
@@ -233,15 +239,22 @@ int run(int argc, char** argv) {
     if (!glv || GLAD_VERSION_MAJOR(glv) * 100 + GLAD_VERSION_MINOR(glv) < 403)
         throw Error("gladLoadGL: OpenGL 4.3 core functions not available");
 
-    const pf_sim_desc desc = pfs::make_sim_desc(scene, pfs::get_proc, pfs::stderr_logger(opt.verbose));
+    pf_sim_desc desc = pfs::make_sim_desc(scene, pfs::get_proc, pfs::stderr_logger(opt.verbose));
+    opt.overrides.apply(desc.params);
     std::printf("scene: %s (%s)\n  grid %ux%ux%u, cell %.4g m, domain %.3g x %.3g x %.3g m, capacity %u\n",
                 scene.name.c_str(), scene_path.c_str(), desc.grid_size[0], desc.grid_size[1], desc.grid_size[2],
                 double(desc.cell_size), double(desc.grid_size[0] * desc.cell_size),
                 double(desc.grid_size[1] * desc.cell_size), double(desc.grid_size[2] * desc.cell_size),
                 desc.max_particles);
-    std::printf("  frame_dt %.5g s, frames %u, pressure_iterations %u, flip_ratio %.3g, cfl %.3g, max_substeps %u\n",
-                double(scene.frame_dt), frames, desc.params.pressure_iterations, double(desc.params.flip_ratio),
-                double(desc.params.cfl), desc.params.max_substeps);
+    std::printf("  frame_dt %.5g s, frames %u, flip_ratio %.3g, cfl %.3g, max_substeps %u\n", double(scene.frame_dt),
+                frames, double(desc.params.flip_ratio), double(desc.params.cfl), desc.params.max_substeps);
+    // pressure_tolerance 0 means the library default; say which value that is.
+    const float tolerance =
+        desc.params.pressure_tolerance > 0 ? desc.params.pressure_tolerance : pf_default_sim_params().pressure_tolerance;
+    std::printf("  solver %s (at most %u iterations, tolerance %.3g, separation %u), transfer %s, advection %s\n",
+                pfs::solver_name(desc.params.pressure_solver), desc.params.pressure_iterations, double(tolerance),
+                desc.params.separation, pfs::transfer_name(desc.params.transfer),
+                pfs::advection_name(desc.params.advection));
 
     double t0 = pfs::now_ms();
     SimPtr sim;
@@ -301,13 +314,17 @@ int run(int argc, char** argv) {
     // ---- main loop ----
     struct GpuSample {
         uint64_t step;
-        float ms[PF_PASS_COUNT];
         float total;
     };
     std::vector<GpuSample> gpu_samples;
+    // The runtime pass list: GPU ms of every measured step per entry, in the library's order
+    // (first appearance), and the dispatches of the last pf_step.
+    std::vector<std::string> pass_order;
+    std::map<std::string, std::vector<double>> pass_ms;
+    std::map<std::string, uint32_t> pass_dispatches;
+    std::vector<pf_pass_stats> pass_list;
     std::vector<uint32_t> substeps_of_step(1, 0); // index: step number (1-based)
-    std::vector<double> wall_ms, cpu_ms;
-    uint32_t dispatches[PF_PASS_COUNT] = {};
+    std::vector<double> wall_ms, cpu_ms, solver_iterations, solver_residual;
     uint64_t last_gpu_step = 0;
     uint32_t image_index = 0;
     double sim_total_ms = 0, render_total_ms = 0, png_total_ms = 0;
@@ -372,21 +389,27 @@ int run(int argc, char** argv) {
         cpu_ms.push_back(st.cpu_ms);
         if (substeps_of_step.size() <= st.steps) substeps_of_step.resize(st.steps + 1, 0);
         substeps_of_step[st.steps] = st.substeps;
-        std::copy(st.dispatches, st.dispatches + PF_PASS_COUNT, dispatches);
-        if (st.gpu_step != 0 && st.gpu_step != last_gpu_step) {
-            GpuSample g{};
-            g.step = st.gpu_step;
-            std::copy(st.gpu_ms, st.gpu_ms + PF_PASS_COUNT, g.ms);
-            g.total = st.gpu_total_ms;
-            gpu_samples.push_back(g);
+        solver_iterations.push_back(st.solver_iterations);
+        solver_residual.push_back(st.solver_residual);
+        pfs::check(pfs::get_pass_list(sim.get(), pass_list), "pf_get_pass_stats");
+        const bool new_gpu_step = st.gpu_step != 0 && st.gpu_step != last_gpu_step;
+        for (const pf_pass_stats& p : pass_list) {
+            if (!pass_ms.count(p.name)) pass_order.push_back(p.name);
+            std::vector<double>& ms = pass_ms[p.name];
+            if (new_gpu_step) ms.push_back(p.gpu_ms);
+            pass_dispatches[p.name] = p.dispatches;
+        }
+        if (new_gpu_step) {
+            gpu_samples.push_back(GpuSample{st.gpu_step, st.gpu_total_ms});
             last_gpu_step = st.gpu_step;
         }
 
         if (f % report_every == 0 || f == frames)
-            std::printf("frame %4u/%u  t=%.3f s  substeps %u  max|v| %.2f m/s  step %.1f ms (wall)  gpu %.2f ms%s%s\n",
+            std::printf("frame %4u/%u  t=%.3f s  substeps %u  max|v| %.2f m/s  step %.1f ms (wall)  gpu %.2f ms  "
+                        "solver %u it, res %.2e%s%s\n",
                         f, frames, double(f) * double(scene.frame_dt), st.substeps, double(st.max_speed),
-                        s1 - s0, double(st.gpu_total_ms), st.flags ? "  flags: " : "",
-                        st.flags ? pfs::flag_names(st.flags).c_str() : "");
+                        s1 - s0, double(st.gpu_total_ms), st.solver_iterations, double(st.solver_residual),
+                        st.flags ? "  flags: " : "", st.flags ? pfs::flag_names(st.flags).c_str() : "");
         std::fflush(stdout);
 
         if (world && (f % opt.every == 0 || f == frames)) write_image();
@@ -402,19 +425,20 @@ int run(int argc, char** argv) {
     const bool gpu_valid = !gpu_samples.empty() && gpu_sum_total > 0;
     std::printf("GPU time per step (pf_get_stats, %zu distinct measured steps%s):\n", gpu_samples.size(),
                 gpu_valid ? "" : "; timer queries read 0 on this driver");
-    std::printf("  %-18s %12s %12s %7s %12s\n", "pass", "mean ms", "median ms", "share", "dispatches*");
+    // The runtime list (pf_get_pass_stats) in the library's order: its entries are disjoint, so
+    // their means add up to the total and the shares to 100%.
+    const int name_width = 24;
+    std::printf("  %-*s %12s %12s %7s %12s\n", name_width, "pass", "mean ms", "median ms", "share", "dispatches*");
     double total_mean = 0;
-    std::vector<pfs::Summary> per_pass(PF_PASS_COUNT);
-    for (int p = 0; p < PF_PASS_COUNT; ++p) {
-        std::vector<double> v;
-        for (const auto& g : gpu_samples) v.push_back(g.ms[p]);
-        per_pass[size_t(p)] = pfs::summarize(v);
-        total_mean += per_pass[size_t(p)].mean;
+    std::vector<pfs::Summary> per_pass;
+    for (const std::string& name : pass_order) {
+        per_pass.push_back(pfs::summarize(pass_ms[name]));
+        total_mean += per_pass.back().mean;
     }
-    for (int p = 0; p < PF_PASS_COUNT; ++p) {
-        const auto& s = per_pass[size_t(p)];
-        std::printf("  %-18s %12.4f %12.4f %6.1f%% %12u\n", pf_pass_name(pf_pass(p)), s.mean, s.median,
-                    total_mean > 0 ? 100.0 * s.mean / total_mean : 0.0, dispatches[p]);
+    for (size_t i = 0; i < pass_order.size(); ++i) {
+        const auto& s = per_pass[i];
+        std::printf("  %-*s %12.4f %12.4f %6.1f%% %12u\n", name_width, pass_order[i].c_str(), s.mean, s.median,
+                    total_mean > 0 ? 100.0 * s.mean / total_mean : 0.0, pass_dispatches[pass_order[i]]);
     }
     {
         std::vector<double> tot, per_sub;
@@ -424,9 +448,20 @@ int run(int argc, char** argv) {
             if (k) per_sub.push_back(g.total / k);
         }
         const auto t = pfs::summarize(tot), ps = pfs::summarize(per_sub);
-        std::printf("  %-18s %12.4f %12.4f\n", "total", t.mean, t.median);
-        std::printf("  %-18s %12.4f %12.4f\n", "total / substep", ps.mean, ps.median);
+        std::printf("  %-*s %12.4f %12.4f\n", name_width, "total", t.mean, t.median);
+        std::printf("  %-*s %12.4f %12.4f\n", name_width, "total / substep", ps.mean, ps.median);
         std::printf("  (* dispatches in the last pf_step, all its substeps)\n");
+    }
+    {
+        // What the solve bought: iterations taken against the cap, and the residual reached
+        // against the tolerance (the largest over each step's substeps).
+        const auto it = pfs::summarize(solver_iterations), res = pfs::summarize(solver_residual);
+        std::printf("pressure solver %s (pf_stats.solver_iterations / solver_residual, per step):\n",
+                    pfs::solver_name(desc.params.pressure_solver));
+        std::printf("  iterations: mean %.1f  median %.0f  max %.0f  (cap %u)\n", it.mean, it.median, it.max,
+                    desc.params.pressure_iterations);
+        std::printf("  final residual: mean %.3g  median %.3g  max %.3g  (tolerance %.3g)\n", res.mean, res.median,
+                    res.max, double(tolerance));
     }
     {
         std::vector<double> subs;

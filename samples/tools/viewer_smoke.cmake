@@ -1,6 +1,7 @@
 # CTest driver of the pf_viewer smoke test: runs the viewer under xvfb-run for a few frames with
 # --screenshot, then checks the picture with pf_png_check.
 #   -DXVFB_RUN=... -DVIEWER=... -DCHECK=... -DOUT=path.png -DSIZE=WxH -DSCENES=dir
+#   [-DEXTRA="--solver mgpcg ..."]  more viewer options, space-separated
 foreach(v XVFB_RUN VIEWER CHECK OUT SIZE)
   if(NOT DEFINED ${v})
     message(FATAL_ERROR "viewer_smoke.cmake: ${v} not set")
@@ -8,9 +9,10 @@ foreach(v XVFB_RUN VIEWER CHECK OUT SIZE)
 endforeach()
 file(REMOVE "${OUT}")
 set(ENV{PF_SCENES_DIR} "${SCENES}")
+separate_arguments(extra UNIX_COMMAND "${EXTRA}")
 execute_process(
   COMMAND "${XVFB_RUN}" -a -s "-screen 0 1280x720x24"
-          "${VIEWER}" --scene dam_break_small --size ${SIZE} --frames 6 --screenshot "${OUT}"
+          "${VIEWER}" --scene dam_break_small --size ${SIZE} --frames 6 --screenshot "${OUT}" ${extra}
   RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "pf_viewer under xvfb-run failed (${rc})")

@@ -6,6 +6,12 @@
 // (pf_render_ssf, or pf_render_particles for the debug view), the result is blitted to the
 // window and ImGui goes on top.
 //
+// The simulation panel holds every pf_sim_params field, with the accuracy knobs (pressure
+// solver, tolerance, iteration cap, SOR omega, transfer, advection) first; the statistics
+// panel shows their price beside them: the runtime pass list (pf_get_pass_stats, so the active
+// solver's own passes show), the solver's iterations and final residual, and rolling plots of
+// GPU ms per step and log10 residual with a tick where a knob changed.
+//
 // Mouse: right drag (or Alt + left drag) orbits, middle drag (or Shift + right drag) pans,
 // the wheel zooms, left drag pushes the liquid (pf_push along the drag). Keys: Space pauses,
 // S steps once, R resets the scene, P toggles SSF / particles, Esc quits.
@@ -61,6 +67,7 @@ struct Options {
     bool paused = false;
     bool vsync = true;
     bool verbose = false;
+    pfs::ParamOverrides overrides; // --solver, --tolerance, --transfer, --advection
     // --drag: a synthetic left drag (scripted pushes, tests)
     bool drag = false;
     float drag_from[2] = {0, 0}, drag_to[2] = {0, 0};
@@ -81,12 +88,13 @@ void print_usage(std::FILE* f) {
                  "                      with --screenshot, otherwise until the window closes)\n"
                  "  --drag X0,Y0,X1,Y1[,F0,F1]  scripted left drag (a push) from window pixel X0,Y0 to X1,Y1\n"
                  "                      over frames F0..F1 (default 5..15)\n"
+                 "%s"
                  "  --verbose           pflip's info messages\n"
                  "  -h, --help          this text\n"
                  "mouse: right drag / Alt+left drag orbit, middle drag / Shift+right drag pan, wheel zoom,\n"
                  "       left drag pushes the liquid. keys: Space pause, S step, R reset, P SSF/particles, Esc quit\n"
                  "scenes directory: %s (PF_SCENES_DIR)\n",
-                 pfs::scenes_dir().c_str());
+                 pfs::ParamOverrides::usage(), pfs::scenes_dir().c_str());
 }
 
 Options parse_args(int argc, char** argv) {
@@ -97,6 +105,8 @@ Options parse_args(int argc, char** argv) {
         if (a == "-h" || a == "--help") {
             print_usage(stdout);
             std::exit(0);
+        } else if (o.overrides.parse(args)) {
+            // an accuracy knob, applied over every scene loaded
         } else if (a == "--scene") {
             o.scene = args.value();
         } else if (a == "--size") {
@@ -188,13 +198,111 @@ float ray_plane(const glm::vec3& o, const glm::vec3& d, const glm::vec3& p, cons
     return t >= 0.0f ? t : -1.0f;
 }
 
-constexpr float kPanelWidth = 420.0f;
+constexpr float kPanelWidth = 420.0f;  // the parameter panel, on the left
+constexpr float kStatsWidth = 410.0f;  // the statistics panel, on the right: both stay in view,
+                                       // so a knob's price shows while turning it
+
+/// An error line, wrapped to the panel: the library's messages name the field and its range.
+void error_text(const std::string& text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.4f, 0.3f, 1));
+    ImGui::TextWrapped("%s", text.c_str());
+    ImGui::PopStyleColor();
+}
+
+/// Hover help for the previous widget (ImGui 1.86 has no SetItemTooltip).
+void tooltip(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+// ---- pflip's messages -----------------------------------------------------------------------
+
+/// Forwards pflip's messages to the samples' stderr logger and keeps the newest error or
+/// warning, so the panel can show the library's own words (which field, which range) next to
+/// a refused change instead of a bare result code.
+class LogCapture {
+public:
+    explicit LogCapture(bool verbose) : forward_(pfs::stderr_logger(verbose)) {}
+    pf_logger logger() { return pf_logger{&LogCapture::log, this}; }
+    /// Forgets the kept message (before a call whose failure is to be explained).
+    void clear() { last_.clear(); }
+    /// What to show when `call` returned r: the logged message, else the result code.
+    std::string explain(const char* call, pf_result r) const {
+        return last_.empty() ? std::string(call) + ": " + pf_result_string(r) : last_;
+    }
+
+private:
+    static void log(void* user, pf_log_level level, pf_result code, const char* message) {
+        auto* self = static_cast<LogCapture*>(user);
+        if (self->forward_.fn) self->forward_.fn(self->forward_.user, level, code, message);
+        if (level == PF_LOG_ERROR || level == PF_LOG_WARNING) self->last_ = message ? message : "";
+    }
+    pf_logger forward_;
+    std::string last_;
+};
+
+// ---- parameter presets ----------------------------------------------------------------------
+
+/// A named starting point for every simulation parameter.
+struct ParamPreset {
+    const char* name;
+    const char* help;
+    pf_sim_params (*make)(const pfs::Scene& scene);
+};
+
+/// The presets of the simulation panel's combo, in order. When the library gains quality
+/// presets, each level becomes one more entry here (its make() calling the library's
+/// defaults-for-quality function); the panel needs no other change.
+const std::vector<ParamPreset>& param_presets() {
+    static const std::vector<ParamPreset> presets = {
+        {"scene file", "the scene file's values (with the command line's --solver/--tolerance/--transfer/--advection)",
+         [](const pfs::Scene& scene) { return scene.params; }},
+        {"library defaults", "pf_default_sim_params()", [](const pfs::Scene&) { return pf_default_sim_params(); }},
+    };
+    return presets;
+}
+
+/// Display names of the enums the combos select (pfs::*_name gives the command-line names).
+const char* const kSolverLabels[PF_PRESSURE_SOLVER_COUNT] = {"Jacobi", "red-black GS / SOR", "CG", "PCG (Jacobi)",
+                                                             "MGPCG (multigrid)"};
+const char* const kTransferLabels[PF_TRANSFER_COUNT] = {"PIC/FLIP", "APIC"};
+const char* const kAdvectionLabels[PF_ADVECTION_COUNT] = {"Euler", "RK2 (midpoint)", "RK3 (Ralston)"};
+
+/// One measured step in the rolling plots.
+struct StepSample {
+    float gpu_ms = 0;        // pf_stats.gpu_total_ms
+    float log_residual = 0;  // log10 pf_stats.solver_residual
+    bool knob = false;       // the first measured step after a parameter change
+};
+constexpr size_t kHistorySteps = 240;
+
+/// PlotLines over the whole width with a tick at every sample where a knob changed and, when
+/// ref is within [lo, hi], a horizontal line at ref: a knob's price shows as a step in the
+/// curve right after its tick.
+void plot_history(const char* id, const std::vector<float>& v, const std::vector<bool>& knob, float lo, float hi,
+                  const std::string& overlay, float ref) {
+    const ImVec2 size(ImGui::GetContentRegionAvail().x, 48); // 1.86: no negative sizes here
+    ImGui::PlotLines(id, v.data(), int(v.size()), 0, overlay.c_str(), lo, hi, size);
+    if (v.size() < 2) return;
+    const ImVec2 pad = ImGui::GetStyle().FramePadding;
+    const ImVec2 a(ImGui::GetItemRectMin().x + pad.x, ImGui::GetItemRectMin().y + pad.y);
+    const ImVec2 b(ImGui::GetItemRectMax().x - pad.x, ImGui::GetItemRectMax().y - pad.y);
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    for (size_t i = 0; i < knob.size(); ++i) {
+        if (!knob[i]) continue;
+        const float x = a.x + (b.x - a.x) * float(i) / float(v.size() - 1);
+        dl->AddLine(ImVec2(x, a.y), ImVec2(x, b.y), IM_COL32(255, 220, 80, 200), 1.0f);
+    }
+    if (ref >= lo && ref <= hi && hi > lo) {
+        const float y = b.y - (b.y - a.y) * (ref - lo) / (hi - lo);
+        dl->AddLine(ImVec2(a.x, y), ImVec2(b.x, y), IM_COL32(120, 220, 120, 160), 1.0f);
+    }
+}
 
 // ---- the application ------------------------------------------------------------------------
 
 class Viewer {
 public:
-    Viewer(const Options& opt, GLFWwindow* window) : opt_(opt), window_(window) {
+    Viewer(const Options& opt, GLFWwindow* window) : opt_(opt), window_(window), log_(opt.verbose) {
         look_.ssf = opt.ssf;
         camera_depth_ = opt.depth;
         paused_ = opt.paused;
@@ -217,12 +325,22 @@ private:
     void ui(int fb_w, int fb_h);
     void ui_scene();
     void ui_simulation();
+    bool ui_presets(pf_sim_params& p);
+    bool ui_accuracy_knobs(pf_sim_params& p);
+    bool ui_other_params(pf_sim_params& p);
+    void apply_params(const pf_sim_params& p);
     void ui_rendering();
     void ui_stats();
+    void ui_history();
+    void ui_pass_table();
+    void ui_accuracy();
+    void ui_render_pass_table();
+    void record_step();
     void draw_push_marker(int fb_w, int fb_h);
 
     const Options& opt_;
     GLFWwindow* window_;
+    LogCapture log_; // before sim_: the sim logs into it until destroyed
     pfs::Scene scene_;
     std::string scene_path_;
     std::vector<std::string> scene_files_;
@@ -233,7 +351,17 @@ private:
     pfs::LiquidLook look_;
     pf_sim_params params_{};
     pf_stats stats_{};
+    std::vector<pf_pass_stats> passes_; // the runtime pass list, read every frame
     std::string last_error_;
+    std::string params_error_;          // why the last pf_set_params was refused
+    int preset_ = 0;                    // param_presets() index applied last; -1: edited since
+    bool show_idle_passes_ = false;
+
+    // rolling plots: one sample per measured step (GPU figures lag a few steps)
+    std::deque<StepSample> history_;
+    uint64_t last_sampled_step_ = 0;
+    bool knob_pending_ = false;         // a parameter changed; mark the first step measured after it
+    uint64_t knob_step_ = 0;            // pf_stats.steps when it changed
 
     bool paused_ = false, step_once_ = false;
     int steps_per_frame_ = 1;
@@ -260,12 +388,19 @@ private:
 
 void Viewer::load_scene(const std::string& path) {
     pfs::Scene s = pfs::load_scene(path); // throws before anything is torn down
+    // The command line's knobs count as part of every scene, so "scene file" keeps them.
+    opt_.overrides.apply(s.params);
     world_.reset();
     sim_.reset();
     scene_ = std::move(s);
     scene_path_ = path;
-    sim_.reset(pfs::create_scene_sim(scene_, glfw_get_proc, pfs::stderr_logger(opt_.verbose)));
+    sim_.reset(pfs::create_scene_sim(scene_, glfw_get_proc, log_.logger()));
     pfs::check(pf_get_params(sim_.get(), &params_), "pf_get_params");
+    preset_ = 0;
+    params_error_.clear();
+    history_.clear(); // a new sim counts steps from 0
+    last_sampled_step_ = 0;
+    knob_pending_ = false;
     world_ = std::make_unique<pfs::World>(scene_, glad_get_proc);
     world_->set_sun(glm::vec3(look_.ssf_params.light_direction[0], look_.ssf_params.light_direction[1],
                               look_.ssf_params.light_direction[2]));
@@ -275,12 +410,12 @@ void Viewer::load_scene(const std::string& path) {
         camera_depth_ = PF_DEPTH_STANDARD;
     }
     camera_.depth = camera_depth_;
-    // Shift the view right by half the UI panel so the tank is not hidden behind it.
+    // Centre the tank between the two panels and step back so it fits there.
     {
         int win_w = 0, win_h = 0;
         glfwGetWindowSize(window_, &win_w, &win_h);
-        camera_.pan(0.5f * kPanelWidth, 0.0f, std::max(win_h, 1));
-        camera_.zoom(1.1f);
+        camera_.pan(0.5f * (kPanelWidth - kStatsWidth), 0.0f, std::max(win_h, 1));
+        camera_.zoom(1.6f);
     }
     // Particle colours: the speed range of a tank-deep dam break.
     const pfs::vec3f lo = scene_.domain_min(), hi = scene_.domain_max();
@@ -477,6 +612,8 @@ bool Viewer::frame(uint64_t frame_index) {
         step_once_ = false;
     }
     pf_get_stats(sim_.get(), &stats_);
+    pfs::get_pass_list(sim_.get(), passes_);
+    record_step();
 
     // Render: world, then the liquid into the world's framebuffer, then to the window.
     world_->resize(fb_w, fb_h);
@@ -501,15 +638,26 @@ bool Viewer::frame(uint64_t frame_index) {
 
 void Viewer::ui(int fb_w, int fb_h) {
     (void)fb_w;
+    (void)fb_h;
+    const ImVec2 display = ImGui::GetIO().DisplaySize; // window coordinates, not framebuffer pixels
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, float(std::max(200, fb_h - 16))), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, std::max(200.0f, display.y - 16)), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.82f);
     ImGui::Begin("pflip");
+    ImGui::PushItemWidth(-150.0f); // room for the longest label ("extrapolation layers")
     ImGui::Text("pflip %s  |  %s", pfs::pf_version_string().c_str(), reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
-    if (!last_error_.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", last_error_.c_str());
+    if (!last_error_.empty()) error_text(last_error_);
     ui_scene();
     ui_simulation();
     ui_rendering();
+    ImGui::PopItemWidth();
+    ImGui::End();
+
+    // Fixed width, height following the content: the pass list grows with the solvers used.
+    ImGui::SetNextWindowPos(ImVec2(std::max(kPanelWidth + 16, display.x - kStatsWidth - 8), 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(kStatsWidth, 0), ImVec2(kStatsWidth, std::max(200.0f, display.y - 16)));
+    ImGui::SetNextWindowBgAlpha(0.82f);
+    ImGui::Begin("statistics", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
     ui_stats();
     ImGui::End();
 }
@@ -556,17 +704,88 @@ void Viewer::ui_scene() {
 }
 
 void Viewer::ui_simulation() {
-    if (!ImGui::CollapsingHeader("Simulation parameters")) return;
+    if (!ImGui::CollapsingHeader("Simulation parameters", ImGuiTreeNodeFlags_DefaultOpen)) return;
     pf_sim_params p = params_;
+    if (ui_presets(p)) {
+        apply_params(p);
+        return;
+    }
+    bool changed = ui_accuracy_knobs(p);
+    changed |= ui_other_params(p);
+    if (changed) {
+        preset_ = -1;
+        apply_params(p);
+    }
+    if (!params_error_.empty()) error_text(params_error_);
+}
+
+// The preset combo: replaces every parameter at once.
+bool Viewer::ui_presets(pf_sim_params& p) {
+    const auto& presets = param_presets();
+    const char* current = preset_ >= 0 && size_t(preset_) < presets.size() ? presets[size_t(preset_)].name : "(edited)";
+    bool picked = false;
+    if (ImGui::BeginCombo("preset", current)) {
+        for (size_t i = 0; i < presets.size(); ++i) {
+            if (ImGui::Selectable(presets[i].name, int(i) == preset_)) {
+                p = presets[i].make(scene_);
+                preset_ = int(i);
+                picked = true;
+            }
+            tooltip(presets[i].help);
+        }
+        ImGui::EndCombo();
+    }
+    tooltip("every simulation parameter at once; moving a knob below makes it \"(edited)\"");
+    return picked;
+}
+
+// What the pressure solve, the transfers and the integrator cost and buy: the knobs whose
+// price the statistics below show.
+bool Viewer::ui_accuracy_knobs(pf_sim_params& p) {
     bool changed = false;
-    changed |= ImGui::DragFloat3("gravity", p.gravity, 0.05f, -50.0f, 50.0f, "%.2f");
-    changed |= ImGui::SliderFloat("flip ratio", &p.flip_ratio, 0.0f, 1.0f, "%.3f");
+    int solver = int(p.pressure_solver);
+    if (ImGui::Combo("pressure solver", &solver, kSolverLabels, PF_PRESSURE_SOLVER_COUNT)) {
+        p.pressure_solver = pf_pressure_solver(solver);
+        changed = true;
+    }
+    tooltip("cheapest per iteration first; CG, PCG and MGPCG need far fewer iterations (docs/accuracy.md)");
+    changed |= ImGui::SliderFloat("tolerance", &p.pressure_tolerance, 1e-7f, 1e-1f, "%.1e", ImGuiSliderFlags_Logarithmic);
+    tooltip("relative residual |b - Ap| / |b| at which a solve stops (checked on the GPU)");
     int iters = int(p.pressure_iterations);
-    if (ImGui::SliderInt("Jacobi iterations", &iters, 1, 400)) {
+    if (ImGui::SliderInt("iteration cap", &iters, 1, 10000, "%d", ImGuiSliderFlags_Logarithmic)) {
         p.pressure_iterations = uint32_t(iters);
         changed = true;
     }
+    tooltip("most iterations per substep (a Jacobi sweep, a red-black pair, a CG step) when the tolerance is not met");
+    changed |= ImGui::SliderFloat("SOR omega (RBGS)", &p.sor_omega, 0.05f, 1.99f, "%.3f");
+    tooltip("over-relaxation of the red-black Gauss-Seidel solver only; the other solvers ignore it");
     changed |= ImGui::SliderFloat("Jacobi omega", &p.jacobi_omega, 0.05f, 1.0f, "%.3f");
+    tooltip("relaxation weight of the Jacobi solver only");
+    bool separation = p.separation != 0;
+    if (ImGui::Checkbox("separation (pressure >= 0)", &separation)) {
+        p.separation = separation ? 1u : 0u;
+        changed = true;
+    }
+    int transfer = int(p.transfer);
+    if (ImGui::Combo("transfer", &transfer, kTransferLabels, PF_TRANSFER_COUNT)) {
+        p.transfer = pf_transfer(transfer);
+        changed = true;
+    }
+    tooltip("APIC keeps rotation and shear without FLIP's noise (flip ratio is then ignored)");
+    int advection = int(p.advection);
+    if (ImGui::Combo("advection", &advection, kAdvectionLabels, PF_ADVECTION_COUNT)) {
+        p.advection = pf_advection(advection);
+        changed = true;
+    }
+    tooltip("RK2 / RK3 sample the grid velocity 2 / 3 times per substep");
+    return changed;
+}
+
+bool Viewer::ui_other_params(pf_sim_params& p) {
+    bool changed = false;
+    changed |= ImGui::SliderFloat("flip ratio", &p.flip_ratio, 0.0f, 1.0f, "%.3f");
+    tooltip("0 = pure PIC, 1 = pure FLIP (PIC/FLIP transfer only)");
+    changed |= ImGui::DragFloat3("gravity", p.gravity, 0.05f, -50.0f, 50.0f, "%.2f");
     changed |= ImGui::SliderFloat("cfl", &p.cfl, 0.1f, 8.0f, "%.2f");
     int subs = int(p.max_substeps);
     if (ImGui::SliderInt("max substeps", &subs, 1, 64)) {
@@ -578,25 +797,22 @@ void Viewer::ui_simulation() {
         p.extrapolation_layers = uint32_t(layers);
         changed = true;
     }
-    bool separation = p.separation != 0;
-    if (ImGui::Checkbox("separation (pressure >= 0)", &separation)) {
-        p.separation = separation ? 1u : 0u;
-        changed = true;
+    return changed;
+}
+
+// Every change goes through pf_set_params; a refused one leaves the library's parameters as
+// they were (the panel then shows them again) and the logged reason under the knobs.
+void Viewer::apply_params(const pf_sim_params& p) {
+    log_.clear();
+    const pf_result r = pf_set_params(sim_.get(), &p);
+    if (r == PF_OK) {
+        params_error_.clear();
+        knob_pending_ = true;
+        knob_step_ = stats_.steps;
+    } else {
+        params_error_ = log_.explain("pf_set_params", r);
     }
-    if (ImGui::Button("Scene values")) {
-        p = scene_.params;
-        changed = true;
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Library defaults")) {
-        p = pf_default_sim_params();
-        changed = true;
-    }
-    if (changed) {
-        const pf_result r = pf_set_params(sim_.get(), &p);
-        if (r != PF_OK) last_error_ = std::string("pf_set_params: ") + pf_result_string(r);
-        pf_get_params(sim_.get(), &params_); // what the library holds now
-    }
+    pf_get_params(sim_.get(), &params_); // what the library holds now
 }
 
 void Viewer::ui_rendering() {
@@ -655,7 +871,6 @@ void Viewer::ui_rendering() {
 }
 
 void Viewer::ui_stats() {
-    if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const pf_stats& s = stats_;
     float avg = 0;
     for (float v : frame_ms_) avg += v;
@@ -667,57 +882,144 @@ void Viewer::ui_stats() {
         ImGui::PlotLines("##frame", v.data(), int(v.size()), 0, "frame ms", 0.0f, 2.0f * avg,
                          ImVec2(ImGui::GetContentRegionAvail().x, 32)); // 1.86: no negative sizes here
     }
-    ImGui::Text("particles %u / %u, step %llu, substeps %u", s.particle_count, s.max_particles,
-                static_cast<unsigned long long>(s.steps), s.substeps);
-    ImGui::Text("max speed %.2f m/s", double(s.max_speed));
-    ImGui::Text("flags: %s", pfs::flag_names(s.flags).c_str());
-    if (s.flags) {
-        ImGui::SameLine();
-        if (ImGui::SmallButton("clear")) pf_clear_flags(sim_.get());
-    }
-    // Simulation passes (GPU ms of one step, dispatches) beside the render passes (GPU ms of one
-    // pf_render_* call). GPU figures lag a few frames: the timers are read without stalling.
+    ImGui::Text("particles %u / %u, max speed %.2f m/s", s.particle_count, s.max_particles, double(s.max_speed));
+    ImGui::Text("step %llu, substeps %u", static_cast<unsigned long long>(s.steps), s.substeps);
+    ui_history();
+    // Simulation passes (GPU ms of one step, dispatches) beside what the solve reached; the
+    // render passes (GPU ms of one pf_render_* call) below. GPU figures lag a few frames: the
+    // timers are read without stalling.
     ImGui::Text("GPU ms: step %llu (%u substeps) | render call %llu", static_cast<unsigned long long>(s.gpu_step),
                 s.gpu_substeps, static_cast<unsigned long long>(s.render_frame));
-    const ImGuiTableFlags tf = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
-    if (ImGui::BeginTable("passes", 5, tf)) {
-        ImGui::TableSetupColumn("sim pass", ImGuiTableColumnFlags_WidthStretch, 3.0f);
-        ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthStretch, 1.6f);
-        ImGui::TableSetupColumn("disp", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-        ImGui::TableSetupColumn("render pass", ImGuiTableColumnFlags_WidthStretch, 2.4f);
-        ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthStretch, 1.6f);
-        ImGui::TableHeadersRow();
-        for (int row = 0; row <= PF_PASS_COUNT; ++row) {
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            if (row < PF_PASS_COUNT) {
-                ImGui::TextUnformatted(pf_pass_name(pf_pass(row)));
-                ImGui::TableNextColumn();
-                ImGui::Text("%.3f", double(s.gpu_ms[row]));
-                ImGui::TableNextColumn();
-                ImGui::Text("%u", s.dispatches[row]);
-            } else {
-                ImGui::TextUnformatted("total");
-                ImGui::TableNextColumn();
-                ImGui::Text("%.3f", double(s.gpu_total_ms));
-                ImGui::TableNextColumn();
-            }
-            ImGui::TableNextColumn();
-            if (row < PF_RENDER_PASS_COUNT) {
-                ImGui::TextUnformatted(pf_render_pass_name(pf_render_pass(row)));
-                ImGui::TableNextColumn();
-                ImGui::Text("%.3f", double(s.render_gpu_ms[row]));
-            } else if (row == PF_PASS_COUNT) {
-                ImGui::TextUnformatted("total");
-                ImGui::TableNextColumn();
-                ImGui::Text("%.3f", double(s.render_gpu_total_ms));
-            } else {
-                ImGui::TableNextColumn();
-            }
-        }
+    if (ImGui::BeginTable("price", 2, ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp)) {
+        ImGui::TableSetupColumn("passes", ImGuiTableColumnFlags_WidthStretch);
+        ImGui::TableSetupColumn("accuracy", ImGuiTableColumnFlags_WidthFixed, 150.0f);
+        ImGui::TableNextColumn();
+        ui_pass_table();
+        ImGui::TableNextColumn();
+        ui_accuracy();
         ImGui::EndTable();
     }
+    ui_render_pass_table();
     ImGui::Text("host ms: pf_step %.2f, render call %.2f", double(s.cpu_ms), double(s.render_cpu_ms));
+}
+
+// One sample per newly measured step: GPU ms and the residual come from the same readback.
+void Viewer::record_step() {
+    if (stats_.gpu_step == 0 || stats_.gpu_step == last_sampled_step_) return;
+    last_sampled_step_ = stats_.gpu_step;
+    StepSample sample;
+    sample.gpu_ms = stats_.gpu_total_ms;
+    sample.log_residual = std::log10(std::max(stats_.solver_residual, 1e-12f));
+    if (knob_pending_ && stats_.gpu_step > knob_step_) {
+        sample.knob = true;
+        knob_pending_ = false;
+    }
+    history_.push_back(sample);
+    if (history_.size() > kHistorySteps) history_.pop_front();
+}
+
+// GPU ms per step and log10 residual over the last kHistorySteps measured steps; yellow ticks
+// where a knob changed, the green line is the tolerance.
+void Viewer::ui_history() {
+    if (history_.empty()) return;
+    std::vector<float> ms, res;
+    std::vector<bool> knob;
+    float ms_max = 0, res_lo = 0, res_hi = -12;
+    for (const StepSample& h : history_) {
+        ms.push_back(h.gpu_ms);
+        res.push_back(h.log_residual);
+        knob.push_back(h.knob);
+        ms_max = std::max(ms_max, h.gpu_ms);
+        res_lo = std::min(res_lo, h.log_residual);
+        res_hi = std::max(res_hi, h.log_residual);
+    }
+    // Whole decades around the curve and the tolerance, so the scale only moves when a
+    // knob moves the residual by a decade.
+    const float log_tol = std::log10(std::max(params_.pressure_tolerance, 1e-12f));
+    const float lo = std::floor(std::min(res_lo, log_tol)) - 0.5f;
+    const float hi = std::ceil(std::max(res_hi, log_tol)) + 0.5f;
+    char text[96];
+    std::snprintf(text, sizeof text, "GPU %.2f ms / step (last %zu)", double(ms.back()), ms.size());
+    plot_history("##gpu_ms", ms, knob, 0.0f, 1.15f * std::max(ms_max, 1e-3f), text, -1.0f);
+    std::snprintf(text, sizeof text, "log10 residual %.2f (tolerance %.1e)", double(res.back()),
+                  double(params_.pressure_tolerance));
+    plot_history("##residual", res, knob, lo, hi, text, log_tol);
+}
+
+// The runtime pass list in the library's order. Passes of solvers no longer selected stay in
+// the list with nothing to report; they are hidden unless asked for.
+void Viewer::ui_pass_table() {
+    const ImGuiTableFlags tf = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
+    if (!ImGui::BeginTable("passes", 3, tf)) return;
+    ImGui::TableSetupColumn("sim pass", ImGuiTableColumnFlags_WidthStretch);
+    ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthFixed, 56.0f);
+    ImGui::TableSetupColumn("disp", ImGuiTableColumnFlags_WidthFixed, 36.0f);
+    ImGui::TableHeadersRow();
+    uint32_t idle = 0;
+    for (const pf_pass_stats& p : passes_) {
+        if (!show_idle_passes_ && p.dispatches == 0 && p.gpu_ms == 0.0f) {
+            ++idle;
+            continue;
+        }
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(p.name);
+        tooltip(pf_pass_name(p.group));
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3f", double(p.gpu_ms));
+        ImGui::TableNextColumn();
+        ImGui::Text("%u", p.dispatches);
+    }
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted("total");
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3f", double(stats_.gpu_total_ms));
+    ImGui::EndTable();
+    if (idle > 0 || show_idle_passes_) {
+        char label[48];
+        std::snprintf(label, sizeof label, "show %u idle passes", idle);
+        ImGui::Checkbox(show_idle_passes_ ? "show idle passes" : label, &show_idle_passes_);
+    }
+}
+
+// What the solve reached against what was asked: iterations against the cap, residual
+// against the tolerance, plus the GPU's flags.
+void Viewer::ui_accuracy() {
+    const pf_stats& s = stats_;
+    const pf_sim_params& p = params_;
+    ImGui::TextDisabled("accuracy");
+    ImGui::Text("solver %s", pfs::solver_name(p.pressure_solver));
+    ImGui::Text("iterations %u / %u", s.solver_iterations, p.pressure_iterations);
+    ImGui::Text("residual %.2e", double(s.solver_residual));
+    ImGui::Text("tolerance %.1e", double(p.pressure_tolerance));
+    if (s.gpu_step == 0)
+        ImGui::TextDisabled("(not measured yet)");
+    else if (s.solver_iterations >= p.pressure_iterations && s.solver_residual > p.pressure_tolerance)
+        ImGui::TextColored(ImVec4(1, 0.7f, 0.3f, 1), "stopped at the cap");
+    else
+        ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1), "converged");
+    tooltip("per step: the most iterations and the largest final residual of its substeps");
+    ImGui::Text("%s, %s", pfs::transfer_name(p.transfer), pfs::advection_name(p.advection));
+    ImGui::TextWrapped("flags: %s", pfs::flag_names(s.flags).c_str());
+    if (s.flags && ImGui::SmallButton("clear flags")) pf_clear_flags(sim_.get());
+}
+
+void Viewer::ui_render_pass_table() {
+    const ImGuiTableFlags tf = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+    if (!ImGui::BeginTable("render passes", 2, tf)) return;
+    ImGui::TableSetupColumn("render pass", ImGuiTableColumnFlags_WidthStretch, 3.0f);
+    ImGui::TableSetupColumn("ms", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+    ImGui::TableHeadersRow();
+    for (int row = 0; row <= PF_RENDER_PASS_COUNT; ++row) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        const bool total = row == PF_RENDER_PASS_COUNT;
+        ImGui::TextUnformatted(total ? "total" : pf_render_pass_name(pf_render_pass(row)));
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3f", double(total ? stats_.render_gpu_total_ms : stats_.render_gpu_ms[row]));
+    }
+    ImGui::EndTable();
 }
 
 // ---- main -----------------------------------------------------------------------------------
