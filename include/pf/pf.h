@@ -132,6 +132,18 @@ typedef struct pf_sim_params {
     pf_advection advection;       /**< particle integrator; default (0) PF_ADVECTION_EULER */
 } pf_sim_params;
 
+/** Quality presets: measured points of the accuracy-versus-time trade-off (docs/accuracy.md
+ *  has their cost and accuracy on an H100). Each is a complete pf_sim_params with the default
+ *  gravity; change any field afterwards. */
+typedef enum pf_quality {
+    PF_QUALITY_FAST = 0,         /**< the original's scheme and today's default: 40 Jacobi sweeps,
+                                      PIC/FLIP 0.95, explicit Euler */
+    PF_QUALITY_BALANCED = 1,     /**< MGPCG to a relative residual of 1e-3, PIC/FLIP 0.95, RK2 */
+    PF_QUALITY_ACCURATE = 2,     /**< MGPCG to 1e-5, APIC, RK3 */
+    PF_QUALITY_COUNT = 3,
+    PF_QUALITY_FORCE32 = 0x7fffffff
+} pf_quality;
+
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
 typedef struct pf_sim_desc {
     uint32_t grid_size[3];        /**< cells per axis, each 2..1024; default 32^3 */
@@ -242,6 +254,9 @@ PF_API const char* pf_pass_name(pf_pass pass);
 
 /** Default step parameters. */
 PF_API pf_sim_params pf_default_sim_params(void);
+/** The step parameters of a quality preset; PF_ERROR_INVALID_ARGUMENT (out untouched) for an
+ *  unknown quality or a NULL out. */
+PF_API pf_result pf_quality_params(pf_quality quality, pf_sim_params* out);
 /** Default descriptor (32^3 grid of 5 cm cells); the caller still sets gl_get_proc_address. */
 PF_API pf_sim_desc pf_default_sim_desc(void);
 

@@ -63,6 +63,30 @@ pf_sim_params pf_default_sim_params(void) {
     return p;
 }
 
+pf_result pf_quality_params(pf_quality quality, pf_sim_params* out) {
+    if (!out || uint32_t(quality) >= PF_QUALITY_COUNT) {
+        return kSilent.error(PF_ERROR_INVALID_ARGUMENT, "pf_quality_params: unknown quality or NULL out");
+    }
+    pf_sim_params p = pf_default_sim_params();
+    switch (quality) {
+        case PF_QUALITY_FAST: break;  // the defaults are the original's scheme
+        case PF_QUALITY_BALANCED:
+            p.pressure_solver = PF_PRESSURE_SOLVER_MGPCG;
+            p.pressure_tolerance = 1e-3f;
+            p.advection = PF_ADVECTION_RK2;
+            break;
+        case PF_QUALITY_ACCURATE:
+            p.pressure_solver = PF_PRESSURE_SOLVER_MGPCG;
+            p.pressure_tolerance = 1e-5f;
+            p.transfer = PF_TRANSFER_APIC;
+            p.advection = PF_ADVECTION_RK3;
+            break;
+        default: break;
+    }
+    *out = p;
+    return PF_OK;
+}
+
 pf_sim_desc pf_default_sim_desc(void) {
     pf_sim_desc d{};
     d.grid_size[0] = d.grid_size[1] = d.grid_size[2] = 32;

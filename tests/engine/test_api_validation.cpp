@@ -806,5 +806,46 @@ TEST_F(ApiValidation, ClearParticlesKeepsParams) {
     expect_usable(0, "pf_clear_particles");
 }
 
+// ---------------------------------------------------------------------------------------------
+// Quality presets
+
+TEST(QualityPresets, EachIsValidDistinctAndFastIsTheDefault) {
+    pf_sim_params fast{}, balanced{}, accurate{};
+    ASSERT_EQ(pf_quality_params(PF_QUALITY_FAST, &fast), PF_OK);
+    ASSERT_EQ(pf_quality_params(PF_QUALITY_BALANCED, &balanced), PF_OK);
+    ASSERT_EQ(pf_quality_params(PF_QUALITY_ACCURATE, &accurate), PF_OK);
+    const pf_sim_params def = pf_default_sim_params();
+    EXPECT_TRUE(same_params(fast, def)) << params_str(fast);
+    EXPECT_FALSE(same_params(balanced, fast));
+    EXPECT_FALSE(same_params(accurate, balanced));
+    EXPECT_EQ(balanced.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
+    EXPECT_EQ(accurate.transfer, PF_TRANSFER_APIC);
+    EXPECT_EQ(accurate.advection, PF_ADVECTION_RK3);
+    EXPECT_LT(accurate.pressure_tolerance, balanced.pressure_tolerance);
+}
+
+TEST(QualityPresets, UnknownQualityOrNullOutIsRefusedAndOutUntouched) {
+    pf_sim_params out{};
+    out.cfl = 3.0f;
+    for (int bogus : {int(PF_QUALITY_COUNT), -1, 1000, int(PF_QUALITY_FORCE32)}) {
+        EXPECT_EQ(pf_quality_params(pf_quality(bogus), &out), PF_ERROR_INVALID_ARGUMENT) << bogus;
+        EXPECT_EQ(out.cfl, 3.0f);
+    }
+    EXPECT_EQ(pf_quality_params(PF_QUALITY_FAST, nullptr), PF_ERROR_INVALID_ARGUMENT);
+}
+
+TEST_F(ApiValidation, EveryPresetIsAcceptedAndSteps) {
+    for (int q = 0; q < PF_QUALITY_COUNT; ++q) {
+        pf_sim_params p{};
+        ASSERT_EQ(pf_quality_params(pf_quality(q), &p), PF_OK);
+        ASSERT_EQ(pf_set_params(sim_.get(), &p), PF_OK) << q << ": " << last_log();
+        pf_sim_params got{};
+        ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
+        EXPECT_TRUE(same_params(got, p)) << q;
+        for (int i = 0; i < 3; ++i) ASSERT_EQ(pf_step(sim_.get(), kDt), PF_OK) << q;
+    }
+    expect_usable(kFilled, "after every preset");
+}
+
 }  // namespace
 }  // namespace pf::test
