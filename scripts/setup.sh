@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(
   build-essential cmake ninja-build pkg-config python3 python3-venv python3-pip
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri mesa-utils
-  libgtest-dev glslang-tools libglm-dev libstb-dev nlohmann-json3-dev
+  libgtest-dev glslang-tools libglm-dev libstb-dev nlohmann-json3-dev libcli11-dev
   libglfw3-dev libimgui-dev xvfb xauth ffmpeg
 )
 missing=()

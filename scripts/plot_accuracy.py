@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+"""Plots of pf_accuracy results (docs/accuracy.md): for each knob, every case's accuracy metric
+against GPU milliseconds per frame, and for each case the Pareto front over all configurations.
+
+usage: scripts/plot_accuracy.py RESULTS.json [RESULTS_2.json ...] OUTDIR
+Several result files (e.g. two grid resolutions) are drawn together, labelled by their cell count.
+"""
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import NullFormatter, ScalarFormatter  # noqa: E402
+
+# The accuracy metric of each case (absolute value: smaller is better).
+CASE_METRIC = {
+    "hydrostatic": ("spurious_speed", "spurious speed / sqrt(g dx)"),
+    "rotation": ("angular_momentum_loss_pct", "angular momentum lost, %"),
+    "closed_box": ("kinetic_energy_loss_pct", "kinetic energy lost, %"),
+    "standing_wave": ("period_error_pct", "|period error|, %"),
+    "dam_break": ("volume_drift_pct", "|volume drift|, %"),
+}
+
+
+def load(paths):
+    rows = []
+    for path in paths:
+        with open(path) as f:
+            data = json.load(f)
+        for row in data["results"]:
+            row["n"] = data["cells"]
+            rows.append(row)
+    return rows
+
+
+def value(row):
+    metric = CASE_METRIC[row["case"]][0]
+    v = row["metrics"].get(metric)
+    return None if v is None or v != v else abs(v)  # NaN: no period measured
+
+
+def style(ax, case):
+    ax.set_xscale("log")
+    ax.set_yscale("symlog", linthresh=1e-3)
+    ax.xaxis.set_major_formatter(ScalarFormatter())
+    ax.xaxis.set_minor_formatter(NullFormatter())
+    ax.set_title(case, fontsize=10)
+    ax.set_xlabel("GPU ms per frame")
+    ax.set_ylabel(CASE_METRIC[case][1], fontsize=8)
+    ax.grid(True, which="both", alpha=0.3)
+
+
+def grid(n):
+    cols = 3
+    rows = (n + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(5.0 * cols, 4.0 * rows), squeeze=False)
+    flat = [a for row in axes for a in row]
+    for a in flat[n:]:
+        a.axis("off")
+    return fig, flat[:n]
+
+
+def pareto(points):
+    """Points (ms, error) not beaten in both by another point, sorted by ms."""
+    front, best = [], float("inf")
+    for ms, err, label in sorted(points):
+        if err < best:
+            front.append((ms, err, label))
+            best = err
+    return front
+
+
+def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
+    rows = load(sys.argv[1:-1])
+    out = sys.argv[-1]
+    os.makedirs(out, exist_ok=True)
+    cases = [c for c in CASE_METRIC if any(r["case"] == c for r in rows)]
+    sizes = sorted({r["n"] for r in rows})
+    markers = ["o", "s", "^", "D"]
+    for knob in sorted({r["knob"] for r in rows}):
+        fig, axes = grid(len(cases))
+        for ax, case in zip(axes, cases):
+            for si, n in enumerate(sizes):
+                pts = [r for r in rows if r["knob"] == knob and r["case"] == case and r["n"] == n and value(r) is not None]
+                for r in pts:
+                    ax.scatter(r["gpu_ms_per_frame"], value(r), marker=markers[si % len(markers)])
+                    ax.annotate(f'{r["config"]} ({n}³)' if len(sizes) > 1 else r["config"],
+                                (r["gpu_ms_per_frame"], value(r)), fontsize=7, xytext=(3, 3), textcoords="offset points")
+            style(ax, case)
+        fig.suptitle(f"knob: {knob}")
+        fig.tight_layout()
+        fig.savefig(os.path.join(out, f"knob_{knob}.png"), dpi=110)
+        plt.close(fig)
+    fig, axes = grid(len(cases))
+    for ax, case in zip(axes, cases):
+        for si, n in enumerate(sizes):
+            pts = [(r["gpu_ms_per_frame"], value(r), r["config"]) for r in rows
+                   if r["case"] == case and r["n"] == n and value(r) is not None]
+            ax.scatter([p[0] for p in pts], [p[1] for p in pts], alpha=0.35, marker=markers[si % len(markers)],
+                       label=f"{n}³ cells" if len(sizes) > 1 else None)
+            front = pareto(pts)
+            ax.plot([p[0] for p in front], [p[1] for p in front], "-", lw=1.2)
+            for ms, err, label in front:
+                ax.annotate(label, (ms, err), fontsize=7, xytext=(3, 3), textcoords="offset points")
+        style(ax, case)
+        if len(sizes) > 1:
+            ax.legend(fontsize=7)
+    fig.suptitle("Pareto front over every configuration (lines): nothing is both faster and more accurate")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "pareto.png"), dpi=110)
+    plt.close(fig)
+    print(f"wrote {out}/knob_*.png and {out}/pareto.png")
+
+
+if __name__ == "__main__":
+    main()
