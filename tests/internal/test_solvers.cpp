@@ -235,6 +235,57 @@ TEST_P(SolverLadder, MgpcgIterationsStayFlatAsTheGridDoubles) {
     EXPECT_GT(pcg_fine.iterations, pcg_coarse.iterations + 10);  // what it is flat against
 }
 
+// Mirror symmetry: every reduction adds mirror orbits in a fixed order, so a solver whose cell
+// updates are mirror-exact (Jacobi; CG and PCG, whose scalars come from those reductions) stops
+// after the same iteration and returns the bit-exact mirror image of the solution — the
+// convergence check cannot break the scheme's symmetry. (Red-black orderings swap colours under
+// a mirror of an even axis, and multigrid gathers in a fixed order: those are symmetric only
+// within rounding.)
+Problem mirrored(const Problem& pb, int axis) {
+    Problem m = pb;
+    for (int k = 0; k < pb.grid.nz; ++k)
+        for (int j = 0; j < pb.grid.ny; ++j)
+            for (int i = 0; i < pb.grid.nx; ++i) {
+                glm::ivec3 q(i, j, k);
+                q[axis] = pb.grid.cell_dims()[axis] - 1 - q[axis];
+                m.type[size_t(pb.grid.cell_index(q.x, q.y, q.z))] = pb.type[size_t(pb.grid.cell_index(i, j, k))];
+                m.rhs[size_t(pb.grid.cell_index(q.x, q.y, q.z))] = pb.rhs[size_t(pb.grid.cell_index(i, j, k))];
+            }
+    return m;
+}
+
+class MirrorExactSolvers : public Solvers {};
+
+TEST_P(MirrorExactSolvers, StopTogetherAndMirrorBitForBit) {
+    const Problem pb = bubbly_tank({14, 12, 11}, 17);  // one even and one odd mirrored axis
+    const uint32_t cap = generous_cap(GetParam().solver);
+    const Solved s = solve(pb, 1e-4f, cap, 1);
+    ASSERT_LT(s.iterations, cap);
+    for (int axis : {0, 2}) {
+        const Problem m = mirrored(pb, axis);
+        const Solved sm = solve(m, 1e-4f, cap, 1);
+        EXPECT_EQ(sm.iterations, s.iterations) << "axis " << axis;
+        EXPECT_EQ(sm.reported_residual, s.reported_residual) << "axis " << axis;
+        size_t differ = 0;
+        for (int k = 0; k < pb.grid.nz; ++k)
+            for (int j = 0; j < pb.grid.ny; ++j)
+                for (int i = 0; i < pb.grid.nx; ++i) {
+                    glm::ivec3 q(i, j, k);
+                    q[axis] = pb.grid.cell_dims()[axis] - 1 - q[axis];
+                    const float a = float(s.p[size_t(pb.grid.cell_index(i, j, k))]);
+                    const float b = float(sm.p[size_t(pb.grid.cell_index(q.x, q.y, q.z))]);
+                    differ += std::memcmp(&a, &b, 4) != 0;
+                }
+        EXPECT_EQ(differ, 0u) << "axis " << axis;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(MirrorExact, MirrorExactSolvers,
+                         ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_JACOBI, "jacobi"},
+                                           SolverCase{PF_PRESSURE_SOLVER_CG, "cg"},
+                                           SolverCase{PF_PRESSURE_SOLVER_PCG, "pcg"}),
+                         [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
+
 INSTANTIATE_TEST_SUITE_P(Mgpcg, SolverLadder, ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_MGPCG, "mgpcg"}),
                          [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
 

@@ -15,24 +15,21 @@ layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
 #include "solvers/common/state.glsl"
 #include "solvers/cg/cg_precondition.glsl"
 
-void main() {
-    int c = int(flat_id());
+vec4 cell_contribution(int c) {
     float r = 0.0, z = 0.0;
-    if (c < u_dims.w) {
-        if (cell_type[c] == PF_CELL_FLUID) {
-            PoissonStencil s = poisson_stencil(c);
-            vec3 pair_sum = vec3(0.0);
-            for (int n = 0; n < 6; ++n) {
-                if (s.nb[n] >= 0) pair_sum[n / 2] += x[s.nb[n]];
-            }
-            r = (rhs[c] - rhs_mean()) - (s.diag * x[c] - pair_total(pair_sum));
-            z = precondition(r, s);
-        } else {
-            x[c] = 0.0;  // never read by a neighbour's stencil: no race
+    if (cell_type[c] == PF_CELL_FLUID) {
+        PoissonStencil s = poisson_stencil(c);
+        vec3 pair_sum = vec3(0.0);
+        for (int n = 0; n < 6; ++n) {
+            if (s.nb[n] >= 0) pair_sum[n / 2] += x[s.nb[n]];
         }
-        r_out[c] = r;
+        r = (rhs[c] - rhs_mean()) - (s.diag * x[c] - pair_total(pair_sum));
+        z = precondition(r, s);
+    } else {
+        x[c] = 0.0;  // never read by a neighbour's stencil: no race
     }
-#if PF_PRECOND != PF_PRECOND_STORED
-    store_workgroup_sum(vec4(r * r, r * z, z, r));
-#endif
+    r_out[c] = r;
+    // With a stored z (PF_PRECOND 2) the sums come later (cg_zstats) and these are unused.
+    return vec4(r * r, r * z, z, r);
 }
+#include "solvers/common/orbit_main.glsl"

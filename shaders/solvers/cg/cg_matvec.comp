@@ -9,21 +9,18 @@ layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partial
 #include "solvers/common/poisson.glsl"
 #include "solvers/common/reduce.glsl"
 
-void main() {
-    int c = int(flat_id());
-    float pq = 0.0;
-    if (c < u_dims.w) {
-        float aq = 0.0;
-        if (cell_type[c] == PF_CELL_FLUID) {
-            PoissonStencil s = poisson_stencil(c);
-            vec3 pair_sum = vec3(0.0);
-            for (int n = 0; n < 6; ++n) {
-                if (s.nb[n] >= 0) pair_sum[n / 2] += p[s.nb[n]];
-            }
-            aq = s.diag * p[c] - pair_total(pair_sum);
-            pq = p[c] * aq;
+vec4 cell_contribution(int c) {
+    float aq = 0.0, pq = 0.0;
+    if (cell_type[c] == PF_CELL_FLUID) {
+        PoissonStencil s = poisson_stencil(c);
+        vec3 pair_sum = vec3(0.0);
+        for (int n = 0; n < 6; ++n) {
+            if (s.nb[n] >= 0) pair_sum[n / 2] += p[s.nb[n]];
         }
-        q[c] = aq;
+        aq = s.diag * p[c] - pair_total(pair_sum);
+        pq = p[c] * aq;
     }
-    store_workgroup_sum(vec4(pq, 0.0, 0.0, 0.0));
+    q[c] = aq;
+    return vec4(pq, 0.0, 0.0, 0.0);
 }
+#include "solvers/common/orbit_main.glsl"

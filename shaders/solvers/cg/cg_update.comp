@@ -15,10 +15,9 @@ layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
 #include "solvers/common/state.glsl"
 #include "solvers/cg/cg_precondition.glsl"
 
-void main() {
-    int c = int(flat_id());
+vec4 cell_contribution(int c) {
     float rn = 0.0, z = 0.0;
-    if (c < u_dims.w && cell_type[c] == PF_CELL_FLUID) {
+    if (cell_type[c] == PF_CELL_FLUID) {
         float alpha = state_float(PF_SOLVER_ALPHA);
         x[c] += alpha * p[c];
         rn = r[c] - alpha * q[c];
@@ -27,7 +26,6 @@ void main() {
         z = precondition(rn, poisson_stencil(c));
 #endif
     }
-#if PF_PRECOND != PF_PRECOND_STORED
-    store_workgroup_sum(vec4(rn * rn, rn * z, z, rn));
-#endif
+    return vec4(rn * rn, rn * z, z, rn);  // unused with a stored z (cg_zstats sums then)
 }
+#include "solvers/common/orbit_main.glsl"

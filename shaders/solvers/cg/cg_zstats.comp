@@ -10,12 +10,9 @@ layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partial
 #include "solvers/common/poisson.glsl"
 #include "solvers/common/reduce.glsl"
 
-void main() {
-    int c = int(flat_id());
-    vec4 v = vec4(0.0);
-    if (c < u_dims.w && cell_type[c] == PF_CELL_FLUID) {
-        float rc = r[c], zc = z[c];
-        v = vec4(rc * rc, rc * zc, zc, rc);
-    }
-    store_workgroup_sum(v);
+vec4 cell_contribution(int c) {
+    if (cell_type[c] != PF_CELL_FLUID) return vec4(0.0);
+    float rc = r[c], zc = z[c];
+    return vec4(rc * rc, rc * zc, zc, rc);
 }
+#include "solvers/common/orbit_main.glsl"

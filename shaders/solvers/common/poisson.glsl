@@ -52,3 +52,21 @@ uint cell_color(int c) {
 // Index of a workgroup in a (possibly 2D) dispatch: one partial sum each.
 uint workgroup_index() { return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x; }
 
+
+// Mirror orbits: the cell (i, j, k) and its images under the x and z mirrors (the scheme is
+// mirror symmetric across both; gravity breaks y). A reduction that adds each orbit's 4 cells
+// as ((a + b) + (c + d)) — pairs that swap under one mirror, and pair sums that swap under the
+// other — and then the orbit sums in a fixed order gives bit-identical totals for mirrored
+// inputs: the solvers' convergence decisions and Krylov scalars stay mirror-exact.
+int orbit_count() { return ((u_dims.x + 1) / 2) * u_dims.y * ((u_dims.z + 1) / 2); }
+
+// The orbit's cells (i, k), (x-mirror), (z-mirror), (both); -1 where one repeats another
+// (the middle column of an odd axis).
+ivec4 orbit_cells(int o) {
+    int hx = (u_dims.x + 1) / 2;
+    ivec3 a = ivec3(o % hx, (o / hx) % u_dims.y, o / (hx * u_dims.y));
+    int mx = u_dims.x - 1 - a.x, mz = u_dims.z - 1 - a.z;
+    return ivec4(level_index(a), mx != a.x ? level_index(ivec3(mx, a.y, a.z)) : -1,
+                 mz != a.z ? level_index(ivec3(a.x, a.y, mz)) : -1,
+                 mx != a.x && mz != a.z ? level_index(ivec3(mx, a.y, mz)) : -1);
+}

@@ -15,10 +15,9 @@ layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
 #include "solvers/common/reduce.glsl"
 #include "solvers/common/state.glsl"
 
-void main() {
-    int c = int(flat_id());
+vec4 cell_contribution(int c) {
     float r = 0.0, b = 0.0;
-    if (c < u_dims.w && cell_type[c] == PF_CELL_FLUID) {
+    if (cell_type[c] == PF_CELL_FLUID) {
         PoissonStencil s = poisson_stencil(c);
         vec3 pair_sum = vec3(0.0);
         for (int n = 0; n < 6; ++n) {
@@ -28,5 +27,6 @@ void main() {
         r = b - (s.diag * x[c] - pair_total(pair_sum));
         if (project_nonnegative() && x[c] <= 0.0) r = max(r, 0.0);
     }
-    store_workgroup_sum(vec4(r * r, b * b, 0.0, 0.0));
+    return vec4(r * r, b * b, 0.0, 0.0);
 }
+#include "solvers/common/orbit_main.glsl"

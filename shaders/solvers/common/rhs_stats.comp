@@ -10,17 +10,12 @@ layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partial
 #include "solvers/common/poisson.glsl"
 #include "solvers/common/reduce.glsl"
 
-void main() {
-    int c = int(flat_id());
-    vec4 v = vec4(0.0);
-    if (c < u_dims.w) {
-        uint t = cell_type[c];
-        if (t == PF_CELL_FLUID) {
-            float b = rhs[c];
-            v = vec4(b, b * b, 1.0, 0.0);
-        } else if (t == PF_CELL_AIR) {
-            v.w = 1.0;
-        }
+vec4 cell_contribution(int c) {
+    uint t = cell_type[c];
+    if (t == PF_CELL_FLUID) {
+        float b = rhs[c];
+        return vec4(b, b * b, 1.0, 0.0);
     }
-    store_workgroup_sum(v);
+    return vec4(0.0, 0.0, 0.0, t == PF_CELL_AIR ? 1.0 : 0.0);
 }
+#include "solvers/common/orbit_main.glsl"

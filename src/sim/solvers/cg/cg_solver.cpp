@@ -104,7 +104,7 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
     const gl::Buffer& x = problem.pressure;
     const gl::Buffer& state = control_.state();
     const gl::Buffer& partials = control_.partials();
-    const Indirect cells = control_.record(0);
+    const Indirect cells = control_.record(0), orbits = control_.orbit_record();
     const Uniform dims = control_.dims_uniform();
     auto scalars = [&](ProgramId id) {
         runner.run({id, stat_, PF_WORKGROUP_SIZE, {{PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state}},
@@ -115,7 +115,7 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
         runner.run({ProgramId::cg_zstats, stat_, 0,
                     {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_R, &r_}, {PF_SLOT_SOLVER_Z, &z_},
                      {PF_SLOT_SOLVER_PARTIALS, &partials}},
-                    cells, {dims}});
+                    orbits, {dims}});
     };
     auto direction = [&] {
         const Bind source = stored_ ? Bind{PF_SLOT_SOLVER_Z, &z_} : Bind{PF_SLOT_SOLVER_R, &r_};
@@ -126,7 +126,7 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
 
     control_.begin(runner, stat_, problem, another_round);
     if (stored_) stored_->begin(runner, precondition_stat_, type);
-    runner.run({init_program(), stat_, grid_.cells,
+    runner.run({init_program(), stat_, control_.orbit_count(),
                 {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_RHS, &problem.rhs}, {PF_SLOT_SOLVER_X, &x},
                  {PF_SLOT_SOLVER_R, &r_}, {PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state}},
                 {}, {dims}});
@@ -138,13 +138,13 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
         runner.run({ProgramId::cg_matvec, stat_, 0,
                     {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_Q, &q_},
                      {PF_SLOT_SOLVER_PARTIALS, &partials}},
-                    cells, {dims}});
+                    orbits, {dims}});
         scalars(ProgramId::cg_alpha);
         runner.run({update_program(), stat_, 0,
                     {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_X, &x}, {PF_SLOT_SOLVER_R, &r_},
                      {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_Q, &q_}, {PF_SLOT_SOLVER_PARTIALS, &partials},
                      {PF_SLOT_SOLVER_STATE, &state}},
-                    cells, {dims}});
+                    orbits, {dims}});
         if (stored_) precondition();
         scalars(ProgramId::cg_beta);
         if (k + 1 < issued) direction();

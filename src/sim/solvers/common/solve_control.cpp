@@ -17,11 +17,13 @@ std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const Solv
     std::vector<uint32_t> zeros(PF_SOLVER_WORDS, 0u);
     state_ = gl::Buffer(gl, zeros.size() * 4, GL_DYNAMIC_COPY);
     state_.upload(0, zeros.size() * 4, zeros.data());
-    const int64_t groups = ceil_div(grid.cells, PF_WORKGROUP_SIZE);
+    orbits_ = uint32_t((grid.size.x + 1) / 2) * uint32_t(grid.size.y) * uint32_t((grid.size.z + 1) / 2);
+    const int64_t groups = ceil_div(orbits_, PF_WORKGROUP_SIZE);
     const int64_t gx = std::min<int64_t>(groups, max_groups_x_);
     partials_ = uint32_t(gx * ceil_div(groups, gx));  // a 2D dispatch may add idle workgroups
     partials_buffer_ = gl::Buffer(gl, size_t(partials_) * 16, GL_DYNAMIC_COPY);
     add_record(grid.cells);
+    orbit_record_ = add_record(orbits_);
     for (gl::ProgramId id : {gl::ProgramId::solver_rhs_stats, gl::ProgramId::solver_begin, gl::ProgramId::solver_residual,
                              gl::ProgramId::solver_check, gl::ProgramId::solver_report}) {
         if (std::string error = runner.prepare(id); !error.empty()) return error;
@@ -50,7 +52,7 @@ Uniform SolveControl::dims_uniform(glm::ivec3 dims) {
 void SolveControl::begin(PassRunner& runner, StatId stat, const PressureProblem& problem, bool another_round) {
     runner.run({gl::ProgramId::solver_rhs_stats,
                 stat,
-                grid_.cells,
+                orbits_,
                 {{PF_SLOT_CELL_TYPE, &problem.cell_type}, {PF_SLOT_RHS, &problem.rhs},
                  {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}},
                 {},
@@ -68,13 +70,13 @@ void SolveControl::begin(PassRunner& runner, StatId stat, const PressureProblem&
 void SolveControl::residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct) {
     runner.run({gl::ProgramId::solver_residual,
                 stat,
-                grid_.cells,
+                orbits_,
                 {{PF_SLOT_CELL_TYPE, &problem.cell_type},
                  {PF_SLOT_RHS, &problem.rhs},
                  {PF_SLOT_SOLVER_X, &problem.pressure},
                  {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
                  {PF_SLOT_SOLVER_STATE, &state_}},
-                direct ? Indirect{} : record(0),
+                direct ? Indirect{} : orbit_record(),
                 {dims_uniform()}});
 }
 

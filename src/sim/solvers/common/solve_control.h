@@ -20,12 +20,16 @@ namespace pf {
 class SolveControl {
 public:
     // Allocates the state and partials buffers and builds the shared programs; record 0 is
-    // the fine grid's cells. Returns an error message, empty on success.
+    // the fine grid's cells, record orbit_record() its mirror orbits (the reduction kernels
+    // work per orbit, shaders/solvers/common/poisson.glsl). Returns an error message, empty on success.
     std::string init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid);
     // Adds an indirect record dispatching `invocations` (a coarser grid level); its index.
     uint32_t add_record(uint64_t invocations);
     Indirect record(uint32_t k) const;
-    // Workgroups (and partial sums) of a cell-wide pass over the fine grid.
+    // Indirect record and size of the reduction kernels' dispatch: one invocation per orbit.
+    Indirect orbit_record() const { return record(orbit_record_); }
+    uint32_t orbit_count() const { return orbits_; }
+    // Workgroups (and partial sums) of a reduction pass over the fine grid.
     uint32_t partial_count() const { return partials_; }
 
     // Resets the state for a new solve of `problem` (tolerance, singular mean, b.b); a further
@@ -50,6 +54,7 @@ private:
     SolverGrid grid_{};
     gl::Buffer state_, partials_buffer_;
     uint32_t partials_ = 0;
+    uint32_t orbits_ = 0, orbit_record_ = 0;
     uint32_t records_ = 0;
     GLint max_groups_x_ = 65535;
 };
