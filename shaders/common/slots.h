@@ -70,7 +70,8 @@
 #define PF_STATUS_MAX_SPEED 1
 #define PF_STATUS_SOLVER_ITERATIONS 2  /* most pressure iterations of a substep in the step */
 #define PF_STATUS_SOLVER_RESIDUAL 3    /* largest final relative residual (float bits) */
-#define PF_STATUS_SOLVER_ROUND_ITERATIONS 4 /* most iterations of one solve round (an active-set round) */
+#define PF_STATUS_SOLVER_FIRST_ROUND 4 /* most iterations of a solve's first round */
+#define PF_STATUS_SOLVER_LATER_ROUNDS 5 /* most iterations of one later round (active-set rounds) */
 #define PF_STATUS_WORDS 8
 
 /* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */

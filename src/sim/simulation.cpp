@@ -258,8 +258,10 @@ void Simulation::run_substep() {
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
             {PF_SLOT_PRESSURE, &pressure_}}});
     // What this solver needed recently (a readback of another solver's step says nothing).
-    const uint32_t recent = recent_solver_ == desc_.params.pressure_solver ? recent_iterations_ : kUnknownIterations;
-    solver_->solve(r, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params, recent});
+    const bool known = recent_solver_ == desc_.params.pressure_solver;
+    solver_->solve(r, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params,
+                                      known ? recent_iterations_ : kUnknownIterations,
+                                      known ? recent_later_iterations_ : kUnknownIterations});
     r.run({ProgramId::velocity_update, stat_.velocity_update, faces,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
             {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}}});
@@ -315,9 +317,10 @@ pf_result Simulation::step(float frame_dt) {
 
     // The max-speed word restarts every step; flag bits accumulate (a pf_push between steps
     // may have set one) until pf_clear_flags.
-    const uint32_t zeros[4] = {0, 0, 0, 0};  // max speed, solver iterations, residual, round iterations
+    const uint32_t zeros[5] = {0, 0, 0, 0, 0};  // max speed, solver iterations, residual, rounds
     static_assert(PF_STATUS_SOLVER_ITERATIONS == PF_STATUS_MAX_SPEED + 1 && PF_STATUS_SOLVER_RESIDUAL == PF_STATUS_MAX_SPEED + 2 &&
-                      PF_STATUS_SOLVER_ROUND_ITERATIONS == PF_STATUS_MAX_SPEED + 3,
+                      PF_STATUS_SOLVER_FIRST_ROUND == PF_STATUS_MAX_SPEED + 3 &&
+                      PF_STATUS_SOLVER_LATER_ROUNDS == PF_STATUS_MAX_SPEED + 4,
                   "the per-step status words are contiguous");
     status_.upload(PF_STATUS_MAX_SPEED * 4, sizeof(zeros), zeros);
     upload_uniforms(frame_dt / float(substeps));
@@ -399,7 +402,8 @@ void Simulation::poll_status() const {
             status_step_ = fence_step_[s];
             std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
             solver_iterations_ = words[PF_STATUS_SOLVER_ITERATIONS];
-            recent_iterations_ = words[PF_STATUS_SOLVER_ROUND_ITERATIONS];
+            recent_iterations_ = words[PF_STATUS_SOLVER_FIRST_ROUND];
+            recent_later_iterations_ = words[PF_STATUS_SOLVER_LATER_ROUNDS];
             recent_solver_ = fence_solver_[s];
             std::memcpy(&solver_residual_, &words[PF_STATUS_SOLVER_RESIDUAL], sizeof(float));
         }

@@ -130,7 +130,8 @@ private:
     mutable float gpu_max_speed_ = 0.0f;   // its max speed
     mutable uint32_t solver_iterations_ = 0;  // its pressure iterations (most of a substep)
     mutable float solver_residual_ = 0.0f;    // its largest final relative residual
-    mutable uint32_t recent_iterations_ = 0;  // its most iterations in one solve round...
+    mutable uint32_t recent_iterations_ = 0;  // its most iterations in a first solve round...
+    mutable uint32_t recent_later_iterations_ = 0;  // ...and in one later (active-set) round...
     mutable pf_pressure_solver recent_solver_ = PF_PRESSURE_SOLVER_COUNT;  // ...of this solver
     pf_pressure_solver fence_solver_[kReadbackSlots] = {};  // the solver of each readback's step
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits

@@ -35,10 +35,12 @@ void main() {
     set_state_float(PF_SOLVER_Z_MEAN, 0.0);
     if (u_keep_iterations == 0u) {
         state[PF_SOLVER_ITERATIONS] = 0u;
-        state[PF_SOLVER_ROUND_MAX] = 0u;
+        state[PF_SOLVER_ROUND] = 0u;
+        state[PF_SOLVER_FIRST_ROUND] = 0u;
+        state[PF_SOLVER_LATER_ROUNDS] = 0u;
     } else {
-        uint round = state[PF_SOLVER_ITERATIONS] - state[PF_SOLVER_ROUND_START];
-        state[PF_SOLVER_ROUND_MAX] = max(state[PF_SOLVER_ROUND_MAX], round);
+        finish_round();
+        state[PF_SOLVER_ROUND] += 1u;
     }
     state[PF_SOLVER_ROUND_START] = state[PF_SOLVER_ITERATIONS];
     state[PF_SOLVER_CONVERGED] = 0u;

@@ -26,8 +26,9 @@ void main() {
     set_state_float(PF_SOLVER_RESIDUAL, rel);
 #if PF_CHECK_FINAL
     atomicMax(status[PF_STATUS_SOLVER_ITERATIONS], state[PF_SOLVER_ITERATIONS]);
-    uint round = state[PF_SOLVER_ITERATIONS] - state[PF_SOLVER_ROUND_START];
-    atomicMax(status[PF_STATUS_SOLVER_ROUND_ITERATIONS], max(state[PF_SOLVER_ROUND_MAX], round));
+    finish_round();
+    atomicMax(status[PF_STATUS_SOLVER_FIRST_ROUND], state[PF_SOLVER_FIRST_ROUND]);
+    atomicMax(status[PF_STATUS_SOLVER_LATER_ROUNDS], state[PF_SOLVER_LATER_ROUNDS]);
     atomicMax(status[PF_STATUS_SOLVER_RESIDUAL], floatBitsToUint(rel));  // rel >= 0: bits order like values
 #else
     state[PF_SOLVER_ITERATIONS] += u_iterations;

@@ -22,7 +22,9 @@
 #define PF_SOLVER_PARTIALS 13    /* uint: partial sums written by the cell-wide reduction kernels */
 #define PF_SOLVER_RECORDS 14     /* uint: indirect-dispatch records in use */
 #define PF_SOLVER_ROUND_START 15 /* uint: ITERATIONS when the current round (of an active-set solve) began */
-#define PF_SOLVER_ROUND_MAX 17   /* uint: most iterations of a finished round of this solve */
+#define PF_SOLVER_ROUND 16       /* uint: index of the current round (0: the first solve) */
+#define PF_SOLVER_FIRST_ROUND 17 /* uint: iterations of round 0, once it is finished */
+#define PF_SOLVER_LATER_ROUNDS 18 /* uint: most iterations of a finished later round */
 #define PF_SOLVER_SCALARS 20     /* words before the first indirect record (a multiple of 4) */
 
 /* Indirect-dispatch record k: words PF_SOLVER_SCALARS + 4k .. +2 = workgroups (x, y, z); its

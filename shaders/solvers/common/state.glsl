@@ -20,6 +20,16 @@ void stop_solve() {
     for (uint k = 0u; k < records; ++k) state[PF_SOLVER_SCALARS + 4u * k] = 0u;
 }
 
+// Books the iterations of the round that just ended (round 0 apart from the later ones: a later
+// round starts from a nearly converged pressure and needs far fewer).
+void finish_round() {
+    uint done = state[PF_SOLVER_ITERATIONS] - state[PF_SOLVER_ROUND_START];
+    if (state[PF_SOLVER_ROUND] == 0u)
+        state[PF_SOLVER_FIRST_ROUND] = done;
+    else
+        state[PF_SOLVER_LATER_ROUNDS] = max(state[PF_SOLVER_LATER_ROUNDS], done);
+}
+
 // Relative residual from r.r and b.b (0 when both are 0; 1 for a residual with b = 0).
 float relative_residual(float rr, float bb) {
     if (bb > 0.0) return sqrt(max(rr, 0.0) / bb);

@@ -27,8 +27,9 @@ struct SolverGrid {
 // One substep's problem: A p = rhs on FLUID cells (cell_type), p = 0 in AIR; `pressure` holds
 // the previous substep's solution (a warm start) and receives the new one. `status` is the
 // simulation's status buffer (solvers report iterations and residual into it).
-// `recent_iterations` is what this solver needed in one round of a recent step, read back a few
-// steps late (kUnknownIterations: not known yet). Every issued iteration costs dispatches even after the GPU
+// `recent_iterations` is what this solver needed in the first round of a solve in a recent step,
+// and `recent_later_iterations` in one later round (active-set rounds start nearly converged),
+// read back a few steps late (kUnknownIterations: not known yet). Every issued iteration costs dispatches even after the GPU
 // has found convergence and emptied them, so solvers issue only a margin above it
 // (issued_iterations); a solve that needs more stops early, reports its residual, and the
 // next steps issue more.
@@ -41,12 +42,14 @@ struct PressureProblem {
     const gl::Buffer& status;
     const pf_sim_params& params;
     uint32_t recent_iterations = kUnknownIterations;
+    uint32_t recent_later_iterations = kUnknownIterations;
 };
 
 // Iterations to issue for one solve round: all of params.pressure_iterations until the solver's
 // needs are known, then 1.5 times the recent need plus 4, within the cap.
-inline uint32_t issued_iterations(const PressureProblem& problem) {
-    const uint32_t cap = problem.params.pressure_iterations, recent = problem.recent_iterations;
+inline uint32_t issued_iterations(const PressureProblem& problem, bool later_round = false) {
+    const uint32_t cap = problem.params.pressure_iterations;
+    const uint32_t recent = later_round ? problem.recent_later_iterations : problem.recent_iterations;
     if (recent == kUnknownIterations) return cap;
     const uint64_t margin = recent + recent / 2 + 4;
     return uint32_t(margin < cap ? margin : cap);

@@ -70,8 +70,9 @@ void ConjugateGradientSolver::solve(PassRunner& runner, const PressureProblem& p
     // Active-set rounds on a working copy of the cell types; the report measures the
     // complementarity residual with the real ones.
     runner.copy(problem.cell_type, working_type_, size_t(grid_.cells) * 4);
-    const PressureProblem working{working_type_, problem.rhs,    problem.pressure,
-                                  problem.status, problem.params, problem.recent_iterations};
+    const PressureProblem working{working_type_,  problem.rhs,    problem.pressure,
+                                  problem.status, problem.params, problem.recent_iterations,
+                                  problem.recent_later_iterations};
     const Pass clamp{ProgramId::separation_clamp,
                      stat_,
                      grid_.cells,
@@ -133,7 +134,7 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
     if (stored_) precondition();
     scalars(ProgramId::cg_start);
     direction();
-    const uint32_t issued = issued_iterations(problem);
+    const uint32_t issued = issued_iterations(problem, another_round);
     for (uint32_t k = 0; k < issued; ++k) {
         runner.run({ProgramId::cg_matvec, stat_, 0,
                     {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_Q, &q_},
