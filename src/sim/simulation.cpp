@@ -133,10 +133,11 @@ pf_result Simulation::init() {
                       r.add_stat("extrapolate", PF_PASS_EXTRAPOLATE),
                       r.add_stat("g2p", PF_PASS_G2P),
                       r.add_stat("advect", PF_PASS_ADVECT),
-                      r.add_stat("metrics", PF_PASS_VELOCITY_UPDATE)};
+                      r.add_stat("metrics", PF_PASS_VELOCITY_UPDATE),
+                      r.add_stat("hydrostatic_start", PF_PASS_PRESSURE_SETUP)};
     const ProgramId needed[] = {ProgramId::fill, ProgramId::grid_forces, ProgramId::classify,
                                 ProgramId::pressure_setup, ProgramId::velocity_update, ProgramId::extrapolate,
-                                ProgramId::metrics, ProgramId::metrics_finish};
+                                ProgramId::metrics, ProgramId::metrics_finish, ProgramId::hydrostatic_start};
     for (ProgramId id : needed) {
         if (std::string error = r.prepare(id); !error.empty())
             return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
@@ -265,6 +266,15 @@ void Simulation::run_substep() {
     r.run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
             {PF_SLOT_PRESSURE, &pressure_}}});
+    if (hydrostatic_start_pending_) {
+        // One invocation per column along gravity's dominant axis (the kernel picks the same).
+        const float* g = desc_.params.gravity;
+        const float ax = std::abs(g[0]), ay = std::abs(g[1]), az = std::abs(g[2]);
+        const int axis = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+        r.run({ProgramId::hydrostatic_start, stat_.hydrostatic_start, cells / desc_.grid_size[axis],
+               {{PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_}}});
+        hydrostatic_start_pending_ = false;
+    }
     solver_->solve(r, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params});
     r.run({ProgramId::velocity_update, stat_.velocity_update, faces,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
@@ -462,6 +472,7 @@ pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t
     }
     particle_count_ += n;
     restart_volume_reference();
+    hydrostatic_start_pending_ = true;  // the new particles' cells hold p = 0
     added_speed_ = (added_at_step_ > status_step_) ? std::max(added_speed_, fastest) : fastest;
     added_at_step_ = steps_ + 1;
     return PF_OK;

@@ -103,6 +103,7 @@ private:
     struct CoreStats {
         StatId clear, p2g, grid_forces, classify, pressure_setup, velocity_update, extrapolate, g2p, advect;
         StatId metrics;  // once per step, in the PF_PASS_VELOCITY_UPDATE group
+        StatId hydrostatic_start;  // after particles were added, in the PF_PASS_PRESSURE_SETUP group
     };
 
     gl::Api gl_{};
@@ -126,6 +127,9 @@ private:
     gl::Buffer face_accum_, face_vel_, face_vel_old_, face_valid_[2];
     gl::Buffer cell_count_, cell_type_, pressure_, rhs_;
     int valid_current_ = 0;     // which valid mask is the latest
+    // The next substep starts its solve from the hydrostatic estimate (particles were added to
+    // cells whose pressure is 0: creation, pf_add_particles, pf_fill_box; docs/design.md §4.5a).
+    bool hydrostatic_start_pending_ = true;
     SimUniforms uniform_data_{};
 
     // status (flags, max speed) read back a few steps late, behind fences

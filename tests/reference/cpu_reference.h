@@ -148,10 +148,18 @@ glm::dvec3 keep_in_domain(const Grid& grid, glm::dvec3 world_pos);
 void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>& vel, double dt,
                Advection scheme);
 
+// §4.5a: the hydrostatic start. Along gravity's dominant axis a (ties: x before y before z),
+// the run of L FLUID cells resting on the floor of each column gets, in its k-th cell from the
+// floor, p = ρ·|g_a|·dx·(L - k) where p is still 0. Other cells are unchanged.
+void hydrostatic_start(const Grid& grid, const std::vector<uint8_t>& type, glm::dvec3 gravity,
+                       double density, std::vector<double>& pressure);
+
 // Pressure (Pa) per cell, the warm start of the next substep's solve. Resized to
-// grid.cells() zeros when its size does not match.
+// grid.cells() zeros when its size does not match. hydrostatic_start: the next substep starts
+// from §4.5a (as the GPU does after particles are added).
 struct SubstepState {
     std::vector<double> pressure;
+    bool hydrostatic_start = true;
 };
 
 // Steps 1-10 of §4 in order. jacobi_iterations < 0 replaces the Jacobi solve by

@@ -69,6 +69,27 @@ inline double particle_volume_of(const std::vector<uint32_t>& count, const pf_si
     return cells * double(d.cell_size) * d.cell_size * d.cell_size;
 }
 
+// Depth of a liquid at rest: the mean over occupied cell columns (x, z) of the highest particle's
+// height above the grid's floor, in metres.
+inline double surface_depth_of(const ParticleState& p, const pf_sim_desc& d) {
+    const uint32_t nx = d.grid_size[0], nz = d.grid_size[2];
+    std::vector<double> top(size_t(nx) * nz, -1.0);
+    for (size_t i = 0; i < p.count(); ++i) {
+        const int cx = std::clamp(int(std::floor((p.pos[i * 3] - d.origin[0]) / d.cell_size)), 0, int(nx) - 1);
+        const int cz = std::clamp(int(std::floor((p.pos[i * 3 + 2] - d.origin[2]) / d.cell_size)), 0, int(nz) - 1);
+        double& t = top[size_t(cz) * nx + size_t(cx)];
+        t = std::max(t, double(p.pos[i * 3 + 1]) - d.origin[1]);
+    }
+    double sum = 0;
+    size_t columns = 0;
+    for (double t : top) {
+        if (t < 0) continue;
+        sum += t;
+        ++columns;
+    }
+    return columns ? sum / double(columns) : 0.0;
+}
+
 inline ParticleState read_all(pf_sim* sim) {
     pf_stats st{};
     pf_get_stats(sim, &st);
