@@ -106,7 +106,8 @@ typedef enum pf_advection {
 } pf_advection;
 
 /** Parameters that may change between steps (pf_set_params). Fields marked "0 = default"
- *  take their default when zero; gravity, flip_ratio and separation take zero literally. */
+ *  take their default when zero; gravity, flip_ratio, separation and volume_correction take zero
+ *  literally. */
 typedef struct pf_sim_params {
     float gravity[3];             /**< body acceleration in m/s^2; default (0, -9.81, 0) */
     float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 (ignored with
@@ -130,6 +131,11 @@ typedef struct pf_sim_params {
     float sor_omega;              /**< over-relaxation of PF_PRESSURE_SOLVER_RBGS in (0, 2); 0 = default 1.6 */
     pf_transfer transfer;         /**< grid-particle transfer; default (0) PF_TRANSFER_PIC_FLIP */
     pf_advection advection;       /**< particle integrator; default (0) PF_ADVECTION_EULER */
+    float volume_correction;      /**< particle-density volume correction in [0, 1] (docs/design.md §4.5): the
+                                       fraction of a FLUID cell's excess particle count (beyond
+                                       fill_particles_per_cell) the pressure projection spreads out per
+                                       substep, against PIC/FLIP's slow compression. 0 = off (a zero value is
+                                       taken literally, like flip_ratio); default 0.1 */
 } pf_sim_params;
 
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */

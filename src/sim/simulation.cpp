@@ -243,6 +243,7 @@ void Simulation::upload_uniforms(float dt) {
     u.particle_count = particle_count_;
     u.separation = desc_.params.separation;
     u.rest_particles = float(desc_.fill_particles_per_cell);
+    u.volume_correction = desc_.params.volume_correction;
     uniforms_.upload(0, sizeof(SimUniforms), &u);
 }
 
@@ -264,8 +265,8 @@ void Simulation::run_substep() {
     r.run({ProgramId::classify, stat_.classify, cells,
            {{PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_CELL_TYPE, &cell_type_}}});
     r.run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
-           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
-            {PF_SLOT_PRESSURE, &pressure_}}});
+           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_CELL_COUNT, &cell_count_},
+            {PF_SLOT_RHS, &rhs_}, {PF_SLOT_PRESSURE, &pressure_}}});
     if (hydrostatic_start_pending_) {
         // One invocation per column along gravity's dominant axis (the kernel picks the same).
         const float* g = desc_.params.gravity;

@@ -222,6 +222,23 @@ void hydrostatic_start(const Grid& grid, const std::vector<uint8_t>& type, glm::
     }
 }
 
+std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
+                                 const std::vector<double>& vel, double density, double dt,
+                                 const std::vector<uint32_t>& count, double rest, double k) {
+    std::vector<double> b = pressure_rhs(grid, type, vel, density, dt);
+    for_each_cell(grid, [&](int i, int j, int k_, int id) {
+        if (type[id] != FLUID) return;
+        // e = min(count/rest - 1, 1); a cell with an AIR neighbour only corrects compression.
+        double excess = std::min(double(count[id]) / rest - 1.0, 1.0);
+        bool surface = false;
+        for_each_neighbour(grid, i, j, k_, [&](int n) { surface = surface || type[n] == AIR; });
+        if (surface) excess = std::max(excess, 0.0);
+        // Target divergence D = k·e·dx/dt (m/s): b = -(div - D)·ρ·dx/dt.
+        b[id] += k * excess * density * grid.dx * grid.dx / (dt * dt);
+    });
+    return b;
+}
+
 std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type,
                               const std::vector<double>& p) {
     std::vector<double> out(grid.cells(), 0.0);

@@ -90,6 +90,11 @@ std::vector<double> divergence(const Grid& grid, const std::vector<uint8_t>& typ
 // §4.5: b = -div·ρ·dx/dt for FLUID cells, 0 elsewhere.
 std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
                                  const std::vector<double>& vel, double density, double dt);
+// §4.5 with the volume correction: FLUID cells also get b += k·e·ρ·dx²/dt² with
+// e = min(count/rest − 1, 1), and e = max(e, 0) in cells with an AIR neighbour.
+std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
+                                 const std::vector<double>& vel, double density, double dt,
+                                 const std::vector<uint32_t>& count, double rest, double k);
 
 // §4.6 operator: (A p)_i = Σ_{j∈N(i)} (p_i - p_j) for FLUID i, with N(i) the in-domain
 // neighbours (walls excluded) and p_j = 0 for non-FLUID j; 0 for non-FLUID i. The pressure
