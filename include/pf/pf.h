@@ -106,7 +106,8 @@ typedef enum pf_advection {
 } pf_advection;
 
 /** Parameters that may change between steps (pf_set_params). Fields marked "0 = default"
- *  take their default when zero; gravity, flip_ratio and separation take zero literally. */
+ *  take their default when zero; gravity, flip_ratio, separation and volume_correction take zero
+ *  literally. */
 typedef struct pf_sim_params {
     float gravity[3];             /**< body acceleration in m/s^2; default (0, -9.81, 0) */
     float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 (ignored with
@@ -130,6 +131,11 @@ typedef struct pf_sim_params {
     float sor_omega;              /**< over-relaxation of PF_PRESSURE_SOLVER_RBGS in (0, 2); 0 = default 1.6 */
     pf_transfer transfer;         /**< grid-particle transfer; default (0) PF_TRANSFER_PIC_FLIP */
     pf_advection advection;       /**< particle integrator; default (0) PF_ADVECTION_EULER */
+    float volume_correction;      /**< particle-density volume correction in [0, 1] (docs/design.md §4.5): the
+                                       fraction of a FLUID cell's excess particle count (beyond
+                                       fill_particles_per_cell) the pressure projection spreads out per
+                                       substep, against PIC/FLIP's slow compression. 0 = off (a zero value is
+                                       taken literally, like flip_ratio); default 0.1 */
 } pf_sim_params;
 
 /** Quality presets: measured points of the accuracy-versus-time trade-off (docs/accuracy.md
@@ -172,7 +178,9 @@ typedef enum pf_pass {
     PF_PASS_CLASSIFY = 3,         /**< mark cells fluid / air */
     PF_PASS_PRESSURE_SETUP = 4,   /**< divergence right-hand side */
     PF_PASS_PRESSURE_SOLVE = 5,   /**< Jacobi iterations */
-    PF_PASS_VELOCITY_UPDATE = 6,  /**< subtract pressure gradient, free-slip walls */
+    PF_PASS_VELOCITY_UPDATE = 6,  /**< subtract pressure gradient, free-slip walls; also holds the
+                                       once-per-step accuracy metrics (pass list entry "metrics"),
+                                       which measure what the projection left */
     PF_PASS_EXTRAPOLATE = 7,      /**< extend velocity into air faces */
     PF_PASS_G2P = 8,              /**< grid-to-particle transfer (PIC/FLIP blend or APIC) */
     PF_PASS_ADVECT = 9,           /**< move particles, keep them in the domain */
@@ -223,6 +231,26 @@ typedef struct pf_stats {
     float render_gpu_ms[PF_RENDER_PASS_COUNT]; /**< GPU ms per render pass of that call */
     float render_gpu_total_ms;        /**< sum of render_gpu_ms */
     float render_cpu_ms;              /**< host time inside the last render call */
+    /* Accuracy metrics (docs/design.md §4.11), measured on the GPU once per pf_step and read back
+     * a few steps late like max_speed, never waited for. The grid figures are those of the
+     * step's last substep after its velocity update; the particle figures those of the step's
+     * end. */
+    uint64_t metrics_step;            /**< which pf_step the metrics below belong to (0: none measured yet) */
+    float divergence_l2;              /**< RMS over FLUID cells of the discrete divergence the pressure
+                                           solve left, 1/s: div = (sum of face-velocity differences) / dx */
+    float divergence_max;             /**< largest |div| over FLUID cells, 1/s */
+    float kinetic_energy;             /**< 0.5 m sum |v|^2 over the particles, J, with the particle mass
+                                           m = density * cell_size^3 / fill_particles_per_cell */
+    uint32_t fluid_cells;             /**< FLUID cells (cells holding a particle) */
+    float fluid_cell_drift;           /**< fluid_cells / (fluid_cells at the first measured step) - 1; the
+                                           reference restarts with the first step measured after particles
+                                           are added or cleared */
+    float particle_volume;            /**< particle-density volume, m^3: cell_size^3 * sum over cells of
+                                           min(count / fill_particles_per_cell, 1). Particles beyond the rest
+                                           count add nothing, so it falls exactly where particles clump
+                                           (compression); thin sheets still count their particles */
+    float particle_volume_drift;      /**< particle_volume / (particle_volume at the first measured step) - 1,
+                                           same reference as fluid_cell_drift */
 } pf_stats;
 
 /** One entry of the per-pass statistics list (pf_get_pass_stats). The list is built at run

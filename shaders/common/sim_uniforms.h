@@ -19,4 +19,8 @@ PF_UNIFORM(float, inv_weight_scale)   /* 1 / S_w */
 PF_UNIFORM(float, flip_ratio)         /* 0 = PIC, 1 = FLIP */
 PF_UNIFORM(uint, particle_count)      /* live particles */
 PF_UNIFORM(uint, separation)          /* 1: pressure is kept >= 0 (liquid may leave walls) */
+PF_UNIFORM(float, rest_particles)     /* particles per cell at rest density (desc.fill_particles_per_cell) */
+PF_UNIFORM(float, volume_correction)  /* pressure setup: fraction of a cell's excess particle density removed per substep */
 PF_UNIFORM(uint, pad0)
+PF_UNIFORM(uint, pad1)
+PF_UNIFORM(uint, pad2)

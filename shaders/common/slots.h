@@ -43,6 +43,11 @@
 #define PF_SLOT_MG_COARSE_TYPE 2
 #define PF_SLOT_MG_COARSE_R 4
 #define PF_SLOT_MG_COARSE_E 5
+/* storage blocks of the accuracy-metrics kernels (sim/metrics*.comp): the particle/face group's
+ * slots for what they read, and the face accumulator's slot (4, unused there) for their partial sums */
+#define PF_SLOT_METRICS_PARTIALS 4
+/* storage blocks of the hydrostatic pressure estimate (sim/hydrostatic_start.comp) use
+ * PF_SLOT_CELL_TYPE and PF_SLOT_PRESSURE */
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
@@ -56,6 +61,9 @@
 #define PF_LOC_PUSH_CENTER_RADIUS 0
 #define PF_LOC_PUSH_DV_MAX_SPEED 1
 #define PF_LOC_PUSH_COUNT 2
+
+/* explicit uniform location of the metrics reduction: workgroups (partial-sum pairs) to add */
+#define PF_LOC_METRICS_GROUPS 0
 
 /* uniform block with the per-step constants (common/sim.glsl, src/sim/sim_uniforms.h) */
 #define PF_UBO_SIM 0
@@ -72,7 +80,14 @@
 #define PF_STATUS_SOLVER_RESIDUAL 3    /* largest final relative residual (float bits) */
 #define PF_STATUS_SOLVER_FIRST_ROUND 4 /* most iterations of a solve's first round */
 #define PF_STATUS_SOLVER_LATER_ROUNDS 5 /* most iterations of one later round (active-set rounds) */
-#define PF_STATUS_WORDS 8
+/* accuracy metrics of the step (its last substep's grid, its final particle velocities), written
+ * once per step by sim/metrics_finish.comp; floats as bits unless noted */
+#define PF_STATUS_DIVERGENCE_L2 6      /* RMS of div u over FLUID cells after the projection, 1/s */
+#define PF_STATUS_DIVERGENCE_MAX 7     /* max |div u| over FLUID cells, 1/s */
+#define PF_STATUS_KINETIC_ENERGY 8     /* 0.5 m sum |v|^2 over the particles, J */
+#define PF_STATUS_FLUID_CELLS 9        /* FLUID cells (uint) */
+#define PF_STATUS_PARTICLE_VOLUME 10   /* dx^3 sum over cells of min(count / rest count, 1), m^3 */
+#define PF_STATUS_WORDS 12
 
 /* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */
 #define PF_GPU_FLAG_P2G_OVERFLOW 1u

@@ -60,6 +60,7 @@ pf_sim_params pf_default_sim_params(void) {
     p.pressure_solver = PF_PRESSURE_SOLVER_JACOBI;
     p.pressure_tolerance = 1e-4f;
     p.sor_omega = 1.6f;
+    p.volume_correction = 0.1f;  // measured: docs/design.md §4.5
     return p;
 }
 

@@ -60,6 +60,8 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
         return bad("params.transfer is not a pf_transfer value, got " + std::to_string(int(p.transfer)));
     if (uint32_t(p.advection) >= PF_ADVECTION_COUNT)
         return bad("params.advection is not a pf_advection value, got " + std::to_string(int(p.advection)));
+    if (!(p.volume_correction >= 0.0f && p.volume_correction <= 1.0f))
+        return bad("params.volume_correction must be in [0, 1], got " + str(p.volume_correction));
     if (p.extrapolation_layers < 1 || p.extrapolation_layers > 16)
         return bad("params.extrapolation_layers must be in [1, 16], got " + std::to_string(p.extrapolation_layers));
     return PF_OK;

@@ -113,6 +113,9 @@ pf_result Simulation::init() {
     uniforms_ = gl::Buffer(gl_, sizeof(SimUniforms), GL_DYNAMIC_DRAW);
     status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY);
     for (auto& b : readback_) b = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_STREAM_READ);
+    gl_.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups_x_);
+    metrics_partials_ = gl::Buffer(
+        gl_, size_t(workgroups_for(std::max<uint64_t>(uint64_t(cells_), desc_.max_particles))) * 32, GL_DYNAMIC_COPY);
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
                           "pf_create: allocating " + std::to_string((np * 32 + size_t(faces_) * 24 + size_t(cells_) * 20) >> 20) +
@@ -129,9 +132,12 @@ pf_result Simulation::init() {
                       r.add_stat("velocity_update", PF_PASS_VELOCITY_UPDATE),
                       r.add_stat("extrapolate", PF_PASS_EXTRAPOLATE),
                       r.add_stat("g2p", PF_PASS_G2P),
-                      r.add_stat("advect", PF_PASS_ADVECT)};
+                      r.add_stat("advect", PF_PASS_ADVECT),
+                      r.add_stat("metrics", PF_PASS_VELOCITY_UPDATE),
+                      r.add_stat("hydrostatic_start", PF_PASS_PRESSURE_SETUP)};
     const ProgramId needed[] = {ProgramId::fill, ProgramId::grid_forces, ProgramId::classify,
-                                ProgramId::pressure_setup, ProgramId::velocity_update, ProgramId::extrapolate};
+                                ProgramId::pressure_setup, ProgramId::velocity_update, ProgramId::extrapolate,
+                                ProgramId::metrics, ProgramId::metrics_finish, ProgramId::hydrostatic_start};
     for (ProgramId id : needed) {
         if (std::string error = r.prepare(id); !error.empty())
             return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
@@ -234,6 +240,8 @@ void Simulation::upload_uniforms(float dt) {
     u.flip_ratio = desc_.params.flip_ratio;
     u.particle_count = particle_count_;
     u.separation = desc_.params.separation;
+    u.rest_particles = float(desc_.fill_particles_per_cell);
+    u.volume_correction = desc_.params.volume_correction;
     uniforms_.upload(0, sizeof(SimUniforms), &u);
 }
 
@@ -255,8 +263,17 @@ void Simulation::run_substep() {
     r.run({ProgramId::classify, stat_.classify, cells,
            {{PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_CELL_TYPE, &cell_type_}}});
     r.run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
-           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
-            {PF_SLOT_PRESSURE, &pressure_}}});
+           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_CELL_COUNT, &cell_count_},
+            {PF_SLOT_RHS, &rhs_}, {PF_SLOT_PRESSURE, &pressure_}}});
+    if (hydrostatic_start_pending_) {
+        // One invocation per column along gravity's dominant axis (the kernel picks the same).
+        const float* g = desc_.params.gravity;
+        const float ax = std::abs(g[0]), ay = std::abs(g[1]), az = std::abs(g[2]);
+        const int axis = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+        r.run({ProgramId::hydrostatic_start, stat_.hydrostatic_start, cells / desc_.grid_size[axis],
+               {{PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_}}});
+        hydrostatic_start_pending_ = false;
+    }
     // What this solver needed recently (a readback of another solver's step says nothing).
     const bool known = recent_solver_ == desc_.params.pressure_solver;
     solver_->solve(r, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params,
@@ -273,6 +290,25 @@ void Simulation::run_substep() {
         valid_current_ = 1 - valid_current_;
     }
     run_g2p_and_advect();
+}
+
+uint32_t Simulation::workgroups_for(uint64_t invocations) const {
+    const uint64_t groups = (invocations + PF_WORKGROUP_SIZE - 1) / PF_WORKGROUP_SIZE;
+    const uint64_t gx = std::min<uint64_t>(groups, uint64_t(max_groups_x_));
+    return uint32_t(gx * ((groups + gx - 1) / gx));
+}
+
+void Simulation::run_metrics() {
+    PassRunner& r = *runner_;
+    // One fused pass over cells and particles (invocation i: cell i and particle i), then one
+    // workgroup adds the partial sums in a fixed order and writes the status words.
+    const uint64_t n = std::max<uint64_t>(uint64_t(cells_), particle_count_);
+    const Bind partials{PF_SLOT_METRICS_PARTIALS, &metrics_partials_};
+    r.run({ProgramId::metrics, stat_.metrics, n,
+           {{PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_COUNT, &cell_count_},
+            {PF_SLOT_CELL_TYPE, &cell_type_}, partials}});
+    r.run({ProgramId::metrics_finish, stat_.metrics, PF_WORKGROUP_SIZE, {partials, {PF_SLOT_STATUS, &status_}}, {},
+           {Uniform::uint1(PF_LOC_METRICS_GROUPS, workgroups_for(n))}});
 }
 
 void Simulation::run_g2p_and_advect() {
@@ -325,6 +361,7 @@ pf_result Simulation::step(float frame_dt) {
     status_.upload(PF_STATUS_MAX_SPEED * 4, sizeof(zeros), zeros);
     upload_uniforms(frame_dt / float(substeps));
     for (uint32_t s = 0; s < substeps; ++s) run_substep();
+    run_metrics();
     runner_->end_step();
 
     // Status readback ring: copy now, read once the fence has passed (never wait).
@@ -406,6 +443,18 @@ void Simulation::poll_status() const {
             recent_later_iterations_ = words[PF_STATUS_SOLVER_LATER_ROUNDS];
             recent_solver_ = fence_solver_[s];
             std::memcpy(&solver_residual_, &words[PF_STATUS_SOLVER_RESIDUAL], sizeof(float));
+            Metrics m;
+            std::memcpy(&m.divergence_l2, &words[PF_STATUS_DIVERGENCE_L2], sizeof(float));
+            std::memcpy(&m.divergence_max, &words[PF_STATUS_DIVERGENCE_MAX], sizeof(float));
+            std::memcpy(&m.kinetic_energy, &words[PF_STATUS_KINETIC_ENERGY], sizeof(float));
+            std::memcpy(&m.particle_volume, &words[PF_STATUS_PARTICLE_VOLUME], sizeof(float));
+            m.fluid_cells = words[PF_STATUS_FLUID_CELLS];
+            metrics_ = m;
+            // The drifts' reference: the first step measured since the particles last changed.
+            if (!metrics_first_set_ && fence_step_[s] >= metrics_epoch_step_) {
+                metrics_first_ = m;
+                metrics_first_set_ = true;
+            }
         }
     }
 }
@@ -429,9 +478,16 @@ pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t
         zero_affine(particle_count_, n);  // APIC: a new particle starts as plain PIC (C = 0)
     }
     particle_count_ += n;
+    restart_volume_reference();
+    hydrostatic_start_pending_ = true;  // the new particles' cells hold p = 0
     added_speed_ = (added_at_step_ > status_step_) ? std::max(added_speed_, fastest) : fastest;
     added_at_step_ = steps_ + 1;
     return PF_OK;
+}
+
+void Simulation::restart_volume_reference() {
+    metrics_first_set_ = false;
+    metrics_epoch_step_ = steps_ + 1;  // readbacks of earlier steps measured other particles
 }
 
 pf_result Simulation::fill_box(const float lo[3], const float hi[3], const float vel[3]) {
@@ -465,6 +521,7 @@ void Simulation::clear_flags() {
 
 pf_result Simulation::clear_particles() {
     gl::StateGuard guard(gl_, gl_state_);
+    restart_volume_reference();
     particle_count_ = 0;  // freed slots' APIC affine vectors are zeroed when add_particles reuses them
     fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
     added_speed_ = 0.0f;
@@ -543,6 +600,16 @@ void Simulation::stats(pf_stats& out) const {
     out.solver_iterations = solver_iterations_;
     out.solver_residual = solver_residual_;
     out.cpu_ms = last_cpu_ms_;
+    out.metrics_step = status_step_;
+    out.divergence_l2 = metrics_.divergence_l2;
+    out.divergence_max = metrics_.divergence_max;
+    out.kinetic_energy = metrics_.kinetic_energy;
+    out.fluid_cells = metrics_.fluid_cells;
+    out.particle_volume = metrics_.particle_volume;
+    if (metrics_first_set_ && metrics_first_.fluid_cells > 0)
+        out.fluid_cell_drift = float(double(metrics_.fluid_cells) / metrics_first_.fluid_cells - 1.0);
+    if (metrics_first_set_ && metrics_first_.particle_volume > 0.0f)
+        out.particle_volume_drift = float(double(metrics_.particle_volume) / metrics_first_.particle_volume - 1.0);
     const auto& r = runner_->latest_timing();
     out.gpu_step = r.step;
     out.gpu_substeps = r.substeps;

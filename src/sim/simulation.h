@@ -91,10 +91,19 @@ private:
     const gl::Buffer& grid_buffer(GridBuffer which) const;
     void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat);
     void poll_status() const;
+    // Accuracy metrics of the step just run (its last substep's grid, its particles), reduced on
+    // the GPU into the status buffer: 2 dispatches per step (docs/design.md §4.11).
+    void run_metrics();
+    // The drifts' reference is taken again (particles were added or cleared).
+    void restart_volume_reference();
+    // Workgroups of a direct dispatch of `invocations` (as PassRunner folds it: gx * gy).
+    uint32_t workgroups_for(uint64_t invocations) const;
 
     // The statistics entries of the core passes (pf_pass order).
     struct CoreStats {
         StatId clear, p2g, grid_forces, classify, pressure_setup, velocity_update, extrapolate, g2p, advect;
+        StatId metrics;  // once per step, in the PF_PASS_VELOCITY_UPDATE group
+        StatId hydrostatic_start;  // after particles were added, in the PF_PASS_PRESSURE_SETUP group
     };
 
     gl::Api gl_{};
@@ -118,6 +127,9 @@ private:
     gl::Buffer face_accum_, face_vel_, face_vel_old_, face_valid_[2];
     gl::Buffer cell_count_, cell_type_, pressure_, rhs_;
     int valid_current_ = 0;     // which valid mask is the latest
+    // The next substep starts its solve from the hydrostatic estimate (particles were added to
+    // cells whose pressure is 0: creation, pf_add_particles, pf_fill_box; docs/design.md §4.5a).
+    bool hydrostatic_start_pending_ = true;
     SimUniforms uniform_data_{};
 
     // status (flags, max speed) read back a few steps late, behind fences
@@ -135,6 +147,17 @@ private:
     mutable pf_pressure_solver recent_solver_ = PF_PRESSURE_SOLVER_COUNT;  // ...of this solver
     pf_pressure_solver fence_solver_[kReadbackSlots] = {};  // the solver of each readback's step
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
+    // Accuracy metrics of the newest readback (status words PF_STATUS_DIVERGENCE_L2..).
+    struct Metrics {
+        float divergence_l2 = 0, divergence_max = 0, kinetic_energy = 0, particle_volume = 0;
+        uint32_t fluid_cells = 0;
+    };
+    mutable Metrics metrics_{};
+    mutable Metrics metrics_first_{};      // the reference of the drifts...
+    mutable bool metrics_first_set_ = false;
+    uint64_t metrics_epoch_step_ = 0;      // ...taken from the first readback of a step >= this one
+    gl::Buffer metrics_partials_;          // two vec4 per workgroup of the metrics pass
+    GLint max_groups_x_ = 65535;
     uint64_t flags_cleared_at_step_ = 0;   // pf_clear_flags: ignore flags read back from older steps
     float added_speed_ = 0.0f;             // fastest particle added since...
     uint64_t added_at_step_ = 0;           // ...this step (no readback covers it yet)

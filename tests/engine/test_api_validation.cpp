@@ -92,6 +92,10 @@ std::vector<ParamCase> bad_param_cases() {
         {"advection COUNT", "advection", [](pf_sim_params& p) { p.advection = PF_ADVECTION_COUNT; }},
         {"advection -1", "advection", [](pf_sim_params& p) { p.advection = pf_advection(-1); }},
         {"advection FORCE32", "advection", [](pf_sim_params& p) { p.advection = PF_ADVECTION_FORCE32; }},
+        {"volume_correction -0.1", "volume_correction", [](pf_sim_params& p) { p.volume_correction = -0.1f; }},
+        {"volume_correction 1.5", "volume_correction", [](pf_sim_params& p) { p.volume_correction = 1.5f; }},
+        {"volume_correction NaN", "volume_correction", [](pf_sim_params& p) { p.volume_correction = kNaN; }},
+        {"volume_correction Inf", "volume_correction", [](pf_sim_params& p) { p.volume_correction = kInf; }},
         {"gravity[0] +Inf", "gravity", [](pf_sim_params& p) { p.gravity[0] = kInf; }},
         {"gravity[1] -Inf", "gravity", [](pf_sim_params& p) { p.gravity[1] = -kInf; }},
         {"gravity[2] NaN", "gravity", [](pf_sim_params& p) { p.gravity[2] = kNaN; }},
@@ -318,6 +322,7 @@ TEST_F(CreateValidation, AcceptsBoundaryValues) {
     hi.params.cfl = 16.0f;
     hi.params.max_substeps = 64;
     hi.params.extrapolation_layers = 16;
+    hi.params.volume_correction = 1.0f;
     {
         SimPtr s = create(hi);
         ASSERT_TRUE(s) << "upper bounds";
@@ -335,6 +340,7 @@ TEST_F(CreateValidation, AcceptsBoundaryValues) {
     lo.params.cfl = 1e-3f;
     lo.params.max_substeps = 1;
     lo.params.extrapolation_layers = 1;
+    lo.params.volume_correction = 0.0f;  // off, taken literally
     lo.params.gravity[0] = 1e30f;  // finite is all gravity must be
     {
         SimPtr s = create(lo);

@@ -98,6 +98,11 @@ TEST_F(Physics, FreeFallMatchesGravity) {
 // rounding-level differences grow with the flow's chaos; the bounds allow for that.
 void expect_mirrored(int axis) {
     pf_sim_desc d = test_desc(16, 12, 14, 0.05f);
+    // The volume correction reads particle counts, which jump where a mirrored position rounds
+    // into the neighbouring cell (a count off by one moves b by k/8 of its scale): measured with
+    // the default 0.1, frame 10 worst particle 8e-3 cells. This test is about the kernels' wall
+    // bias, so it runs without it.
+    d.params.volume_correction = 0.0f;
     const float extent = d.cell_size * float(d.grid_size[axis]);
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);

@@ -194,6 +194,51 @@ std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& t
     return b;
 }
 
+void hydrostatic_start(const Grid& grid, const std::vector<uint8_t>& type, glm::dvec3 gravity,
+                       double density, std::vector<double>& pressure) {
+    const glm::dvec3 g = glm::abs(gravity);
+    const int axis = (g.x >= g.y && g.x >= g.z) ? 0 : (g.y >= g.z ? 1 : 2);
+    if (g[axis] == 0.0) return;
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    const glm::ivec3 n = grid.cell_dims();
+    const bool down_is_low = gravity[axis] < 0.0;
+    const int floor_cell = down_is_low ? 0 : n[axis] - 1, up = down_is_low ? 1 : -1;
+    for (int y = 0; y < n[a2]; ++y) {
+        for (int x = 0; x < n[a1]; ++x) {
+            glm::ivec3 c;
+            c[a1] = x;
+            c[a2] = y;
+            auto index = [&](int k) {
+                c[axis] = floor_cell + up * k;
+                return grid.cell_index(c.x, c.y, c.z);
+            };
+            int run = 0;
+            while (run < n[axis] && type[index(run)] == FLUID) ++run;
+            for (int k = 0; k < run; ++k) {
+                double& p = pressure[index(k)];
+                if (p == 0.0) p = density * g[axis] * grid.dx * (run - k);
+            }
+        }
+    }
+}
+
+std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
+                                 const std::vector<double>& vel, double density, double dt,
+                                 const std::vector<uint32_t>& count, double rest, double k) {
+    std::vector<double> b = pressure_rhs(grid, type, vel, density, dt);
+    for_each_cell(grid, [&](int i, int j, int k_, int id) {
+        if (type[id] != FLUID) return;
+        // e = min(count/rest - 1, 1); a cell with an AIR neighbour only corrects compression.
+        double excess = std::min(double(count[id]) / rest - 1.0, 1.0);
+        bool surface = false;
+        for_each_neighbour(grid, i, j, k_, [&](int n) { surface = surface || type[n] == AIR; });
+        if (surface) excess = std::max(excess, 0.0);
+        // Target divergence D = k·e·dx/dt (m/s): b = -(div - D)·ρ·dx/dt.
+        b[id] += k * excess * density * grid.dx * grid.dx / (dt * dt);
+    });
+    return b;
+}
+
 std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type,
                               const std::vector<double>& p) {
     std::vector<double> out(grid.cells(), 0.0);
@@ -419,6 +464,11 @@ void substep(const Grid& grid, Particles& particles, SubstepState& state, glm::d
     const GridForces forces = grid_forces(grid, acc, gravity, dt);              // 3
     const std::vector<uint8_t> type = classify(grid, acc.count);                // 4
     const std::vector<double> b = pressure_rhs(grid, type, forces.vel, density, dt); // 5
+    for (size_t c = 0; c < type.size(); ++c) {
+        if (type[c] != FLUID) state.pressure[c] = 0.0;  // AIR: p = 0
+    }
+    if (state.hydrostatic_start) hydrostatic_start(grid, type, gravity, density, state.pressure);  // 5a
+    state.hydrostatic_start = false;
     state.pressure = jacobi_iterations >= 0                                     // 6
                          ? jacobi(grid, type, b, state.pressure, jacobi_iterations, omega, no_tension)
                          : solve_pressure_exact(grid, type, b);

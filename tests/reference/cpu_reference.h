@@ -90,6 +90,11 @@ std::vector<double> divergence(const Grid& grid, const std::vector<uint8_t>& typ
 // §4.5: b = -div·ρ·dx/dt for FLUID cells, 0 elsewhere.
 std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
                                  const std::vector<double>& vel, double density, double dt);
+// §4.5 with the volume correction: FLUID cells also get b += k·e·ρ·dx²/dt² with
+// e = min(count/rest − 1, 1), and e = max(e, 0) in cells with an AIR neighbour.
+std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
+                                 const std::vector<double>& vel, double density, double dt,
+                                 const std::vector<uint32_t>& count, double rest, double k);
 
 // §4.6 operator: (A p)_i = Σ_{j∈N(i)} (p_i - p_j) for FLUID i, with N(i) the in-domain
 // neighbours (walls excluded) and p_j = 0 for non-FLUID j; 0 for non-FLUID i. The pressure
@@ -148,10 +153,18 @@ glm::dvec3 keep_in_domain(const Grid& grid, glm::dvec3 world_pos);
 void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>& vel, double dt,
                Advection scheme);
 
+// §4.5a: the hydrostatic start. Along gravity's dominant axis a (ties: x before y before z),
+// the run of L FLUID cells resting on the floor of each column gets, in its k-th cell from the
+// floor, p = ρ·|g_a|·dx·(L - k) where p is still 0. Other cells are unchanged.
+void hydrostatic_start(const Grid& grid, const std::vector<uint8_t>& type, glm::dvec3 gravity,
+                       double density, std::vector<double>& pressure);
+
 // Pressure (Pa) per cell, the warm start of the next substep's solve. Resized to
-// grid.cells() zeros when its size does not match.
+// grid.cells() zeros when its size does not match. hydrostatic_start: the next substep starts
+// from §4.5a (as the GPU does after particles are added).
 struct SubstepState {
     std::vector<double> pressure;
+    bool hydrostatic_start = true;
 };
 
 // Steps 1-10 of §4 in order. jacobi_iterations < 0 replaces the Jacobi solve by

@@ -44,6 +44,52 @@ inline double max_speed_of(const ParticleState& p) {
     return m;
 }
 
+// Particles per cell, counted as P2G counts them: the cell clamp(floor((x - origin) / dx), 0, n-1).
+inline std::vector<uint32_t> cell_counts_of(const ParticleState& p, const pf_sim_desc& d) {
+    const uint32_t* n = d.grid_size;
+    std::vector<uint32_t> count(size_t(n[0]) * n[1] * n[2], 0u);
+    for (size_t i = 0; i < p.count(); ++i) {
+        size_t index = 0, stride = 1;
+        for (int a = 0; a < 3; ++a) {
+            const int c = int(std::floor((p.pos[i * 3 + a] - d.origin[a]) / d.cell_size));
+            index += size_t(std::clamp(c, 0, int(n[a]) - 1)) * stride;
+            stride *= n[a];
+        }
+        ++count[index];
+    }
+    return count;
+}
+
+// Particle-density volume (pf_stats.particle_volume): dx^3 * sum over cells of
+// min(count / fill_particles_per_cell, 1), in m^3. Falls where particles clump.
+inline double particle_volume_of(const std::vector<uint32_t>& count, const pf_sim_desc& d) {
+    const double rest = double(d.fill_particles_per_cell);
+    double cells = 0;
+    for (uint32_t c : count) cells += std::min(double(c) / rest, 1.0);
+    return cells * double(d.cell_size) * d.cell_size * d.cell_size;
+}
+
+// Depth of a liquid at rest: the mean over occupied cell columns (x, z) of the highest particle's
+// height above the grid's floor, in metres.
+inline double surface_depth_of(const ParticleState& p, const pf_sim_desc& d) {
+    const uint32_t nx = d.grid_size[0], nz = d.grid_size[2];
+    std::vector<double> top(size_t(nx) * nz, -1.0);
+    for (size_t i = 0; i < p.count(); ++i) {
+        const int cx = std::clamp(int(std::floor((p.pos[i * 3] - d.origin[0]) / d.cell_size)), 0, int(nx) - 1);
+        const int cz = std::clamp(int(std::floor((p.pos[i * 3 + 2] - d.origin[2]) / d.cell_size)), 0, int(nz) - 1);
+        double& t = top[size_t(cz) * nx + size_t(cx)];
+        t = std::max(t, double(p.pos[i * 3 + 1]) - d.origin[1]);
+    }
+    double sum = 0;
+    size_t columns = 0;
+    for (double t : top) {
+        if (t < 0) continue;
+        sum += t;
+        ++columns;
+    }
+    return columns ? sum / double(columns) : 0.0;
+}
+
 inline ParticleState read_all(pf_sim* sim) {
     pf_stats st{};
     pf_get_stats(sim, &st);

@@ -1,0 +1,43 @@
+// Hydrostatic start (docs/design.md §4.5a): the warm start of the first pressure solve after
+// particles were added, so that liquid at rest starts in equilibrium instead of sagging while
+// an iterative solver climbs from p = 0. One invocation per column of cells along gravity's
+// dominant axis a: the run of FLUID cells resting on the floor (the wall gravity points at) of
+// length L gets, in its k-th cell from the floor (k = 0..L-1), the discrete hydrostatic pressure
+//     p = density * |g_a| * dx * (L - k)   (pascals)
+// which solves §4.6 exactly for a flat tank: the face between the top FLUID cell and the AIR
+// above it carries p_top - 0 = density |g_a| dx, every face below the same step. Only cells still
+// at p = 0 are written (cells the solver has seen keep their warm start); fluid not resting on
+// the floor (a falling blob: p = 0 is its solution) and AIR are left alone.
+#include "common/sim.glsl"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+layout(std430, binding = PF_SLOT_PRESSURE) buffer Pressure { float pressure[]; };
+
+void main() {
+    vec3 g = abs(sim.gravity.xyz);
+    int axis = (g.x >= g.y && g.x >= g.z) ? 0 : (g.y >= g.z ? 1 : 2);  // the host picks the same
+    if (g[axis] == 0.0) return;
+    int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    ivec3 n = sim.grid.xyz;
+    int column = int(flat_id());
+    if (column >= n[a1] * n[a2]) return;
+    ivec3 c;
+    c[a1] = column % n[a1];
+    c[a2] = column / n[a1];
+    bool down_is_low = sim.gravity[axis] < 0.0;  // the floor is cell 0 along the axis, else n - 1
+    int floor_cell = down_is_low ? 0 : n[axis] - 1;
+    int up = down_is_low ? 1 : -1;
+
+    int run = 0;
+    for (int k = 0; k < n[axis]; ++k) {
+        c[axis] = floor_cell + up * k;
+        if (cell_type[cell_index(c)] != PF_CELL_FLUID) break;
+        ++run;
+    }
+    float step = sim.density * g[axis] * sim.dx;
+    for (int k = 0; k < run; ++k) {
+        c[axis] = floor_cell + up * k;
+        int i = cell_index(c);
+        if (pressure[i] == 0.0) pressure[i] = step * float(run - k);
+    }
+}

@@ -1,0 +1,46 @@
+// Accuracy metrics of a step, second half (docs/design.md §4.11): one workgroup adds the
+// partial sums of metrics.comp in a fixed order (invocation t takes partials t, t + 256, ...,
+// then a binary tree), turns them into the step's metrics and writes them to the status
+// buffer, which pf_step copies into the readback ring. FLUID cells are added as integers (each
+// workgroup's count, at most 256, is exact in a float), so the count is exact on any grid.
+#include "common/sim.glsl"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_METRICS_PARTIALS) readonly buffer Partials { vec4 partials[]; };
+layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
+layout(location = PF_LOC_METRICS_GROUPS) uniform uint u_groups;
+
+shared vec4 s_sum[PF_WORKGROUP_SIZE];   // (div^2, max |div|, volume fraction, |v|^2)
+shared uint s_fluid[PF_WORKGROUP_SIZE];
+
+void main() {
+    uint lid = gl_LocalInvocationIndex;
+    vec4 sum = vec4(0.0);
+    uint fluid = 0u;
+    for (uint g = lid; g < u_groups; g += uint(PF_WORKGROUP_SIZE)) {
+        vec4 grid = partials[2u * g];
+        sum += vec4(grid.x, 0.0, grid.w, partials[2u * g + 1u].x);
+        sum.y = max(sum.y, grid.y);
+        fluid += uint(grid.z);
+    }
+    s_sum[lid] = sum;
+    s_fluid[lid] = fluid;
+    barrier();
+    for (uint stride = uint(PF_WORKGROUP_SIZE) / 2u; stride > 0u; stride >>= 1u) {
+        if (lid < stride) {
+            vec4 a = s_sum[lid], b = s_sum[lid + stride];
+            s_sum[lid] = vec4(a.x + b.x, max(a.y, b.y), a.z + b.z, a.w + b.w);
+            s_fluid[lid] += s_fluid[lid + stride];
+        }
+        barrier();
+    }
+    if (lid != 0u) return;
+    vec4 total = s_sum[0];
+    uint cells = s_fluid[0];
+    float cell_volume = sim.dx * sim.dx * sim.dx;
+    float particle_mass = sim.density * cell_volume / sim.rest_particles;
+    status[PF_STATUS_DIVERGENCE_L2] = floatBitsToUint(cells > 0u ? sqrt(total.x / float(cells)) : 0.0);
+    status[PF_STATUS_DIVERGENCE_MAX] = floatBitsToUint(total.y);
+    status[PF_STATUS_KINETIC_ENERGY] = floatBitsToUint(0.5 * particle_mass * total.w);
+    status[PF_STATUS_FLUID_CELLS] = cells;
+    status[PF_STATUS_PARTICLE_VOLUME] = floatBitsToUint(cell_volume * total.z);
+}
