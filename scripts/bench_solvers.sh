@@ -23,6 +23,13 @@ if [ "${QUICK:-0}" = 1 ]; then  # the main points only
   run dam_break_1m_pcg_sep0 dam_break_1m --solver pcg --tolerance 1e-4 --pressure-iterations 400 --separation 0
   exit 0
 fi
+if [ "${PRESETS:-0}" = 1 ]; then  # the presets on the benchmark scenes (150 frames of the 10m one)
+  for q in fast balanced accurate; do
+    run dam_break_1m_$q dam_break_1m --preset $q
+    run dam_break_10m_$q dam_break_10m --preset $q --warmup 0 --steps 150
+  done
+  exit 0
+fi
 for scene in dam_break_1m; do
   run "${scene}_jacobi40" "$scene" --solver jacobi --pressure-iterations 40
   for sep in 1 0; do

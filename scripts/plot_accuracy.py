@@ -25,6 +25,9 @@ CASE_METRIC = {
 }
 
 
+FLOOR = 1e-6
+
+
 def load(paths):
     rows = []
     for path in paths:
@@ -39,12 +42,15 @@ def load(paths):
 def value(row):
     metric = CASE_METRIC[row["case"]][0]
     v = row["metrics"].get(metric)
-    return None if v is None or v != v else abs(v)  # NaN: no period measured
+    # NaN: no period measured. Exact zeros (a tank that starts in equilibrium stays there) are
+    # drawn at the floor of the log axis.
+    return None if v is None or v != v else max(abs(v), FLOOR)
 
 
 def style(ax, case):
     ax.set_xscale("log")
-    ax.set_yscale("symlog", linthresh=1e-3)
+    ax.set_yscale("log")
+    ax.set_ylim(bottom=FLOOR * 0.5)
     ax.xaxis.set_major_formatter(ScalarFormatter())
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_title(case, fontsize=10)

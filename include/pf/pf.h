@@ -142,10 +142,10 @@ typedef struct pf_sim_params {
  *  has their cost and accuracy on an H100). Each is a complete pf_sim_params with the default
  *  gravity; change any field afterwards. */
 typedef enum pf_quality {
-    PF_QUALITY_FAST = 0,         /**< the original's scheme and today's default: 40 Jacobi sweeps,
-                                      PIC/FLIP 0.95, explicit Euler */
-    PF_QUALITY_BALANCED = 1,     /**< MGPCG to a relative residual of 1e-3, PIC/FLIP 0.95, RK2 */
-    PF_QUALITY_ACCURATE = 2,     /**< MGPCG to 1e-5, APIC, RK3 */
+    PF_QUALITY_FAST = 0,         /**< the default: 40 projected Jacobi sweeps (separation on), PIC/FLIP 0.95,
+                                      explicit Euler, volume correction 0.1 */
+    PF_QUALITY_BALANCED = 1,     /**< MGPCG to a relative residual of 1e-3, separation off, otherwise fast */
+    PF_QUALITY_ACCURATE = 2,     /**< MGPCG to 1e-5 with separation (active-set rounds), APIC */
     PF_QUALITY_COUNT = 3,
     PF_QUALITY_FORCE32 = 0x7fffffff
 } pf_quality;

@@ -86,6 +86,13 @@ std::vector<Config> sweep_configs() {
             p.pressure_solver = PF_PRESSURE_SOLVER_MGPCG, p.pressure_tolerance = tol, p.pressure_iterations = 60;
         });
     }
+    add("separation", "jacobi_40_sep0", [](pf_sim_params& p) { p.separation = 0; });
+    add("separation", "mgpcg_1e-04_sep0", [](pf_sim_params& p) {
+        p.pressure_solver = PF_PRESSURE_SOLVER_MGPCG, p.pressure_tolerance = 1e-4f, p.pressure_iterations = 60;
+        p.separation = 0;
+    });
+    add("volume", "no_volume_correction", [](pf_sim_params& p) { p.volume_correction = 0.0f; });
+    add("volume", "volume_correction_0.3", [](pf_sim_params& p) { p.volume_correction = 0.3f; });
     add("transfer", "pic", [](pf_sim_params& p) { p.flip_ratio = 0.0f; });
     add("transfer", "flip_0.95", [](pf_sim_params&) {});
     add("transfer", "apic", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_APIC; });

@@ -35,6 +35,7 @@ struct Options {
     uint32_t warmup = 20;
     uint32_t steps = 100;
     uint32_t pressure_iterations = 40;
+    std::string preset;         // empty: the scene's parameters
     std::string solver;         // empty: the scene's
     float tolerance = 0;        // 0: the scene's
     int separation = -1;        // -1: the scene's
@@ -56,6 +57,8 @@ void print_usage(std::FILE* f) {
                  "  --steps M                measured steps (default 100)\n"
                  "  --pressure-iterations N  Jacobi iterations per substep for every scene (default 40,\n"
                  "                           the original's \"step (40 Jacobi iterations)\")\n"
+                 "  --preset NAME            quality preset fast, balanced or accurate (replaces the scenes'\n"
+                 "                           step parameters but max_substeps; options below apply on top)\n"
                  "  --solver NAME            pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
                  "  --tolerance T            pressure_tolerance (relative residual) for every scene\n"
                  "  --separation 0|1         override the scenes' separation\n"
@@ -84,6 +87,10 @@ Options parse_args(int argc, char** argv) {
             o.steps = pfs::parse_u32(args.value(), "--steps", 1, 1000000);
         } else if (a == "--pressure-iterations") {
             o.pressure_iterations = pfs::parse_u32(args.value(), "--pressure-iterations", 1, 10000);
+        } else if (a == "--preset") {
+            o.preset = args.value();
+            if (o.preset != "fast" && o.preset != "balanced" && o.preset != "accurate")
+                throw Error("--preset: expected fast, balanced or accurate, got '" + o.preset + "'");
         } else if (a == "--solver") {
             o.solver = args.value();
             pfs::parse_solver(o.solver, "--solver");
@@ -166,7 +173,15 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     r.frame_dt = opt.frame_dt > 0 ? opt.frame_dt : r.scene.frame_dt;
 
     pf_sim_desc desc = pfs::make_sim_desc(r.scene, pfs::get_proc, pfs::stderr_logger(opt.verbose));
-    desc.params.pressure_iterations = opt.pressure_iterations;
+    if (!opt.preset.empty()) {
+        const pf_quality q = opt.preset == "fast" ? PF_QUALITY_FAST : opt.preset == "balanced" ? PF_QUALITY_BALANCED
+                                                                                              : PF_QUALITY_ACCURATE;
+        const uint32_t max_substeps = desc.params.max_substeps;
+        pfs::check(pf_quality_params(q, &desc.params), "pf_quality_params");
+        desc.params.max_substeps = max_substeps;
+    } else {
+        desc.params.pressure_iterations = opt.pressure_iterations;
+    }
     if (!opt.solver.empty()) desc.params.pressure_solver = pfs::parse_solver(opt.solver, "--solver");
     if (opt.tolerance > 0) desc.params.pressure_tolerance = opt.tolerance;
     if (opt.separation >= 0) desc.params.separation = uint32_t(opt.separation);

@@ -826,7 +826,7 @@ TEST(QualityPresets, EachIsValidDistinctAndFastIsTheDefault) {
     EXPECT_FALSE(same_params(accurate, balanced));
     EXPECT_EQ(balanced.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
     EXPECT_EQ(accurate.transfer, PF_TRANSFER_APIC);
-    EXPECT_EQ(accurate.advection, PF_ADVECTION_RK3);
+    EXPECT_EQ(accurate.separation, 1u);
     EXPECT_LT(accurate.pressure_tolerance, balanced.pressure_tolerance);
 }
 

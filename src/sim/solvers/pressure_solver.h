@@ -46,10 +46,14 @@ struct PressureProblem {
 };
 
 // Iterations to issue for one solve round: all of params.pressure_iterations until the solver's
-// needs are known, then 1.5 times the recent need plus 4, within the cap.
-inline uint32_t issued_iterations(const PressureProblem& problem, bool later_round = false) {
+// needs are known, then 1.5 times the recent need of any round plus 4, within the cap. (Issuing
+// later active-set rounds by their own, smaller, recent need was measured on the H100: it saved
+// 5% of the time and cut those rounds short — the residual grew fifteenfold.)
+inline uint32_t issued_iterations(const PressureProblem& problem) {
     const uint32_t cap = problem.params.pressure_iterations;
-    const uint32_t recent = later_round ? problem.recent_later_iterations : problem.recent_iterations;
+    uint32_t recent = problem.recent_iterations;
+    if (recent != kUnknownIterations && problem.recent_later_iterations != kUnknownIterations)
+        recent = recent > problem.recent_later_iterations ? recent : problem.recent_later_iterations;
     if (recent == kUnknownIterations) return cap;
     const uint64_t margin = recent + recent / 2 + 4;
     return uint32_t(margin < cap ? margin : cap);

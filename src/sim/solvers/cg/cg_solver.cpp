@@ -134,7 +134,7 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
     if (stored_) precondition();
     scalars(ProgramId::cg_start);
     direction();
-    const uint32_t issued = issued_iterations(problem, another_round);
+    const uint32_t issued = issued_iterations(problem);
     for (uint32_t k = 0; k < issued; ++k) {
         runner.run({ProgramId::cg_matvec, stat_, 0,
                     {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_Q, &q_},
