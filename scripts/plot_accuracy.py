@@ -50,7 +50,6 @@ def value(row):
 def style(ax, case):
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_ylim(bottom=FLOOR * 0.5)
     ax.xaxis.set_major_formatter(ScalarFormatter())
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_title(case, fontsize=10)
