@@ -199,7 +199,14 @@ const char* advection_name(pf_advection advection) {
 
 bool ParamOverrides::parse(ArgCursor& args) {
     const std::string& a = args.option();
-    if (a == "--solver") {
+    if (a == "--preset") {
+        const std::string v = args.value();
+        if (v == "fast") preset = PF_QUALITY_FAST;
+        else if (v == "balanced") preset = PF_QUALITY_BALANCED;
+        else if (v == "accurate") preset = PF_QUALITY_ACCURATE;
+        else throw Error("--preset: unknown preset '" + v + "' (known: fast, balanced, accurate)");
+        has_preset = true;
+    } else if (a == "--solver") {
         solver = parse_solver(args.value(), "--solver");
         has_solver = true;
     } else if (a == "--tolerance") {
@@ -219,6 +226,13 @@ bool ParamOverrides::parse(ArgCursor& args) {
 }
 
 void ParamOverrides::apply(pf_sim_params& p) const {
+    if (has_preset) {
+        pf_sim_params q{};
+        check(pf_quality_params(preset, &q), "pf_quality_params");
+        for (int a = 0; a < 3; ++a) q.gravity[a] = p.gravity[a];
+        q.max_substeps = p.max_substeps;
+        p = q;
+    }
     if (has_solver) p.pressure_solver = solver;
     if (has_tolerance) p.pressure_tolerance = tolerance;
     if (has_transfer) p.transfer = transfer;
@@ -226,7 +240,9 @@ void ParamOverrides::apply(pf_sim_params& p) const {
 }
 
 const char* ParamOverrides::usage() {
-    return "  --solver NAME       pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
+    return "  --preset NAME       quality preset fast, balanced or accurate (docs/accuracy.md); the options\n"
+           "                      below apply on top of it (default: the scene's parameters)\n"
+           "  --solver NAME       pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
            "  --tolerance T       relative residual at which a pressure solve stops, (0, 1) (default: the scene's)\n"
            "  --transfer pic_flip|apic  grid-particle transfer (default: the scene's)\n"
            "  --advection euler|rk2|rk3  particle integrator (default: the scene's)\n";

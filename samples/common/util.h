@@ -91,18 +91,20 @@ const char* advection_name(pf_advection advection);
 /// --transfer, --advection). Each overrides the scene's value only when given, so a scene file
 /// stays the single source of everything else.
 struct ParamOverrides {
-    bool has_solver = false, has_tolerance = false, has_transfer = false, has_advection = false;
+    bool has_preset = false, has_solver = false, has_tolerance = false, has_transfer = false, has_advection = false;
+    pf_quality preset = PF_QUALITY_FAST;
     pf_pressure_solver solver = PF_PRESSURE_SOLVER_JACOBI;
     float tolerance = 0;
     pf_transfer transfer = PF_TRANSFER_PIC_FLIP;
     pf_advection advection = PF_ADVECTION_EULER;
 
-    /// If args.option() is one of the four, consumes its value (strictly parsed) and returns
+    /// If args.option() is one of the five, consumes its value (strictly parsed) and returns
     /// true; false leaves args untouched for the caller's own options.
     bool parse(ArgCursor& args);
-    /// Writes the given overrides into p.
+    /// Writes the given overrides into p: a preset first (keeping p's gravity and max_substeps,
+    /// which are the scene's physics), then the single knobs.
     void apply(pf_sim_params& p) const;
-    /// The --help lines of the four options.
+    /// The --help lines of the five options.
     static const char* usage();
 };
 

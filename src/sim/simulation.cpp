@@ -380,14 +380,19 @@ pf_result Simulation::step(float frame_dt) {
     return PF_OK;
 }
 
-pf_result Simulation::run_substep_for_test(float dt) {
+template <typename Passes>
+void Simulation::run_one_step_for_test(float dt, Passes&& passes) {
     gl::StateGuard guard(gl_, gl_state_);
     ++steps_;
     runner_->begin_step(steps_, 1);
     upload_uniforms(dt);
-    run_substep();
+    passes();
     runner_->end_step();
     gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+
+pf_result Simulation::run_substep_for_test(float dt) {
+    run_one_step_for_test(dt, [&] { run_substep(); });
     return PF_OK;
 }
 
@@ -401,24 +406,15 @@ pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, con
     pressure_.upload(0, pressure.size() * 4, pressure.data());
     const uint32_t zeros[2] = {0, 0};
     status_.upload(PF_STATUS_SOLVER_ITERATIONS * 4, sizeof(zeros), zeros);
-    ++steps_;
-    runner_->begin_step(steps_, 1);
-    upload_uniforms(0.01f);
-    solver_->solve(*runner_, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params});
-    runner_->end_step();
-    gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
+    run_one_step_for_test(0.01f, [&] {
+        solver_->solve(*runner_, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params});
+    });
     pressure_.download(0, pressure.size() * 4, pressure.data());
     return PF_OK;
 }
 
 pf_result Simulation::run_g2p_and_advect_for_test(float dt) {
-    gl::StateGuard guard(gl_, gl_state_);
-    ++steps_;
-    runner_->begin_step(steps_, 1);
-    upload_uniforms(dt);
-    run_g2p_and_advect();
-    runner_->end_step();
-    gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
+    run_one_step_for_test(dt, [&] { run_g2p_and_advect(); });
     return PF_OK;
 }
 

@@ -86,6 +86,9 @@ private:
     pf_result prepare_particle_passes(const pf_sim_params& params, const char* fn);
     void zero_affine(uint32_t first, uint32_t count);
     void upload_uniforms(float dt);
+    // Test hooks: one step of length dt that runs `passes` (timed and counted like a step).
+    template <typename Passes>
+    void run_one_step_for_test(float dt, Passes&& passes);
     void run_substep();
     void run_g2p_and_advect();
     const gl::Buffer& grid_buffer(GridBuffer which) const;
