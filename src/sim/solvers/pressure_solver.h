@@ -43,19 +43,22 @@ struct PressureProblem {
     const pf_sim_params& params;
     uint32_t recent_iterations = kUnknownIterations;
     uint32_t recent_later_iterations = kUnknownIterations;
+    bool recent_converged = false;  // that step's final residual met the tolerance
 };
 
 // Iterations to issue for one solve round: all of params.pressure_iterations until the solver's
-// needs are known, then 1.5 times the recent need of any round plus 4, within the cap. (Issuing
-// later active-set rounds by their own, smaller, recent need was measured on the H100: it saved
-// 5% of the time and cut those rounds short — the residual grew fifteenfold.)
+// needs are known; then the recent need of any round plus a quarter (at least 2) while recent
+// solves met the tolerance, plus a half and 4 when they did not (they may have been cut short),
+// within the cap. (Issuing later active-set rounds by their own, smaller, recent need was
+// measured on the H100: it saved 5% of the time and cut those rounds short — the residual grew
+// fifteenfold.)
 inline uint32_t issued_iterations(const PressureProblem& problem) {
     const uint32_t cap = problem.params.pressure_iterations;
     uint32_t recent = problem.recent_iterations;
     if (recent != kUnknownIterations && problem.recent_later_iterations != kUnknownIterations)
         recent = recent > problem.recent_later_iterations ? recent : problem.recent_later_iterations;
     if (recent == kUnknownIterations) return cap;
-    const uint64_t margin = recent + recent / 2 + 4;
+    const uint64_t margin = problem.recent_converged ? recent + (recent / 4 > 2 ? recent / 4 : 2) : recent + recent / 2 + 4;
     return uint32_t(margin < cap ? margin : cap);
 }
 
