@@ -73,6 +73,18 @@ typedef void (*pf_gl_proc)(void);
 /** The engine's GL loader: returns the entry point called name, or NULL. */
 typedef pf_gl_proc (*pf_gl_get_proc_address_fn)(const char* name);
 
+/** How particles are splatted onto the grid (P2G). */
+typedef enum pf_p2g {
+    PF_P2G_FIXED_POINT = 0,  /**< 32-bit fixed-point integer atomics: bit-identical run to run,
+                                  overflow detected (PF_FLAG_P2G_OVERFLOW) */
+    PF_P2G_FLOAT_ATOMIC = 1, /**< float atomics (GL_NV_shader_atomic_float where present, a
+                                  compare-and-swap loop elsewhere): no rounding grid or overflow,
+                                  but the sums depend on the order of the atomics (not
+                                  bit-identical run to run) */
+    PF_P2G_COUNT = 2,
+    PF_P2G_FORCE32 = 0x7fffffff
+} pf_p2g;
+
 /** Pressure solvers, from cheapest to most accurate per iteration (docs/accuracy.md). */
 typedef enum pf_pressure_solver {
     PF_PRESSURE_SOLVER_JACOBI = 0,   /**< weighted Jacobi (the original), jacobi_omega; a check every 8 sweeps */
@@ -136,6 +148,7 @@ typedef struct pf_sim_params {
                                        fill_particles_per_cell) the pressure projection spreads out per
                                        substep, against PIC/FLIP's slow compression. 0 = off (a zero value is
                                        taken literally, like flip_ratio); default 0.1 */
+    pf_p2g p2g;                   /**< particle-to-grid scheme; default (0) PF_P2G_FIXED_POINT */
 } pf_sim_params;
 
 /** Quality presets: measured points of the accuracy-versus-time trade-off (docs/accuracy.md

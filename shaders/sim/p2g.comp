@@ -4,17 +4,51 @@
 // run to run. Overflow of an accumulator is detected and flagged, never silent.
 // Permutation PF_APIC: each contribution is the particle's affine velocity at the node,
 // v_a + c_a . (x_i - x_p) (Jiang et al. 2015), instead of v_a.
+// Permutation PF_P2G_FLOAT (pf_p2g PF_P2G_FLOAT_ATOMIC): plain float sums of w·v and w instead,
+// with GL_NV_shader_atomic_float's atomicAdd where the GL has it and a compare-and-swap loop on
+// the float's bits elsewhere. No rounding to a fixed-point grid and no overflow, but float
+// addition is not associative: the sums depend on the order the atomics land in, so results
+// are not bit-identical run to run (docs/accuracy.md measures by how much).
+#if PF_P2G_FLOAT && defined(GL_NV_shader_atomic_float)
+#extension GL_NV_shader_atomic_float : enable
+#define PF_NATIVE_FLOAT_ATOMICS 1
+#else
+#define PF_NATIVE_FLOAT_ATOMICS 0
+#endif
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
 layout(std430, binding = PF_SLOT_PARTICLE_VEL) readonly buffer Vel { vec4 vel[]; };
+#if PF_P2G_FLOAT && PF_NATIVE_FLOAT_ATOMICS
+layout(std430, binding = PF_SLOT_FACE_ACCUM) buffer Accum { float accum[]; };  // 2 words per face
+#elif PF_P2G_FLOAT
+layout(std430, binding = PF_SLOT_FACE_ACCUM) buffer Accum { uint accum_bits[]; };  // floats' bits
+#else
 layout(std430, binding = PF_SLOT_FACE_ACCUM) buffer Accum { int accum[]; };  // 2 words per face
+#endif
 layout(std430, binding = PF_SLOT_CELL_COUNT) buffer Count { uint cell_count[]; };
 layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
 #if PF_APIC
 layout(std430, binding = PF_SLOT_PARTICLE_AFFINE) readonly buffer Affine { vec4 affine[]; };
 #endif
 
+#if PF_P2G_FLOAT
+void accumulate_float(int word, float value) {
+    if (value == 0.0) return;  // zero weights (clamped stencil edges) cost no atomic
+#if PF_NATIVE_FLOAT_ATOMICS
+    atomicAdd(accum[word], value);
+#else
+    // No float atomics: add through the bits with compare-and-swap.
+    uint expected = accum_bits[word];
+    for (;;) {
+        uint desired = floatBitsToUint(uintBitsToFloat(expected) + value);
+        uint seen = atomicCompSwap(accum_bits[word], expected, desired);
+        if (seen == expected) break;
+        expected = seen;
+    }
+#endif
+}
+#else
 void accumulate(int word, int value) {
     if (value == 0) return;  // zero weights (clamped stencil edges) cost no atomic
     int old = atomicAdd(accum[word], value);
@@ -22,6 +56,7 @@ void accumulate(int word, int value) {
     if ((old >= 0) == (value >= 0) && (sum >= 0) != (old >= 0))
         atomicOr(status[PF_STATUS_FLAGS], PF_GPU_FLAG_P2G_OVERFLOW);
 }
+#endif
 
 void main() {
     uint i = flat_id();
@@ -49,9 +84,14 @@ void main() {
 #else
             float va = v[axis];
 #endif
+#if PF_P2G_FLOAT
+            accumulate_float(2 * face, w * va);
+            accumulate_float(2 * face + 1, w);
+#else
             // roundEven is odd-symmetric: mirrored inputs give mirrored integers.
             accumulate(2 * face, int(roundEven(w * va * sim.momentum_scale)));
             accumulate(2 * face + 1, int(roundEven(w * sim.weight_scale)));
+#endif
         }
     }
 }

@@ -56,6 +56,7 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
     if (!(p.pressure_tolerance > 0.0f && p.pressure_tolerance < 1.0f))
         return bad("params.pressure_tolerance must be in (0, 1), got " + str(p.pressure_tolerance));
     if (!(p.sor_omega > 0.0f && p.sor_omega < 2.0f)) return bad("params.sor_omega must be in (0, 2), got " + str(p.sor_omega));
+    if (uint32_t(p.p2g) >= PF_P2G_COUNT) return bad("params.p2g is not a pf_p2g value, got " + std::to_string(int(p.p2g)));
     if (uint32_t(p.transfer) >= PF_TRANSFER_COUNT)
         return bad("params.transfer is not a pf_transfer value, got " + std::to_string(int(p.transfer)));
     if (uint32_t(p.advection) >= PF_ADVECTION_COUNT)

@@ -135,7 +135,7 @@ pf_result Simulation::init() {
                       r.add_stat("advect", PF_PASS_ADVECT),
                       r.add_stat("metrics", PF_PASS_VELOCITY_UPDATE),
                       r.add_stat("hydrostatic_start", PF_PASS_PRESSURE_SETUP)};
-    const ProgramId needed[] = {ProgramId::fill, ProgramId::grid_forces, ProgramId::classify,
+    const ProgramId needed[] = {ProgramId::fill, ProgramId::classify,
                                 ProgramId::pressure_setup, ProgramId::velocity_update, ProgramId::extrapolate,
                                 ProgramId::metrics, ProgramId::metrics_finish, ProgramId::hydrostatic_start};
     for (ProgramId id : needed) {
@@ -172,7 +172,9 @@ pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, Pr
 Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& params) {
     ParticlePrograms p{};
     const bool apic = params.transfer == PF_TRANSFER_APIC;
-    p.p2g = apic ? ProgramId::p2g_apic : ProgramId::p2g;
+    const bool floats = params.p2g == PF_P2G_FLOAT_ATOMIC;
+    p.p2g = apic ? (floats ? ProgramId::p2g_apic_float : ProgramId::p2g_apic) : (floats ? ProgramId::p2g_float : ProgramId::p2g);
+    p.grid_forces = floats ? ProgramId::grid_forces_float : ProgramId::grid_forces;
     // Pure PIC skips the FLIP delta (and its u_old reads) in a permutation of its own.
     p.g2p = apic ? ProgramId::g2p_apic : params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
     p.advect = params.advection == PF_ADVECTION_RK2   ? ProgramId::advect_rk2
@@ -183,7 +185,7 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
 
 pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const char* fn) {
     const ParticlePrograms programs = particle_programs(params);
-    for (ProgramId id : {programs.p2g, programs.g2p, programs.advect}) {
+    for (ProgramId id : {programs.p2g, programs.grid_forces, programs.g2p, programs.advect}) {
         if (std::string error = runner_->prepare(id); !error.empty())
             return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
@@ -258,7 +260,7 @@ void Simulation::run_substep() {
     const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
     r.run({particle_programs(desc_.params).p2g, stat_.p2g, np,
            apic ? Bindings{pos, vel, accum, count, status, affine} : Bindings{pos, vel, accum, count, status}});
-    r.run({ProgramId::grid_forces, stat_.grid_forces, faces,
+    r.run({particle_programs(desc_.params).grid_forces, stat_.grid_forces, faces,
            {{PF_SLOT_FACE_ACCUM, &face_accum_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}}});
     r.run({ProgramId::classify, stat_.classify, cells,
            {{PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_CELL_TYPE, &cell_type_}}});

@@ -78,7 +78,7 @@ private:
     pf_result solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out);
     // The per-particle programs params select (transfer, flip ratio, advection).
     struct ParticlePrograms {
-        gl::ProgramId p2g, g2p, advect;
+        gl::ProgramId p2g, grid_forces, g2p, advect;
     };
     static ParticlePrograms particle_programs(const pf_sim_params& params);
     // Builds those programs and, for APIC, allocates the affine buffer (first use only), so

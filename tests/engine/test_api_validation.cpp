@@ -86,6 +86,8 @@ std::vector<ParamCase> bad_param_cases() {
         {"sor_omega 2", "sor_omega", [](pf_sim_params& p) { p.sor_omega = 2.0f; }},
         {"sor_omega -1", "sor_omega", [](pf_sim_params& p) { p.sor_omega = -1.0f; }},
         {"sor_omega NaN", "sor_omega", [](pf_sim_params& p) { p.sor_omega = kNaN; }},
+        {"p2g COUNT", "p2g", [](pf_sim_params& p) { p.p2g = PF_P2G_COUNT; }},
+        {"p2g -1", "p2g", [](pf_sim_params& p) { p.p2g = pf_p2g(-1); }},
         {"transfer COUNT", "transfer", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_COUNT; }},
         {"transfer -1", "transfer", [](pf_sim_params& p) { p.transfer = pf_transfer(-1); }},
         {"transfer FORCE32", "transfer", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_FORCE32; }},

@@ -62,6 +62,7 @@ TEST_F(PassPipeline, EveryPassBindsEverySlotItsProgramUses) {
                     p.separation = separation;
                     p.flip_ratio = separation ? 0.95f : 0.0f;  // both PIC/FLIP G2P permutations
                     p.transfer = pf_transfer(transfer);
+                    p.p2g = pf_p2g((transfer + advection + solver) % PF_P2G_COUNT);  // both schemes, every transfer
                     p.advection = pf_advection(advection);
                     ASSERT_EQ(pf_set_params(handle.get(), &p), PF_OK) << last_log();
                     for (int i = 0; i < 3; ++i) ASSERT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);
