@@ -23,6 +23,14 @@ if [ "${QUICK:-0}" = 1 ]; then  # the main points only
   run dam_break_1m_pcg_sep0 dam_break_1m --solver pcg --tolerance 1e-4 --pressure-iterations 400 --separation 0
   exit 0
 fi
+if [ "${P2G:-0}" = 1 ]; then  # the particle-to-grid schemes on the benchmark scenes
+  for scheme in fixed float; do
+    run original_24_p2g_$scheme original_24 --p2g $scheme
+    run dam_break_1m_p2g_$scheme dam_break_1m --p2g $scheme
+    run dam_break_10m_p2g_$scheme dam_break_10m --p2g $scheme --steps 30
+  done
+  exit 0
+fi
 if [ "${PRESETS:-0}" = 1 ]; then  # the presets on the benchmark scenes (150 frames of the 10m one)
   for q in fast balanced accurate; do
     run dam_break_1m_$q dam_break_1m --preset $q

@@ -39,6 +39,7 @@ struct Options {
     std::string solver;         // empty: the scene's
     float tolerance = 0;        // 0: the scene's
     int separation = -1;        // -1: the scene's
+    int p2g = -1;               // -1: the scene's (pf_p2g otherwise)
     uint32_t max_substeps = 0; // 0: the scene's
     float frame_dt = 0;        // 0: the scene's
     std::string json_path, csv_path;
@@ -62,6 +63,7 @@ void print_usage(std::FILE* f) {
                  "  --solver NAME            pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
                  "  --tolerance T            pressure_tolerance (relative residual) for every scene\n"
                  "  --separation 0|1         override the scenes' separation\n"
+                 "  --p2g fixed|float        particle-to-grid scheme: fixed-point or float atomics\n"
                  "  --max-substeps N         override the scenes' max_substeps (1 = one substep per step)\n"
                  "  --frame-dt S             override the scenes' frame_dt (seconds per pf_step)\n"
                  "  --json PATH              write results as JSON\n"
@@ -96,6 +98,10 @@ Options parse_args(int argc, char** argv) {
             pfs::parse_solver(o.solver, "--solver");
         } else if (a == "--tolerance") {
             o.tolerance = pfs::parse_float(args.value(), "--tolerance", 1e-12f, 0.999f);
+        } else if (a == "--p2g") {
+            const std::string v = args.value();
+            if (v != "fixed" && v != "float") throw Error("--p2g: expected fixed or float, got '" + v + "'");
+            o.p2g = v == "float" ? PF_P2G_FLOAT_ATOMIC : PF_P2G_FIXED_POINT;
         } else if (a == "--separation") {
             o.separation = int(pfs::parse_u32(args.value(), "--separation", 0, 1));
         } else if (a == "--max-substeps") {
@@ -185,6 +191,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     if (!opt.solver.empty()) desc.params.pressure_solver = pfs::parse_solver(opt.solver, "--solver");
     if (opt.tolerance > 0) desc.params.pressure_tolerance = opt.tolerance;
     if (opt.separation >= 0) desc.params.separation = uint32_t(opt.separation);
+    if (opt.p2g >= 0) desc.params.p2g = pf_p2g(opt.p2g);
     if (opt.max_substeps) desc.params.max_substeps = opt.max_substeps;
     r.params = desc.params;
     r.max_particles = desc.max_particles;
@@ -347,6 +354,7 @@ ojson result_json(const Result& r) {
     p["pressure_solver"] = pfs::solver_name(r.params.pressure_solver);
     p["pressure_tolerance"] = r.params.pressure_tolerance;
     p["sor_omega"] = r.params.sor_omega;
+    p["p2g"] = r.params.p2g == PF_P2G_FLOAT_ATOMIC ? "float" : "fixed";
     j["params"] = p;
     j["solver_iterations"] = summary_json(r.solver_iterations);
     j["solver_residual"] = summary_json(r.solver_residual);
