@@ -93,9 +93,12 @@ void PassRunner::run(const Pass& pass) {
     }
     set_uniforms(program, pid, pass.uniforms);
     // Every pass may read what earlier passes wrote; an indirect one also reads its workgroup
-    // counts, which a pass may have written (the barrier goes before the dispatch, so a copy
-    // or readback after the last pass brings its own: copy() and the step's end).
-    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (pass.indirect.buffer ? GL_COMMAND_BARRIER_BIT : 0));
+    // counts, which the record-writing programs change (the barrier goes before the dispatch,
+    // so a copy or readback after the last pass brings its own: copy() and the step's end).
+    const bool command = pass.indirect.buffer && records_written_;
+    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (command ? GL_COMMAND_BARRIER_BIT : 0));
+    if (command) records_written_ = false;
+    if (writes_indirect_records(pass.program)) records_written_ = true;
     gl_.UseProgram(program);
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, uniform_slot_, uniforms_.id());
     for (const Bind& b : pass.binds) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b.slot, b.buffer->id());
@@ -107,6 +110,18 @@ void PassRunner::run(const Pass& pass) {
         const int64_t gx = std::min<int64_t>(groups, max_groups_x_);
         const int64_t gy = ceil_div(groups, gx);
         gl_.DispatchCompute(GLuint(gx), GLuint(gy), 1);
+    }
+}
+
+bool PassRunner::writes_indirect_records(gl::ProgramId id) {
+    switch (id) {
+        case gl::ProgramId::solver_begin:
+        case gl::ProgramId::solver_check:
+        case gl::ProgramId::solver_report:  // check.comp: its source has the check's stop_solve()
+        case gl::ProgramId::cg_start:
+        case gl::ProgramId::cg_alpha:
+        case gl::ProgramId::cg_beta: return true;
+        default: return false;
     }
 }
 

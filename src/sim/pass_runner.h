@@ -59,6 +59,12 @@ public:
 
     uint32_t binding_errors() const { return binding_errors_; }
 
+    // Programs that write indirect-dispatch records (a solver's start, convergence checks and
+    // Krylov scalars). Only after one of them does the next indirect dispatch need
+    // GL_COMMAND_BARRIER_BIT; tests/internal/test_pass_pipeline.cpp keeps the list complete by
+    // scanning every program's source.
+    static bool writes_indirect_records(gl::ProgramId id);
+
 private:
 
     const gl::Api& gl_;
@@ -76,6 +82,7 @@ private:
     GLint max_groups_x_ = 65535;
     bool step_open_ = false;
     bool pair_open_ = false;
+    bool records_written_ = true;  // an indirect record may have changed since the last command barrier
     StatId open_stat_ = 0;
     uint32_t binding_errors_ = 0;
 };

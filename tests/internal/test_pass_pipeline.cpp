@@ -6,6 +6,8 @@
 
 #include "api/handle.h"
 #include "common/slots.h"
+#include "gl/shader_source.h"
+#include "sim/pass_runner.h"
 #include "sim/sim_uniforms.h"
 #include "support/sim_fixture.h"
 
@@ -72,6 +74,24 @@ TEST_F(PassPipeline, EveryPassBindsEverySlotItsProgramUses) {
     }
     ASSERT_EQ(pf_clear_particles(handle.get()), PF_OK);
     EXPECT_EQ(handle->impl->runner().binding_errors(), 0u) << last_log();
+}
+
+// The runner puts GL_COMMAND_BARRIER_BIT only after programs listed as writing indirect
+// records; a program that writes them unlisted would let a later indirect dispatch read stale
+// workgroup counts. Every program's expanded source is scanned for the two ways to write them.
+TEST(PassPipelineSource, EveryProgramThatWritesIndirectRecordsIsListed) {
+    size_t writers = 0;
+    for (size_t i = 0; i < size_t(gl::ProgramId::count); ++i) {
+        const gl::ProgramInfo& info = gl::program_info(gl::ProgramId(i));
+        if (info.fragment) continue;
+        const gl::ExpandedSource src = gl::expand_shader(info.file, info.defines);
+        ASSERT_TRUE(src.error.empty()) << info.id << ": " << src.error;
+        const bool writes = src.text.find("stop_solve();") != std::string::npos ||
+                            src.text.find("state[PF_SOLVER_SCALARS + w] =") != std::string::npos;
+        EXPECT_EQ(writes, PassRunner::writes_indirect_records(gl::ProgramId(i))) << info.id;
+        writers += writes;
+    }
+    EXPECT_EQ(writers, 6u);  // begin, check and report (one source), the three CG scalar steps
 }
 
 TEST_F(PassPipeline, AMissingBindingIsCaught) {
