@@ -281,7 +281,8 @@ void Simulation::run_substep() {
     solver_->solve(r, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params,
                                       known ? recent_iterations_ : kUnknownIterations,
                                       known ? recent_later_iterations_ : kUnknownIterations,
-                                      known && solver_residual_ <= desc_.params.pressure_tolerance});
+                                      known && solver_residual_ <= desc_.params.pressure_tolerance,
+                                      known ? solver_residual_ : -1.0f});
     r.run({ProgramId::velocity_update, stat_.velocity_update, faces,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
             {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}}});

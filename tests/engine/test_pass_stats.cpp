@@ -132,6 +132,28 @@ TEST_F(PassStats, IssuedIterationsFollowTheReadBackNeed) {
     RecordProperty("dispatches_later", std::to_string(later));
 }
 
+// A stationary solver far from its tolerance skips its intermediate convergence checks: once a
+// residual more than ten times the tolerance has been read back, 12 Jacobi sweeps cost 12 +
+// start (2) + final check and report (4) dispatches per substep instead of 12 + 2 + 2 + 4.
+TEST_F(PassStats, JacobiFarFromItsToleranceSkipsIntermediateChecks) {
+    pf_sim_desc d = test_desc(16, 16, 16, 0.05f);
+    d.params.pressure_iterations = 12;
+    d.params.pressure_tolerance = 1e-6f;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.8f, 0.4f, 0.8f}, v[3] = {2.0f, 0.0f, 1.0f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, v), PF_OK);
+    ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+    pf_stats st{};
+    ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+    EXPECT_EQ(pass_list(sim.get()).at("jacobi").dispatches, st.substeps * (12 + 2 + 2 + 4)) << "nothing read back yet";
+    glFinish();
+    ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+    ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+    ASSERT_GT(st.solver_residual, 10 * 1e-6f);
+    EXPECT_EQ(pass_list(sim.get()).at("jacobi").dispatches, st.substeps * (12 + 2 + 4));
+}
+
 TEST_F(PassStats, BadArgumentsAreRefused) {
     SimPtr sim = create(test_desc(8, 8, 8));
     ASSERT_TRUE(sim);

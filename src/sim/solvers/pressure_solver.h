@@ -44,7 +44,15 @@ struct PressureProblem {
     uint32_t recent_iterations = kUnknownIterations;
     uint32_t recent_later_iterations = kUnknownIterations;
     bool recent_converged = false;  // that step's final residual met the tolerance
+    float recent_residual = -1.0f;  // that step's final relative residual (< 0: not known)
 };
+
+// Whether a stationary solver should check convergence before its last iteration: not while
+// recent solves ended more than ten times above the tolerance (their checks could not stop
+// anything; each costs two passes), and always until a residual is known.
+inline bool early_checks_worthwhile(const PressureProblem& problem) {
+    return problem.recent_residual < 0.0f || problem.recent_residual <= 10.0f * problem.params.pressure_tolerance;
+}
 
 // Iterations to issue for one solve round: all of params.pressure_iterations until the solver's
 // needs are known; then the recent need of any round plus a quarter (at least 2) while recent

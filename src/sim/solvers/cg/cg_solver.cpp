@@ -72,7 +72,8 @@ void ConjugateGradientSolver::solve(PassRunner& runner, const PressureProblem& p
     runner.copy(problem.cell_type, working_type_, size_t(grid_.cells) * 4);
     const PressureProblem working{working_type_,  problem.rhs,    problem.pressure,
                                   problem.status, problem.params, problem.recent_iterations,
-                                  problem.recent_later_iterations, problem.recent_converged};
+                                  problem.recent_later_iterations, problem.recent_converged,
+                                  problem.recent_residual};
     const Pass clamp{ProgramId::separation_clamp,
                      stat_,
                      grid_.cells,

@@ -30,6 +30,7 @@ void JacobiSolver::solve(PassRunner& runner, const PressureProblem& problem) {
         std::swap(src, dst);
     }
     uint32_t checked = 0;
+    const bool early_checks = early_checks_worthwhile(problem);
     for (uint32_t k = 1; k <= sweeps; ++k) {
         runner.run({gl::ProgramId::jacobi,
                     stat_,
@@ -42,7 +43,7 @@ void JacobiSolver::solve(PassRunner& runner, const PressureProblem& problem) {
                     control_.record(0),
                     {control_.dims_uniform(), Uniform::float1(PF_LOC_JACOBI_OMEGA, problem.params.jacobi_omega)}});
         std::swap(src, dst);
-        if (k < sweeps && k % kCheckEvery == sweeps % kCheckEvery) {
+        if (early_checks && k < sweeps && k % kCheckEvery == sweeps % kCheckEvery) {
             control_.check(runner, stat_, problem, k - checked);
             checked = k;
         }

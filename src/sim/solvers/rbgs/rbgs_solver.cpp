@@ -35,9 +35,10 @@ void RedBlackSolver::solve(PassRunner& runner, const PressureProblem& problem) {
     const uint32_t iterations = issued_iterations(problem);
     control_.begin(runner, stat_, problem);
     uint32_t checked = 0;
+    const bool early_checks = early_checks_worthwhile(problem);
     for (uint32_t k = 1; k <= iterations; ++k) {
         sweep(runner, problem);
-        if (k < iterations && k % kCheckEvery == 0) {
+        if (early_checks && k < iterations && k % kCheckEvery == 0) {
             control_.check(runner, stat_, problem, k - checked);
             checked = k;
         }

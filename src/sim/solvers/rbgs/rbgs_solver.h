@@ -2,7 +2,7 @@
 // the cells with i+j+k even, then the odd ones, in place (each colour reads only the other).
 // With separation on, every update is projected onto p >= 0 (projected SOR). Stops after
 // params.pressure_iterations iterations or at a residual check (every kCheckEvery iterations)
-// that meets params.pressure_tolerance.
+// that meets params.pressure_tolerance (while recent solves ended within ten times of it).
 #pragma once
 #include "sim/solvers/common/solve_control.h"
 #include "sim/solvers/pressure_solver.h"
