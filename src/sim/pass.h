@@ -28,8 +28,12 @@ class Bindings {
 public:
     Bindings() = default;
     Bindings(std::initializer_list<Bind> binds) {
-        for (const Bind& b : binds) binds_[count_++] = b;  // PassRunner rejects count_ > slots
+        for (const Bind& b : binds) {
+            if (count_ < binds_.size()) binds_[count_++] = b;
+            else overflow_ = true;  // PassRunner refuses the pass
+        }
     }
+    bool overflow() const { return overflow_; }
     const Bind* begin() const { return binds_.data(); }
     const Bind* end() const { return binds_.data() + count_; }
     uint32_t mask() const {
@@ -41,6 +45,7 @@ public:
 private:
     std::array<Bind, PF_SLOT_COUNT> binds_{};
     uint32_t count_ = 0;
+    bool overflow_ = false;
 };
 
 // One explicit-location uniform value (`layout(location = N) uniform ...` in the kernel).
@@ -83,8 +88,12 @@ public:
     static constexpr size_t kMaxUniforms = 6;
     Uniforms() = default;
     Uniforms(std::initializer_list<Uniform> values) {
-        for (const Uniform& u : values) values_[count_++] = u;  // PassRunner rejects count_ > kMaxUniforms
+        for (const Uniform& u : values) {
+            if (count_ < values_.size()) values_[count_++] = u;
+            else overflow_ = true;  // PassRunner refuses the pass
+        }
     }
+    bool overflow() const { return overflow_; }
     const Uniform* begin() const { return values_.data(); }
     const Uniform* end() const { return values_.data() + count_; }
     uint32_t mask() const {
@@ -96,6 +105,7 @@ public:
 private:
     std::array<Uniform, kMaxUniforms> values_{};
     uint32_t count_ = 0;
+    bool overflow_ = false;
 };
 
 // Indirect dispatch arguments: three uints (groups x, y, z) at `offset` in `buffer`, written by

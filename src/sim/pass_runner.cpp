@@ -67,8 +67,8 @@ void PassRunner::end_step() {
 }
 
 void PassRunner::run(const Pass& pass) {
-    // Outside a step (creation, pf_clear_particles) passes run untimed and uncounted.
     if (!pass.indirect.buffer && pass.invocations == 0) return;
+    // Outside a step (creation, pf_clear_particles) passes run untimed and uncounted.
     if (step_open_ && (!pair_open_ || open_stat_ != pass.stat)) {
         if (pair_open_) timers_.end_pass();
         timers_.begin_pass(int(pass.stat));
@@ -80,16 +80,18 @@ void PassRunner::run(const Pass& pass) {
     const size_t pid = size_t(pass.program);
     const uint32_t missing = used_slots_[pid] & ~pass.binds.mask();
     const uint32_t unset = used_uniforms_[pid] & ~pass.uniforms.mask();
-    if (!program || missing || unset) {
+    const bool overflow = pass.binds.overflow() || pass.uniforms.overflow();
+    if (!program || missing || unset || overflow) {
         ++binding_errors_;
         if (!reported_[pid]) {
             reported_[pid] = true;
-            std::string what = !program ? " was run before its program was prepared"
-                               : missing ? " leaves storage slots unbound (mask " + gl::hex(missing) + ")"
-                                         : " leaves uniform locations unset (mask " + gl::hex(unset) + ")";
+            std::string what = !program   ? " was run before its program was prepared"
+                               : overflow ? " names more bindings or uniforms than a pass holds"
+                               : missing  ? " leaves storage slots unbound (mask " + gl::hex(missing) + ")"
+                                          : " leaves uniform locations unset (mask " + gl::hex(unset) + ")";
             log_.error(PF_ERROR_INVALID_STATE, std::string("internal: pass ") + gl::program_info(pass.program).id + what);
         }
-        if (!program) return;
+        if (!program || overflow) return;
     }
     set_uniforms(program, pid, pass.uniforms);
     // Every pass may read what earlier passes wrote; an indirect one also reads its workgroup

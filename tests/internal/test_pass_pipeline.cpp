@@ -119,6 +119,10 @@ TEST_F(PassPipeline, AMissingBindingIsCaught) {
     EXPECT_EQ(runner.binding_errors(), 2u);
     runner.run({gl::ProgramId::fill, stat, 64, {{PF_SLOT_FILL, &a}}, {}, {Uniform::uint1(PF_LOC_FILL_COUNT, 64)}});
     EXPECT_EQ(runner.binding_errors(), 3u);
+    // More uniforms than a pass holds are refused, not written past the pass's storage.
+    const Uniform u = Uniform::uint1(PF_LOC_FILL_COUNT, 64);
+    runner.run({gl::ProgramId::fill, stat, 64, {{PF_SLOT_FILL, &a}}, {}, {u, u, u, u, u, u, u}});
+    EXPECT_EQ(runner.binding_errors(), 4u);
 }
 
 }  // namespace
