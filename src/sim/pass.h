@@ -14,6 +14,19 @@
 
 namespace pf {
 
+// The workgroups of a dispatch of `invocations` (PF_WORKGROUP_SIZE each), folded into a 2D
+// grid with x at most max_groups_x (flat_id() in shaders/common/dispatch.glsl unfolds it).
+// Every workgroup of the grid runs, so a reduction over it writes x * y partial sums.
+struct Workgroups {
+    uint32_t x = 0, y = 0;
+    uint32_t total() const { return x * y; }
+};
+inline Workgroups workgroups_for(uint64_t invocations, int32_t max_groups_x) {
+    const uint64_t groups = (invocations + PF_WORKGROUP_SIZE - 1) / PF_WORKGROUP_SIZE;
+    const uint64_t x = groups < uint64_t(max_groups_x) ? groups : uint64_t(max_groups_x);
+    return x == 0 ? Workgroups{} : Workgroups{uint32_t(x), uint32_t((groups + x - 1) / x)};
+}
+
 // Index into the runtime list of pass statistics (PassRunner::add_stat).
 using StatId = uint32_t;
 

@@ -4,10 +4,6 @@
 
 namespace pf {
 
-namespace {
-int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
-}  // namespace
-
 PassRunner::PassRunner(const gl::Api& gl, const Log& log, const gl::Buffer& uniforms, GLuint uniform_slot)
     : gl_(gl), log_(log), uniforms_(uniforms), uniform_slot_(uniform_slot), programs_(gl), timers_(gl),
       used_slots_(size_t(gl::ProgramId::count), 0u), used_uniforms_(size_t(gl::ProgramId::count), 0u),
@@ -108,10 +104,8 @@ void PassRunner::run(const Pass& pass) {
         gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, pass.indirect.buffer->id());
         gl_.DispatchComputeIndirect(GLintptr(pass.indirect.offset));
     } else {
-        const int64_t groups = ceil_div(int64_t(pass.invocations), PF_WORKGROUP_SIZE);
-        const int64_t gx = std::min<int64_t>(groups, max_groups_x_);
-        const int64_t gy = ceil_div(groups, gx);
-        gl_.DispatchCompute(GLuint(gx), GLuint(gy), 1);
+        const Workgroups groups = workgroups_for(pass.invocations, max_groups_x_);
+        gl_.DispatchCompute(groups.x, groups.y, 1);
     }
 }
 

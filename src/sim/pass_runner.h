@@ -58,6 +58,8 @@ public:
     void run(const Pass& pass);
 
     uint32_t binding_errors() const { return binding_errors_; }
+    // The workgroups run() dispatches for `invocations` on this GL.
+    Workgroups workgroups(uint64_t invocations) const { return workgroups_for(invocations, max_groups_x_); }
 
     // Programs that write indirect-dispatch records (a solver's start, convergence checks and
     // Krylov scalars). Only after one of them does the next indirect dispatch need

@@ -113,16 +113,15 @@ pf_result Simulation::init() {
     uniforms_ = gl::Buffer(gl_, sizeof(SimUniforms), GL_DYNAMIC_DRAW);
     status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY);
     for (auto& b : readback_) b = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_STREAM_READ);
-    gl_.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups_x_);
-    metrics_partials_ = gl::Buffer(
-        gl_, size_t(workgroups_for(std::max<uint64_t>(uint64_t(cells_), desc_.max_particles))) * 32, GL_DYNAMIC_COPY);
+    runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM);
+    const uint64_t metric_items = std::max<uint64_t>(uint64_t(cells_), desc_.max_particles);
+    metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 32, GL_DYNAMIC_COPY);
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
                           "pf_create: allocating " + std::to_string((np * 32 + size_t(faces_) * 24 + size_t(cells_) * 20) >> 20) +
                               " MiB of GPU buffers failed (GL error " + hex(err) + ")");
     }
 
-    runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM);
     PassRunner& r = *runner_;
     stat_ = CoreStats{r.add_stat("clear", PF_PASS_CLEAR),
                       r.add_stat("p2g", PF_PASS_P2G),
@@ -296,12 +295,6 @@ void Simulation::run_substep() {
     run_g2p_and_advect();
 }
 
-uint32_t Simulation::workgroups_for(uint64_t invocations) const {
-    const uint64_t groups = (invocations + PF_WORKGROUP_SIZE - 1) / PF_WORKGROUP_SIZE;
-    const uint64_t gx = std::min<uint64_t>(groups, uint64_t(max_groups_x_));
-    return uint32_t(gx * ((groups + gx - 1) / gx));
-}
-
 void Simulation::run_metrics() {
     PassRunner& r = *runner_;
     // One fused pass over cells and particles (invocation i: cell i and particle i), then one
@@ -312,7 +305,7 @@ void Simulation::run_metrics() {
            {{PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_COUNT, &cell_count_},
             {PF_SLOT_CELL_TYPE, &cell_type_}, partials}});
     r.run({ProgramId::metrics_finish, stat_.metrics, PF_WORKGROUP_SIZE, {partials, {PF_SLOT_STATUS, &status_}}, {},
-           {Uniform::uint1(PF_LOC_METRICS_GROUPS, workgroups_for(n))}});
+           {Uniform::uint1(PF_LOC_METRICS_GROUPS, r.workgroups(n).total())}});
 }
 
 void Simulation::run_g2p_and_advect() {

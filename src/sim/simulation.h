@@ -99,8 +99,6 @@ private:
     void run_metrics();
     // The drifts' reference is taken again (particles were added or cleared).
     void restart_volume_reference();
-    // Workgroups of a direct dispatch of `invocations` (as PassRunner folds it: gx * gy).
-    uint32_t workgroups_for(uint64_t invocations) const;
 
     // The statistics entries of the core passes (pf_pass order).
     struct CoreStats {
@@ -160,7 +158,6 @@ private:
     mutable bool metrics_first_set_ = false;
     uint64_t metrics_epoch_step_ = 0;      // ...taken from the first readback of a step >= this one
     gl::Buffer metrics_partials_;          // two vec4 per workgroup of the metrics pass
-    GLint max_groups_x_ = 65535;
     uint64_t flags_cleared_at_step_ = 0;   // pf_clear_flags: ignore flags read back from older steps
     float added_speed_ = 0.0f;             // fastest particle added since...
     uint64_t added_at_step_ = 0;           // ...this step (no readback covers it yet)

@@ -7,20 +7,14 @@
 
 namespace pf {
 
-namespace {
-int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
-}  // namespace
-
 std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid) {
     grid_ = grid;
-    gl.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups_x_);
+    runner_ = &runner;
     std::vector<uint32_t> zeros(PF_SOLVER_WORDS, 0u);
     state_ = gl::Buffer(gl, zeros.size() * 4, GL_DYNAMIC_COPY);
     state_.upload(0, zeros.size() * 4, zeros.data());
     orbits_ = uint32_t((grid.size.x + 1) / 2) * uint32_t(grid.size.y) * uint32_t((grid.size.z + 1) / 2);
-    const int64_t groups = ceil_div(orbits_, PF_WORKGROUP_SIZE);
-    const int64_t gx = std::min<int64_t>(groups, max_groups_x_);
-    partials_ = uint32_t(gx * ceil_div(groups, gx));  // a 2D dispatch may add idle workgroups
+    partials_ = runner.workgroups(orbits_).total();  // a 2D dispatch may add idle workgroups
     partials_buffer_ = gl::Buffer(gl, size_t(partials_) * 16, GL_DYNAMIC_COPY);
     add_record(grid.cells);
     orbit_record_ = add_record(orbits_);
@@ -33,9 +27,8 @@ std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const Solv
 
 uint32_t SolveControl::add_record(uint64_t invocations) {
     const uint32_t k = records_++;
-    const int64_t groups = ceil_div(int64_t(invocations), PF_WORKGROUP_SIZE);
-    const int64_t gx = std::min<int64_t>(groups, max_groups_x_);
-    const uint32_t full[4] = {uint32_t(gx), uint32_t(ceil_div(groups, gx)), 1u, 0u};
+    const Workgroups groups = runner_->workgroups(invocations);
+    const uint32_t full[4] = {groups.x, groups.y, 1u, 0u};
     // The live record and its full size (begin_solve copies one onto the other), and the count.
     state_.upload((PF_SOLVER_SCALARS + 4 * k) * 4, 16, full);
     state_.upload((PF_SOLVER_SCALARS + 4 * (PF_SOLVER_MAX_RECORDS + k)) * 4, 16, full);

@@ -56,7 +56,7 @@ private:
     uint32_t partials_ = 0;
     uint32_t orbits_ = 0, orbit_record_ = 0;
     uint32_t records_ = 0;
-    GLint max_groups_x_ = 65535;
+    const PassRunner* runner_ = nullptr;
 };
 
 }  // namespace pf
