@@ -19,16 +19,6 @@
 namespace pf::test {
 namespace {
 
-std::vector<double> as_floats(const std::vector<uint32_t>& words) {
-    std::vector<double> out(words.size());
-    for (size_t i = 0; i < words.size(); ++i) {
-        float f;
-        std::memcpy(&f, &words[i], 4);
-        out[i] = f;
-    }
-    return out;
-}
-
 struct Scene {
     ref::Grid grid;
     ref::Particles particles;
@@ -223,7 +213,7 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
     EXPECT_EQ(type, ref::classify(g, p2g.count));
 
     // Grid forces: u_old = (M/S_m)/(W/S_w) from the GPU's own integer sums; then gravity and walls.
-    const std::vector<double> vel_old = as_floats(sim.read_grid(GridBuffer::face_vel_old));
+    const std::vector<double> vel_old = words_as_floats(sim.read_grid(GridBuffer::face_vel_old));
     ref::P2GResult gpu_p2g{std::vector<double>(size_t(g.faces())), std::vector<double>(size_t(g.faces())), p2g.count};
     for (int f = 0; f < g.faces(); ++f) {
         gpu_p2g.momentum[f] = double(int32_t(accum[2 * f])) / s_m;
@@ -235,7 +225,7 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
     }
 
     // Pressure setup: b = -div * rho dx / dt on FLUID cells.
-    const std::vector<double> rhs = as_floats(sim.read_grid(GridBuffer::rhs));
+    const std::vector<double> rhs = words_as_floats(sim.read_grid(GridBuffer::rhs));
     const std::vector<double> rhs_ref = ref::pressure_rhs(g, type, forces.vel, rho, dt, count,
                                                           d.fill_particles_per_cell, d.params.volume_correction);
     double rhs_scale = 0;
@@ -245,7 +235,7 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
 
     // Jacobi: K weighted iterations on the GPU's right-hand side, from the hydrostatic start
     // (§4.5a: the first substep after particles were added).
-    const std::vector<double> p = as_floats(sim.read_grid(GridBuffer::pressure));
+    const std::vector<double> p = words_as_floats(sim.read_grid(GridBuffer::pressure));
     std::vector<double> p_start(size_t(g.cells()), 0.0);
     ref::hydrostatic_start(g, type, gravity, rho, p_start);
     const std::vector<double> p_ref = ref::jacobi(g, type, rhs, p_start,
@@ -259,7 +249,7 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
     // Velocity update and extrapolation, from the GPU's pressure.
     ref::VelocityUpdate vu = ref::velocity_update(g, type, forces.vel, p, rho, dt);
     ref::extrapolate(g, vu, int(d.params.extrapolation_layers));
-    const std::vector<double> vel = as_floats(sim.read_grid(GridBuffer::face_vel));
+    const std::vector<double> vel = words_as_floats(sim.read_grid(GridBuffer::face_vel));
     const std::vector<uint32_t> valid = sim.read_grid(GridBuffer::face_valid);
     double v_scale = 0;
     for (double v : vu.vel) v_scale = std::max(v_scale, std::abs(v));

@@ -38,16 +38,6 @@ void add_random_block(pf_sim* sim, const pf_sim_desc& d, int count, float speed,
     ASSERT_EQ(pf_add_particles(sim, pos.data(), vel.data(), uint32_t(count)), PF_OK);
 }
 
-std::vector<double> as_doubles(const std::vector<uint32_t>& words) {
-    std::vector<double> out(words.size());
-    for (size_t i = 0; i < words.size(); ++i) {
-        float f;
-        std::memcpy(&f, &words[i], 4);
-        out[i] = f;
-    }
-    return out;
-}
-
 TEST_F(Metrics, GpuReductionsMatchTheCpu) {
     pf_sim_desc d = test_desc(16, 12, 14, 0.05f);
     d.params.pressure_iterations = 20;  // leaves a clear divergence to measure
@@ -64,7 +54,7 @@ TEST_F(Metrics, GpuReductionsMatchTheCpu) {
     const std::vector<uint32_t> type_words = sim.read_grid(GridBuffer::cell_type);
     const std::vector<uint32_t> count = sim.read_grid(GridBuffer::cell_count);
     const std::vector<uint8_t> type(type_words.begin(), type_words.end());
-    const std::vector<double> div = ref::divergence(g, type, as_doubles(sim.read_grid(GridBuffer::face_vel)));
+    const std::vector<double> div = ref::divergence(g, type, words_as_floats(sim.read_grid(GridBuffer::face_vel)));
     double sum2 = 0, max_div = 0;
     uint32_t fluid = 0;
     for (size_t c = 0; c < div.size(); ++c) {

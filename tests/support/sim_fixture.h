@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -88,6 +89,17 @@ inline double surface_depth_of(const ParticleState& p, const pf_sim_desc& d) {
         ++columns;
     }
     return columns ? sum / double(columns) : 0.0;
+}
+
+// Raw 32-bit words of a GPU buffer read as floats (widened to double for comparisons).
+inline std::vector<double> words_as_floats(const std::vector<uint32_t>& words) {
+    std::vector<double> out(words.size());
+    for (size_t i = 0; i < words.size(); ++i) {
+        float f;
+        std::memcpy(&f, &words[i], 4);
+        out[i] = f;
+    }
+    return out;
 }
 
 inline ParticleState read_all(pf_sim* sim) {
