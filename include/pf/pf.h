@@ -230,9 +230,6 @@ typedef struct pf_stats {
     uint32_t substeps;                /**< substeps taken by the last pf_step */
     uint32_t flags;                   /**< PF_FLAG_* seen so far */
     float max_speed;                  /**< largest particle speed of the latest GPU readback, m/s */
-    uint32_t solver_iterations;       /**< most pressure iterations a substep of that readback's step took */
-    float solver_residual;            /**< largest final relative residual |b - A p| / |b| of its substeps
-                                           (with separation: of the complementarity problem, design.md §4.6) */
     float cpu_ms;                     /**< host time spent inside the last pf_step */
     uint64_t gpu_step;                /**< which step gpu_ms belongs to (0: none measured yet) */
     uint32_t gpu_substeps;            /**< substeps of that step */
@@ -264,6 +261,10 @@ typedef struct pf_stats {
                                            (compression); thin sheets still count their particles */
     float particle_volume_drift;      /**< particle_volume / (particle_volume at the first measured step) - 1,
                                            same reference as fluid_cell_drift */
+    /* The pressure solve of the step max_speed belongs to. */
+    uint32_t solver_iterations;       /**< most pressure iterations a substep of that readback's step took */
+    float solver_residual;            /**< largest final relative residual |b - A p| / |b| of its substeps
+                                           (with separation: of the complementarity problem, design.md §4.6) */
 } pf_stats;
 
 /** One entry of the per-pass statistics list (pf_get_pass_stats). The list is built at run
