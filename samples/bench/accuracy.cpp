@@ -293,8 +293,6 @@ std::vector<Case> make_cases(uint32_t n) {
                                                           : 0.0;
             r.metrics["period_error_pct"] = measured > 0 ? 100.0 * (measured / period - 1.0) : std::nan("");
             r.metrics["period_theory_s"] = period;
-            if (std::getenv("PF_ACCURACY_TRACE"))
-                for (size_t i = 0; i < y.size(); ++i) std::fprintf(stderr, "wave %zu %.5f\n", i, y[i]);
         };
         cases.push_back(c);
     }
@@ -361,6 +359,19 @@ Run run_case(const Case& c, const Config& config, uint32_t n, bool verbose) {
     return r;
 }
 
+// The items named in `names`, in that order (all of them when names is empty).
+template <typename T>
+std::vector<T> select_by_name(std::vector<T> all, const std::vector<std::string>& names, const char* what) {
+    if (names.empty()) return all;
+    std::vector<T> chosen;
+    for (const std::string& name : names) {
+        auto it = std::find_if(all.begin(), all.end(), [&](const T& item) { return item.name == name; });
+        if (it == all.end()) throw Error(std::string("unknown ") + what + " '" + name + "'");
+        chosen.push_back(*it);
+    }
+    return chosen;
+}
+
 struct Options {
     uint32_t n = 32;
     std::vector<std::string> cases, configs;
@@ -417,26 +428,8 @@ int run(int argc, char** argv) {
     std::printf("pf_accuracy %s, %s\n%s\n", pfs::pf_version_string().c_str(), pfs::utc_timestamp().c_str(),
                 ctx.describe().c_str());
 
-    std::vector<Config> configs = sweep_configs();
-    if (!opt.configs.empty()) {
-        std::vector<Config> chosen;
-        for (const std::string& name : opt.configs) {
-            auto it = std::find_if(configs.begin(), configs.end(), [&](const Config& c) { return c.name == name; });
-            if (it == configs.end()) throw Error("unknown configuration '" + name + "'");
-            chosen.push_back(*it);
-        }
-        configs = chosen;
-    }
-    std::vector<Case> cases = make_cases(opt.n);
-    if (!opt.cases.empty()) {
-        std::vector<Case> chosen;
-        for (const std::string& name : opt.cases) {
-            auto it = std::find_if(cases.begin(), cases.end(), [&](const Case& c) { return c.name == name; });
-            if (it == cases.end()) throw Error("unknown case '" + name + "'");
-            chosen.push_back(*it);
-        }
-        cases = chosen;
-    }
+    const std::vector<Config> configs = select_by_name(sweep_configs(), opt.configs, "configuration");
+    const std::vector<Case> cases = select_by_name(make_cases(opt.n), opt.cases, "case");
 
     std::map<std::string, std::map<std::string, Run>> results;
     ojson rows = ojson::array();

@@ -59,7 +59,8 @@ void print_usage(std::FILE* f) {
                  "  --pressure-iterations N  Jacobi iterations per substep for every scene (default 40,\n"
                  "                           the original's \"step (40 Jacobi iterations)\")\n"
                  "  --preset NAME            quality preset fast, balanced or accurate (replaces the scenes'\n"
-                 "                           step parameters but max_substeps; options below apply on top)\n"
+                 "                           step parameters but gravity and max_substeps; options below\n"
+                 "                           apply on top)\n"
                  "  --solver NAME            pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
                  "  --tolerance T            pressure_tolerance (relative residual) for every scene\n"
                  "  --separation 0|1         override the scenes' separation\n"
@@ -91,8 +92,7 @@ Options parse_args(int argc, char** argv) {
             o.pressure_iterations = pfs::parse_u32(args.value(), "--pressure-iterations", 1, 10000);
         } else if (a == "--preset") {
             o.preset = args.value();
-            if (o.preset != "fast" && o.preset != "balanced" && o.preset != "accurate")
-                throw Error("--preset: expected fast, balanced or accurate, got '" + o.preset + "'");
+            pfs::parse_preset(o.preset, "--preset");
         } else if (a == "--solver") {
             o.solver = args.value();
             pfs::parse_solver(o.solver, "--solver");
@@ -180,11 +180,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
 
     pf_sim_desc desc = pfs::make_sim_desc(r.scene, pfs::get_proc, pfs::stderr_logger(opt.verbose));
     if (!opt.preset.empty()) {
-        const pf_quality q = opt.preset == "fast" ? PF_QUALITY_FAST : opt.preset == "balanced" ? PF_QUALITY_BALANCED
-                                                                                              : PF_QUALITY_ACCURATE;
-        const uint32_t max_substeps = desc.params.max_substeps;
-        pfs::check(pf_quality_params(q, &desc.params), "pf_quality_params");
-        desc.params.max_substeps = max_substeps;
+        pfs::apply_preset(pfs::parse_preset(opt.preset, "--preset"), desc.params);
     } else {
         desc.params.pressure_iterations = opt.pressure_iterations;
     }

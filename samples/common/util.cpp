@@ -154,6 +154,21 @@ namespace {
 const char* const kSolverNames[PF_PRESSURE_SOLVER_COUNT] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
 }  // namespace
 
+pf_quality parse_preset(const std::string& name, const char* what) {
+    if (name == "fast") return PF_QUALITY_FAST;
+    if (name == "balanced") return PF_QUALITY_BALANCED;
+    if (name == "accurate") return PF_QUALITY_ACCURATE;
+    throw Error(std::string(what) + ": unknown preset '" + name + "' (known: fast, balanced, accurate)");
+}
+
+void apply_preset(pf_quality quality, pf_sim_params& p) {
+    pf_sim_params q{};
+    check(pf_quality_params(quality, &q), "pf_quality_params");
+    for (int a = 0; a < 3; ++a) q.gravity[a] = p.gravity[a];
+    q.max_substeps = p.max_substeps;
+    p = q;
+}
+
 pf_pressure_solver parse_solver(const std::string& name, const char* what) {
     for (int i = 0; i < PF_PRESSURE_SOLVER_COUNT; ++i)
         if (name == kSolverNames[i]) return pf_pressure_solver(i);
@@ -200,11 +215,7 @@ const char* advection_name(pf_advection advection) {
 bool ParamOverrides::parse(ArgCursor& args) {
     const std::string& a = args.option();
     if (a == "--preset") {
-        const std::string v = args.value();
-        if (v == "fast") preset = PF_QUALITY_FAST;
-        else if (v == "balanced") preset = PF_QUALITY_BALANCED;
-        else if (v == "accurate") preset = PF_QUALITY_ACCURATE;
-        else throw Error("--preset: unknown preset '" + v + "' (known: fast, balanced, accurate)");
+        preset = parse_preset(args.value(), "--preset");
         has_preset = true;
     } else if (a == "--solver") {
         solver = parse_solver(args.value(), "--solver");
@@ -226,13 +237,7 @@ bool ParamOverrides::parse(ArgCursor& args) {
 }
 
 void ParamOverrides::apply(pf_sim_params& p) const {
-    if (has_preset) {
-        pf_sim_params q{};
-        check(pf_quality_params(preset, &q), "pf_quality_params");
-        for (int a = 0; a < 3; ++a) q.gravity[a] = p.gravity[a];
-        q.max_substeps = p.max_substeps;
-        p = q;
-    }
+    if (has_preset) apply_preset(preset, p);
     if (has_solver) p.pressure_solver = solver;
     if (has_tolerance) p.pressure_tolerance = tolerance;
     if (has_transfer) p.transfer = transfer;

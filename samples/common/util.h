@@ -111,6 +111,11 @@ struct ParamOverrides {
 /// The runtime per-pass statistics list (pf_get_pass_count / pf_get_pass_stats), in the
 /// library's order. Names stay valid until pf_destroy.
 pf_result get_pass_list(const pf_sim* sim, std::vector<pf_pass_stats>& out);
+/// Quality preset by name ("fast", "balanced", "accurate"); throws Error naming `what`.
+pf_quality parse_preset(const std::string& name, const char* what);
+/// Replaces p by the preset's parameters, keeping p's gravity and max_substeps (the scene's
+/// physics and substep budget, not a quality choice).
+void apply_preset(pf_quality quality, pf_sim_params& p);
 /// "WxH" -> w, h (each 16..16384).
 void parse_size(const std::string& text, const char* option, uint32_t& w, uint32_t& h);
 

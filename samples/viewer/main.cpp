@@ -252,26 +252,29 @@ struct ParamPreset {
 /// The presets of the simulation panel's combo, in order. When the library gains quality
 /// presets, each level becomes one more entry here (its make() calling the library's
 /// defaults-for-quality function); the panel needs no other change.
-/// A library quality preset, keeping the scene's gravity and substep cap (scene physics, not quality).
-pf_sim_params quality_params(pf_quality quality, const pfs::Scene& scene) {
-    pf_sim_params p{};
-    pfs::check(pf_quality_params(quality, &p), "pf_quality_params");
-    for (int a = 0; a < 3; ++a) p.gravity[a] = scene.params.gravity[a];
-    p.max_substeps = scene.params.max_substeps;
-    return p;
-}
-
 const std::vector<ParamPreset>& param_presets() {
     static const std::vector<ParamPreset> presets = {
         {"scene file", "the scene file's values (with the command line's --solver/--tolerance/--transfer/--advection)",
          [](const pfs::Scene& scene) { return scene.params; }},
         {"library defaults", "pf_default_sim_params()", [](const pfs::Scene&) { return pf_default_sim_params(); }},
         {"fast", "PF_QUALITY_FAST: 40 Jacobi sweeps, FLIP, Euler (docs/accuracy.md)",
-         [](const pfs::Scene& scene) { return quality_params(PF_QUALITY_FAST, scene); }},
+         [](const pfs::Scene& scene) {
+             pf_sim_params p = scene.params;
+             pfs::apply_preset(PF_QUALITY_FAST, p);
+             return p;
+         }},
         {"balanced", "PF_QUALITY_BALANCED: MGPCG to 1e-3, separation off",
-         [](const pfs::Scene& scene) { return quality_params(PF_QUALITY_BALANCED, scene); }},
+         [](const pfs::Scene& scene) {
+             pf_sim_params p = scene.params;
+             pfs::apply_preset(PF_QUALITY_BALANCED, p);
+             return p;
+         }},
         {"accurate", "PF_QUALITY_ACCURATE: MGPCG to 1e-5 with separation, APIC",
-         [](const pfs::Scene& scene) { return quality_params(PF_QUALITY_ACCURATE, scene); }},
+         [](const pfs::Scene& scene) {
+             pf_sim_params p = scene.params;
+             pfs::apply_preset(PF_QUALITY_ACCURATE, p);
+             return p;
+         }},
     };
     return presets;
 }
