@@ -30,7 +30,6 @@ void main() {
     float rz = t.y - m * t.w;
     float rel = relative_residual(t.x, state_float(PF_SOLVER_BB));
     set_state_float(PF_SOLVER_RESIDUAL, rel);
-    set_state_float(PF_SOLVER_RR, t.x);
 #if PF_CG_STEP == 2
     state[PF_SOLVER_ITERATIONS] += 1u;
 #endif

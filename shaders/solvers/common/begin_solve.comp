@@ -29,7 +29,6 @@ void main() {
     state[PF_SOLVER_SINGULAR] = singular ? 1u : 0u;
     state[PF_SOLVER_FLUID_CELLS] = uint(fluid);
     set_state_float(PF_SOLVER_RZ, 0.0);
-    set_state_float(PF_SOLVER_RR, 0.0);
     set_state_float(PF_SOLVER_ALPHA, 0.0);
     set_state_float(PF_SOLVER_BETA, 0.0);
     set_state_float(PF_SOLVER_Z_MEAN, 0.0);

@@ -11,7 +11,7 @@
 #define PF_SOLVER_SINGULAR 2     /* uint: 1 when no cell is AIR (pure Neumann: constants are a null space) */
 #define PF_SOLVER_FLUID_CELLS 3  /* uint: FLUID cells of this solve */
 #define PF_SOLVER_RZ 4           /* float: r.z of the current Krylov iterate */
-#define PF_SOLVER_RR 5           /* float: r.r of the current iterate */
+                                 /* word 5: unused */
 #define PF_SOLVER_ALPHA 6        /* float: CG step length */
 #define PF_SOLVER_BETA 7         /* float: CG direction update */
 #define PF_SOLVER_Z_MEAN 8       /* float: mean of z removed when singular */

@@ -8,7 +8,6 @@ namespace pf {
 
 pf_result RedBlackSolver::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid, const Log& log,
                                const char* fn) {
-    grid_ = grid;
     std::string error = control_.init(gl, runner, grid);
     if (error.empty()) error = runner.prepare(gl::ProgramId::gauss_seidel);
     if (!error.empty()) return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);

@@ -21,7 +21,6 @@ private:
     // One red and one black half-sweep; skipped (indirectly) once the solve has converged.
     void sweep(PassRunner& runner, const PressureProblem& problem);
 
-    SolverGrid grid_{};
     SolveControl control_;
     StatId stat_ = 0;
 };
