@@ -149,6 +149,9 @@ typedef struct pf_sim_params {
                                        substep, against PIC/FLIP's slow compression. 0 = off (a zero value is
                                        taken literally, like flip_ratio); default 0.1 */
     pf_p2g p2g;                   /**< particle-to-grid scheme; default (0) PF_P2G_FIXED_POINT */
+    float volume_loss_limit;      /**< fraction of its rest volume (particle count / fill_particles_per_cell
+                                       cells) pf_stats.particle_volume may lose before PF_FLAG_VOLUME_LOST is
+                                       raised and logged, (0, 1]; 0 = default 0.1 */
 } pf_sim_params;
 
 /** Quality presets: measured points of the accuracy-versus-time trade-off (docs/accuracy.md
@@ -166,8 +169,9 @@ typedef enum pf_quality {
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
 typedef struct pf_sim_desc {
     uint32_t grid_size[3];        /**< cells per axis, each 2..1024; default 32^3 */
-    float cell_size;              /**< cell edge in metres, > 0; default 0.05 */
-    float origin[3];              /**< world position of the grid's minimum corner; default 0 */
+    float cell_size;              /**< cell edge in metres, 1e-5..1e5; default 0.05 */
+    float origin[3];              /**< world position of the grid's minimum corner; the whole domain must lie
+                                       within 2^16 cells of the world origin (float positions); default 0 */
     uint32_t max_particles;       /**< particle capacity, 1..2^28; default 262144 */
     float max_speed;              /**< speed bound in m/s (particles are clamped to it; sizes the
                                        fixed-point P2G range); 0 = default 100 */
@@ -219,8 +223,13 @@ enum {
     PF_FLAG_P2G_OVERFLOW = 1u << 0,    /**< a fixed-point accumulator would have overflowed */
     PF_FLAG_NONFINITE = 1u << 1,       /**< a non-finite velocity was found and zeroed */
     PF_FLAG_SPEED_CLAMPED = 1u << 2,   /**< a particle exceeded max_speed and was clamped */
-    PF_FLAG_SUBSTEPS_CLAMPED = 1u << 3 /**< CFL wanted more than max_substeps */
+    PF_FLAG_SUBSTEPS_CLAMPED = 1u << 3, /**< CFL wanted more than max_substeps: particles moved more than
+                                             cfl cells per substep (the step is less accurate, docs/stability.md) */
+    PF_FLAG_VOLUME_LOST = 1u << 4      /**< particle_volume fell more than params.volume_loss_limit below the
+                                            particles' rest volume (count / fill_particles_per_cell cells): the
+                                            liquid has compressed that much */
 };
+/* Each flag is logged once (a warning) when it is raised, and again only after pf_clear_flags. */
 
 /** Measurements. GPU figures lag a few frames (read without stalling). */
 typedef struct pf_stats {

@@ -2,6 +2,7 @@
 // weighted by a smooth falloff (1 - (d/r)^2)^2 that reaches 0 at the rim, then clamps the
 // speed to max_speed (flagged, as in G2P).
 #include "common/dispatch.glsl"
+#include "common/robust_length.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
 layout(std430, binding = PF_SLOT_PARTICLE_VEL) buffer Vel { vec4 vel[]; };
@@ -18,9 +19,9 @@ void main() {
     if (q >= 1.0) return;
     float falloff = (1.0 - q) * (1.0 - q);
     vec3 v = vel[i].xyz + falloff * u_dv_max_speed.xyz;
-    float speed = length(v);
+    float speed = robust_length(v);
     if (speed > u_dv_max_speed.w) {
-        v *= u_dv_max_speed.w / speed;
+        v = robust_direction(v) * u_dv_max_speed.w;
         atomicOr(status[PF_STATUS_FLAGS], PF_GPU_FLAG_SPEED_CLAMPED);
     }
     vel[i] = vec4(v, 0.0);

@@ -1,11 +1,15 @@
 #include "api/validate.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 namespace pf {
 
 namespace {
+constexpr float kMinCellSize = 1e-5f, kMaxCellSize = 1e5f;
+constexpr double kMaxCellsFromWorldOrigin = 65536.0;
+
 bool finite3(const float v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
 std::string str(double v) {
@@ -25,6 +29,7 @@ pf_sim_params resolve_params(const pf_sim_params& in) {
     if (p.extrapolation_layers == 0) p.extrapolation_layers = d.extrapolation_layers;
     if (p.pressure_tolerance == 0.0f) p.pressure_tolerance = d.pressure_tolerance;
     if (p.sor_omega == 0.0f) p.sor_omega = d.sor_omega;
+    if (p.volume_loss_limit == 0.0f) p.volume_loss_limit = d.volume_loss_limit;
     return p;
 }
 
@@ -63,6 +68,8 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
         return bad("params.advection is not a pf_advection value, got " + std::to_string(int(p.advection)));
     if (!(p.volume_correction >= 0.0f && p.volume_correction <= 1.0f))
         return bad("params.volume_correction must be in [0, 1], got " + str(p.volume_correction));
+    if (!(p.volume_loss_limit > 0.0f && p.volume_loss_limit <= 1.0f))
+        return bad("params.volume_loss_limit must be in (0, 1], got " + str(p.volume_loss_limit));
     if (p.extrapolation_layers < 1 || p.extrapolation_layers > 16)
         return bad("params.extrapolation_layers must be in [1, 16], got " + std::to_string(p.extrapolation_layers));
     return PF_OK;
@@ -80,6 +87,19 @@ pf_result validate_desc(const pf_sim_desc& d, const Log& log) {
     if (cells > (uint64_t(1) << 26)) return bad("desc.grid_size has " + std::to_string(cells) + " cells; at most 2^26 are supported");
     if (!(std::isfinite(d.cell_size) && d.cell_size > 0.0f)) return bad("desc.cell_size must be finite and > 0, got " + str(d.cell_size));
     if (!finite3(d.origin)) return bad("desc.origin must be finite");
+    if (d.cell_size < kMinCellSize || d.cell_size > kMaxCellSize)
+        return bad("desc.cell_size must be in [" + str(kMinCellSize) + ", " + str(kMaxCellSize) + "] m, got " + str(d.cell_size));
+    for (int a = 0; a < 3; ++a) {
+        // Positions are floats: the far corner must exist as one, and a particle anywhere in the
+        // domain must still resolve a fraction of a cell (float keeps 24 bits: at 2^16 cells from
+        // the world origin a position is exact to 1/128 of a cell).
+        const double lo = d.origin[a], hi = lo + double(d.cell_size) * d.grid_size[a];
+        const double reach = std::max(std::abs(lo), std::abs(hi)) / d.cell_size;
+        if (!(reach <= kMaxCellsFromWorldOrigin)) {
+            return bad("desc.origin[" + std::to_string(a) + "] puts the domain " + str(reach) +
+                       " cells from the world origin; at most 2^16 are resolvable in float (move the origin closer)");
+        }
+    }
     if (d.max_particles < 1 || d.max_particles > (1u << 28))
         return bad("desc.max_particles must be in [1, 2^28], got " + std::to_string(d.max_particles));
     if (!(std::isfinite(d.max_speed) && d.max_speed > 0.0f)) return bad("desc.max_speed must be finite and > 0, got " + str(d.max_speed));

@@ -29,9 +29,13 @@ FillLattice::FillLattice(const pf_sim_desc& desc, const float lo[3], const float
         lo_[a] = std::max(double(lo[a]), d_lo);
         hi_[a] = std::min(double(hi[a]), d_hi);
         // Samples sit at the centres of the sub-lattice: origin + (s + 0.5) * spacing.
-        first_[a] = std::max<int64_t>(0, int64_t(std::ceil((lo_[a] - d_lo) / spacing - 0.5)));
-        last_[a] = std::min<int64_t>(int64_t(desc.grid_size[a]) * m_,
-                                     int64_t(std::floor((hi_[a] - d_lo) / spacing - 0.5)) + 1);
+        // The sample range is clamped in double before it becomes an integer: a box far outside
+        // the domain (lo = 1e20) would otherwise convert a value beyond int64's range (undefined).
+        const double samples = double(desc.grid_size[a]) * m_;
+        const double first = std::clamp(std::ceil((lo_[a] - d_lo) / spacing - 0.5), 0.0, samples);
+        const double last = std::clamp(std::floor((hi_[a] - d_lo) / spacing - 0.5) + 1.0, 0.0, samples);
+        first_[a] = int64_t(first);
+        last_[a] = int64_t(last);
         if (!(hi_[a] > lo_[a]) || last_[a] <= first_[a]) empty_ = true;
     }
 }

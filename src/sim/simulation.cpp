@@ -344,7 +344,7 @@ pf_result Simulation::step(float frame_dt) {
     gl::StateGuard guard(gl_, gl_state_);
     bool clamped = false;
     const uint32_t substeps = substeps_for(frame_dt, &clamped);
-    if (clamped) flags_ |= PF_FLAG_SUBSTEPS_CLAMPED;
+    if (clamped) raise_flags(PF_FLAG_SUBSTEPS_CLAMPED);
     ++steps_;
     runner_->begin_step(steps_, substeps);
 
@@ -368,6 +368,7 @@ pf_result Simulation::step(float frame_dt) {
     fences_[slot] = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     fence_step_[slot] = steps_;
     fence_solver_[slot] = desc_.params.pressure_solver;
+    fence_particles_[slot] = particle_count_;
 
     // Engines may read the particle buffers as vertex data, SSBOs or by copying.
     gl_.MemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
@@ -427,7 +428,7 @@ void Simulation::poll_status() const {
             gl::StateGuard guard(gl_, gl_state_);
             readback_[s].download(0, sizeof(words), words);
         }
-        if (fence_step_[s] > flags_cleared_at_step_) flags_ |= words[PF_STATUS_FLAGS];
+        if (fence_step_[s] > flags_cleared_at_step_) raise_flags(words[PF_STATUS_FLAGS]);
         if (fence_step_[s] > status_step_) {
             status_step_ = fence_step_[s];
             std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
@@ -448,6 +449,14 @@ void Simulation::poll_status() const {
                 metrics_first_ = m;
                 metrics_first_set_ = true;
             }
+            // Lost volume against the rest volume of the particles (count / fill density): a
+            // cell counts at most its rest count, so only compression lowers the ratio, and
+            // unlike the drift it needs no earlier measurement (a 1 s frame compresses a dam
+            // break before the first one).
+            const double rest = double(fence_particles_[s]) / desc_.fill_particles_per_cell * std::pow(double(desc_.cell_size), 3);
+            if (fence_step_[s] > flags_cleared_at_step_ && rest > 0.0 &&
+                double(m.particle_volume) / rest - 1.0 < -double(desc_.params.volume_loss_limit))
+                raise_flags(PF_FLAG_VOLUME_LOST);
         }
     }
 }
@@ -502,6 +511,31 @@ pf_result Simulation::fill_box(const float lo[3], const float hi[3], const float
         for (size_t i = 0; i < v.size(); ++i) v[i] = vel[i % 3];
     }
     return add_particles(xyz.data(), vel ? v.data() : nullptr, uint32_t(xyz.size() / 3));
+}
+
+void Simulation::raise_flags(uint32_t bits) const {
+    const uint32_t fresh = bits & ~flags_;
+    flags_ |= bits;
+    // One warning per flag until pf_clear_flags: a PF_OK step whose result is not trustworthy
+    // must say so without flooding the log every frame.
+    struct Text {
+        uint32_t bit;
+        const char* text;
+    };
+    static constexpr Text kTexts[] = {
+        {PF_FLAG_P2G_OVERFLOW, "a fixed-point particle-to-grid sum overflowed (over ~2047 particles on one grid sample): "
+                               "the sum was saturated, that region's velocity is approximate (PF_FLAG_P2G_OVERFLOW)"},
+        {PF_FLAG_NONFINITE, "a non-finite particle velocity was found and set to 0 (PF_FLAG_NONFINITE)"},
+        {PF_FLAG_SPEED_CLAMPED, "a particle exceeded desc.max_speed and was slowed to it (PF_FLAG_SPEED_CLAMPED)"},
+        {PF_FLAG_SUBSTEPS_CLAMPED, "the frame needs more than params.max_substeps CFL substeps: particles cross more "
+                                   "than params.cfl cells per substep, so the step is less accurate "
+                                   "(PF_FLAG_SUBSTEPS_CLAMPED)"},
+        {PF_FLAG_VOLUME_LOST, "the liquid lost more than params.volume_loss_limit of its rest volume to compression "
+                              "(pf_stats.particle_volume); consider a converged pressure solver, volume "
+                              "correction or smaller frame times (PF_FLAG_VOLUME_LOST)"},
+    };
+    for (const Text& t : kTexts)
+        if (fresh & t.bit) log_.warning(std::string("pf_step: ") + t.text);
 }
 
 void Simulation::clear_flags() {

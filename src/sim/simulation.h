@@ -147,7 +147,10 @@ private:
     mutable uint32_t recent_later_iterations_ = 0;  // ...and in one later (active-set) round...
     mutable pf_pressure_solver recent_solver_ = PF_PRESSURE_SOLVER_COUNT;  // ...of this solver
     pf_pressure_solver fence_solver_[kReadbackSlots] = {};  // the solver of each readback's step
+    uint32_t fence_particles_[kReadbackSlots] = {};         // and its particle count
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
+    // Adds PF_FLAG_* bits, logging one warning for each bit not already set.
+    void raise_flags(uint32_t bits) const;
     // Accuracy metrics of the newest readback (status words PF_STATUS_DIVERGENCE_L2..).
     struct Metrics {
         float divergence_l2 = 0, divergence_max = 0, kinetic_energy = 0, particle_volume = 0;

@@ -96,6 +96,10 @@ std::vector<ParamCase> bad_param_cases() {
         {"advection FORCE32", "advection", [](pf_sim_params& p) { p.advection = PF_ADVECTION_FORCE32; }},
         {"volume_correction -0.1", "volume_correction", [](pf_sim_params& p) { p.volume_correction = -0.1f; }},
         {"volume_correction 1.5", "volume_correction", [](pf_sim_params& p) { p.volume_correction = 1.5f; }},
+        {"volume_loss_limit -0.1", "volume_loss_limit", [](pf_sim_params& p) { p.volume_loss_limit = -0.1f; }},
+        {"volume_loss_limit 1.5", "volume_loss_limit", [](pf_sim_params& p) { p.volume_loss_limit = 1.5f; }},
+        {"volume_loss_limit NaN", "volume_loss_limit", [](pf_sim_params& p) { p.volume_loss_limit = kNaN; }},
+        {"volume_loss_limit Inf", "volume_loss_limit", [](pf_sim_params& p) { p.volume_loss_limit = kInf; }},
         {"volume_correction NaN", "volume_correction", [](pf_sim_params& p) { p.volume_correction = kNaN; }},
         {"volume_correction Inf", "volume_correction", [](pf_sim_params& p) { p.volume_correction = kInf; }},
         {"gravity[0] +Inf", "gravity", [](pf_sim_params& p) { p.gravity[0] = kInf; }},
@@ -276,6 +280,14 @@ TEST_F(CreateValidation, RejectsBadDescFields) {
         {"origin[0] NaN", "origin", [](pf_sim_desc& d) { d.origin[0] = kNaN; }},
         {"origin[1] +Inf", "origin", [](pf_sim_desc& d) { d.origin[1] = kInf; }},
         {"origin[2] NaN", "origin", [](pf_sim_desc& d) { d.origin[2] = kNaN; }},
+        // Huge finite values: the far corner beyond float range, or positions that cannot resolve a cell.
+        {"origin 3e38 with cell_size 1e5", "origin", [](pf_sim_desc& d) { d.origin[0] = 3e38f, d.cell_size = 1e5f; }},
+        {"origin[1] 1e10 (2e11 cells out)", "origin", [](pf_sim_desc& d) { d.origin[1] = 1e10f; }},
+        {"origin[2] -6600 (66000 cells out)", "origin", [](pf_sim_desc& d) { d.origin[2] = -6600.0f; }},
+        {"cell_size 1e37", "cell_size", [](pf_sim_desc& d) { d.cell_size = 1e37f; }},
+        {"cell_size 1e-30", "cell_size", [](pf_sim_desc& d) { d.cell_size = 1e-30f; }},
+        {"cell_size 2e5", "cell_size", [](pf_sim_desc& d) { d.cell_size = 2e5f; }},
+        {"cell_size 9e-6", "cell_size", [](pf_sim_desc& d) { d.cell_size = 9e-6f; }},
         {"max_particles 0", "max_particles", [](pf_sim_desc& d) { d.max_particles = 0; }},
         {"max_particles 2^28+1", "max_particles", [](pf_sim_desc& d) { d.max_particles = (1u << 28) + 1; }},
         {"max_particles UINT32_MAX", "max_particles", [](pf_sim_desc& d) { d.max_particles = 0xffffffffu; }},
@@ -325,6 +337,7 @@ TEST_F(CreateValidation, AcceptsBoundaryValues) {
     hi.params.max_substeps = 64;
     hi.params.extrapolation_layers = 16;
     hi.params.volume_correction = 1.0f;
+    hi.params.volume_loss_limit = 1.0f;
     {
         SimPtr s = create(hi);
         ASSERT_TRUE(s) << "upper bounds";
@@ -343,6 +356,7 @@ TEST_F(CreateValidation, AcceptsBoundaryValues) {
     lo.params.max_substeps = 1;
     lo.params.extrapolation_layers = 1;
     lo.params.volume_correction = 0.0f;  // off, taken literally
+    lo.params.volume_loss_limit = 1e-6f;
     lo.params.gravity[0] = 1e30f;  // finite is all gravity must be
     {
         SimPtr s = create(lo);
@@ -351,6 +365,16 @@ TEST_F(CreateValidation, AcceptsBoundaryValues) {
         ASSERT_EQ(pf_get_params(s.get(), &p), PF_OK);
         EXPECT_TRUE(same_params(p, lo.params)) << params_str(p) << " vs " << params_str(lo.params);
     }
+    // The cell size range and the farthest resolvable origin (2^16 cells from the world origin).
+    for (const float cell : {1e-5f, 1e5f}) {
+        pf_sim_desc d = test_desc(2, 2, 2, cell);
+        SimPtr s = create(d);
+        EXPECT_TRUE(s) << "cell_size " << cell;
+    }
+    pf_sim_desc far = test_desc(2, 2, 2, 0.125f);
+    far.origin[2] = -8192.0f;  // exactly 65536 cells
+    SimPtr s = create(far);
+    EXPECT_TRUE(s) << "origin 65536 cells out";
 }
 
 // A loader that finds nothing: no GL at all.
@@ -729,6 +753,9 @@ TEST_F(ApiValidation, FillBoxRejectsBadBoxes) {
         {"flat box", {0.1f, 0.3f, 0.1f}, {0.5f, 0.3f, 0.5f}, false, {}},
         {"entirely above the domain", {0.1f, 1.0f, 0.1f}, {0.5f, 2.0f, 0.5f}, false, {}},
         {"entirely below the origin", {-2.0f, -2.0f, -2.0f}, {-1.0f, -1.0f, -1.0f}, false, {}},
+        // Far outside: the lattice range must not be converted from a value beyond int64.
+        {"lo 1e20 (beyond the domain)", {1e20f, 1e20f, 1e20f}, {3e38f, 3e38f, 3e38f}, false, {}},
+        {"hi -1e20 (before the domain)", {-3e38f, -3e38f, -3e38f}, {-1e20f, -1e20f, -1e20f}, false, {}},
     };
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
@@ -736,10 +763,19 @@ TEST_F(ApiValidation, FillBoxRejectsBadBoxes) {
                         "pf_fill_box", "");
         EXPECT_EQ(count(), kFilled);
     }
-    // A box sticking out of the domain is clipped, not refused: [0.6, 5]^3 keeps 2^3 cells.
+    // A box sticking out of the domain is clipped, not refused: [0.6, 5]^3 keeps 2^3 cells...
     const float lo[3] = {0.6f, 0.6f, 0.6f}, hi[3] = {5.0f, 5.0f, 5.0f};
     EXPECT_EQ(pf_fill_box(sim_.get(), lo, hi, nullptr), PF_OK) << last_log();
     EXPECT_EQ(count(), kFilled + 2 * 2 * 2 * 8);
+    // ...however far it sticks out: [0.6, 1e30]^3 would hold far more than the domain.
+    ASSERT_EQ(pf_clear_particles(sim_.get()), PF_OK);
+    const float huge[3] = {1e30f, 1e30f, 1e30f};
+    EXPECT_EQ(pf_fill_box(sim_.get(), lo, huge, nullptr), PF_OK) << last_log();
+    EXPECT_EQ(count(), 2u * 2 * 2 * 8);
+    ASSERT_EQ(pf_clear_particles(sim_.get()), PF_OK);
+    const float lo0[3] = {0, 0, 0}, hi0[3] = {0.4f, 0.4f, 0.4f};
+    ASSERT_EQ(pf_fill_box(sim_.get(), lo0, hi0, nullptr), PF_OK);
+    ASSERT_EQ(pf_fill_box(sim_.get(), lo, hi, nullptr), PF_OK);
     expect_usable(kFilled + 64, "rejected pf_fill_box");
 }
 

@@ -58,6 +58,29 @@ TEST_F(Push, ClampsToMaxSpeedAndRaisesTheFlag) {
     EXPECT_NE(st.flags & PF_FLAG_SPEED_CLAMPED, 0u);
 }
 
+// A huge finite impulse is clamped along its direction, not zeroed: |v|^2 of dv = 1e20 is beyond
+// float range, and v * max_speed / |v| used to turn it into 0 (issue 7).
+TEST_F(Push, HugeImpulseIsClampedAlongItsDirection) {
+    for (const float magnitude : {1e20f, 3e38f}) {
+        SCOPED_TRACE(magnitude);
+        pf_sim_desc d = test_desc(8, 8, 8, 0.1f);
+        d.max_speed = 5.0f;
+        SimPtr sim = create(d);
+        ASSERT_TRUE(sim);
+        const float lo[3] = {0.2f, 0.2f, 0.2f}, hi[3] = {0.6f, 0.6f, 0.6f};
+        ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+        const float c[3] = {0.4f, 0.4f, 0.4f}, dv[3] = {magnitude, -magnitude, 0.5f * magnitude};
+        ASSERT_EQ(pf_push(sim.get(), c, 1.0f, dv), PF_OK) << last_log();
+        const ParticleState p = read_all(sim.get());
+        const double norm = 1.5;  // |(1, -1, 0.5)|
+        for (size_t i = 0; i < p.count(); ++i) {
+            ASSERT_NEAR(p.vel[i * 3 + 0], 5.0 * 1.0 / norm, 1e-4) << "particle " << i;
+            ASSERT_NEAR(p.vel[i * 3 + 1], -5.0 * 1.0 / norm, 1e-4) << "particle " << i;
+            ASSERT_NEAR(p.vel[i * 3 + 2], 5.0 * 0.5 / norm, 1e-4) << "particle " << i;
+        }
+    }
+}
+
 // Right after a push the GPU readback does not know the new speeds yet; the substep count
 // of the next step must still honour CFL for them.
 TEST_F(Push, NextStepTakesSubstepsForThePushedSpeed) {
