@@ -5,7 +5,7 @@
 #   pkg_config    cc consumer.c $(pkg-config --cflags --libs pflip egl) against PREFIX; runs it
 #   subdirectory  tests/consumer as a project with add_subdirectory(SOURCE_DIR); runs it
 # Every step fails the test on a non-zero exit status. Arguments: -DMODE= -DSOURCE_DIR=
-# -DBUILD_DIR= -DPREFIX= -DWORK= -DGENERATOR= -DC_COMPILER= -DPYTHON=
+# -DBUILD_DIR= -DPREFIX= -DWORK= -DGENERATOR= -DC_COMPILER= -DPYTHON= -DVERSION=
 set(here "${CMAKE_CURRENT_LIST_DIR}")
 
 function(run)
@@ -26,7 +26,7 @@ if(MODE STREQUAL "install")
   file(REMOVE_RECURSE "${PREFIX}")
   run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${PREFIX}")
 elseif(MODE STREQUAL "find_package")
-  build_consumer("-DCMAKE_PREFIX_PATH=${PREFIX}" -DPF_CONSUMER_MODE=package)
+  build_consumer("-DCMAKE_PREFIX_PATH=${PREFIX}" -DPF_CONSUMER_MODE=package "-DPF_EXPECTED_VERSION=${VERSION}")
   run("${WORK}/${MODE}/pflip_consumer")
   run("${WORK}/${MODE}/pflip_consumer_static")
 elseif(MODE STREQUAL "pkg_config")
