@@ -36,5 +36,8 @@ function(pf_generate_glad name out_dir extra_args)
                         C_VISIBILITY_PRESET hidden)
 endfunction()
 
-pf_generate_glad(pf_glad_mx "${CMAKE_BINARY_DIR}/glad_mx" "--mx")
-pf_generate_glad(pf_glad_app "${CMAKE_BINARY_DIR}/glad_app" "")
+pf_generate_glad(pf_glad_mx "${PROJECT_BINARY_DIR}/glad_mx" "--mx")
+# Only the samples and tests stand in for an engine; a parent project has its own loader.
+if(PF_BUILD_SAMPLES OR PF_BUILD_TESTS)
+  pf_generate_glad(pf_glad_app "${PROJECT_BINARY_DIR}/glad_app" "")
+endif()

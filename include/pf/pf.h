@@ -32,11 +32,9 @@ extern "C" {
 #  define PF_API
 #endif
 
-/** Library version as major*10000 + minor*100 + patch. */
-#define PF_VERSION_MAJOR 0
-#define PF_VERSION_MINOR 1
-#define PF_VERSION_PATCH 0
-#define PF_VERSION (PF_VERSION_MAJOR * 10000 + PF_VERSION_MINOR * 100 + PF_VERSION_PATCH)
+/* PF_VERSION_MAJOR/MINOR/PATCH, PF_VERSION (major*10000 + minor*100 + patch) and
+   PF_VERSION_STRING, generated from the CMake project version. */
+#include <pf/pf_version.h>
 
 /** Result codes. Values are stable across versions. */
 typedef enum pf_result {

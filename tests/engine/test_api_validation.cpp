@@ -205,6 +205,10 @@ TEST(ApiStrings, PassNamesDistinctAndUnknownOutOfRange) {
 TEST(ApiStrings, VersionMatchesHeader) {
     EXPECT_EQ(pf_version(), uint32_t(PF_VERSION));
     EXPECT_EQ(uint32_t(PF_VERSION), uint32_t(PF_VERSION_MAJOR * 10000 + PF_VERSION_MINOR * 100 + PF_VERSION_PATCH));
+    // pf/pf_version.h is generated from the CMake project version: its string and numbers agree.
+    EXPECT_EQ(std::string(PF_VERSION_STRING), std::to_string(PF_VERSION_MAJOR) + "." +
+                                                  std::to_string(PF_VERSION_MINOR) + "." +
+                                                  std::to_string(PF_VERSION_PATCH));
 }
 
 // ---------------------------------------------------------------------------------------------
