@@ -1,8 +1,7 @@
 // Particle-to-grid: splats each particle's velocity onto the 8 nearest samples of every MAC
 // face lattice with 32-bit fixed-point integer atomics (momentum and weight), and counts
 // particles per cell. Integer sums are order independent, so the result is bit-identical
-// run to run. An add that would overflow an accumulator is taken back (the sum saturates)
-// and flagged, never silent.
+// run to run. Overflow of an accumulator is detected and flagged, never silent.
 // Permutation PF_APIC: each contribution is the particle's affine velocity at the node,
 // v_a + c_a . (x_i - x_p) (Jiang et al. 2015), instead of v_a.
 // Permutation PF_P2G_FLOAT (pf_p2g PF_P2G_FLOAT_ATOMIC): plain float sums of w·v and w instead,
@@ -54,13 +53,8 @@ void accumulate(int word, int value) {
     if (value == 0) return;  // zero weights (clamped stencil edges) cost no atomic
     int old = atomicAdd(accum[word], value);
     int sum = int(uint(old) + uint(value));  // wrapping add, as the atomic did
-    if ((old >= 0) == (value >= 0) && (sum >= 0) != (old >= 0)) {
-        // This add wrapped the sum to the other sign: take it back, so the sum saturates near
-        // the limit (the cell's velocity stays an average of the particles counted) instead of
-        // flipping sign. Flagged: more than ~2047 full-weight particles share this sample.
-        atomicAdd(accum[word], -value);
+    if ((old >= 0) == (value >= 0) && (sum >= 0) != (old >= 0))
         atomicOr(status[PF_STATUS_FLAGS], PF_GPU_FLAG_P2G_OVERFLOW);
-    }
 }
 #endif
 

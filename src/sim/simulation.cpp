@@ -524,7 +524,8 @@ void Simulation::raise_flags(uint32_t bits) const {
     };
     static constexpr Text kTexts[] = {
         {PF_FLAG_P2G_OVERFLOW, "a fixed-point particle-to-grid sum overflowed (over ~2047 particles on one grid sample): "
-                               "the sum was saturated, that region's velocity is approximate (PF_FLAG_P2G_OVERFLOW)"},
+                               "that sample's velocity is wrong (particles there are clamped to max_speed); "
+                               "PF_P2G_FLOAT_ATOMIC cannot overflow (PF_FLAG_P2G_OVERFLOW)"},
         {PF_FLAG_NONFINITE, "a non-finite particle velocity was found and set to 0 (PF_FLAG_NONFINITE)"},
         {PF_FLAG_SPEED_CLAMPED, "a particle exceeded desc.max_speed and was slowed to it (PF_FLAG_SPEED_CLAMPED)"},
         {PF_FLAG_SUBSTEPS_CLAMPED, "the frame needs more than params.max_substeps CFL substeps: particles cross more "
