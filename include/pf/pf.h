@@ -150,6 +150,9 @@ typedef struct pf_sim_params {
     float volume_loss_limit;      /**< fraction of its rest volume (particle count / fill_particles_per_cell
                                        cells) pf_stats.particle_volume may lose before PF_FLAG_VOLUME_LOST is
                                        raised and logged, (0, 1]; 0 = default 0.1 */
+    float energy_gain_limit;      /**< fraction by which kinetic + potential energy may rise above its reference
+                                       (pf_stats.energy_drift; at least every particle lifted one cell) before
+                                       PF_FLAG_ENERGY_GAINED is raised and logged, (0, 100]; 0 = default 0.1 */
 } pf_sim_params;
 
 /** Quality presets: measured points of the accuracy-versus-time trade-off (docs/accuracy.md
@@ -223,9 +226,12 @@ enum {
     PF_FLAG_SPEED_CLAMPED = 1u << 2,   /**< a particle exceeded max_speed and was clamped */
     PF_FLAG_SUBSTEPS_CLAMPED = 1u << 3, /**< CFL wanted more than max_substeps: particles moved more than
                                              cfl cells per substep (the step is less accurate, docs/stability.md) */
-    PF_FLAG_VOLUME_LOST = 1u << 4      /**< particle_volume fell more than params.volume_loss_limit below the
+    PF_FLAG_VOLUME_LOST = 1u << 4,     /**< particle_volume fell more than params.volume_loss_limit below the
                                             particles' rest volume (count / fill_particles_per_cell cells): the
                                             liquid has compressed that much */
+    PF_FLAG_ENERGY_GAINED = 1u << 5    /**< kinetic + potential energy rose more than params.energy_gain_limit
+                                            above its reference (pf_stats.energy_drift) with no input: the
+                                            step is numerically unsound (e.g. an unconverged pressure solve) */
 };
 /* Each flag is logged once (a warning) when it is raised, and again only after pf_clear_flags. */
 
@@ -272,6 +278,12 @@ typedef struct pf_stats {
     uint32_t solver_iterations;       /**< most pressure iterations a substep of that readback's step took */
     float solver_residual;            /**< largest final relative residual |b - A p| / |b| of its substeps
                                            (with separation: of the complementarity problem, design.md §4.6) */
+    float potential_energy;           /**< m sum over the particles of -g . x, measured from the domain's corner
+                                           lowest along gravity (so >= 0), J; with kinetic_energy the mechanical
+                                           energy (a metrics figure: same step as metrics_step) */
+    float energy_drift;               /**< (kinetic + potential) / (the same at its reference) - 1; the reference
+                                           is the first step measured after particles are added or cleared, a
+                                           pf_push or pf_set_params (inputs of energy) */
 } pf_stats;
 
 /** One entry of the per-pass statistics list (pf_get_pass_stats). The list is built at run

@@ -87,6 +87,7 @@
 #define PF_STATUS_KINETIC_ENERGY 8     /* 0.5 m sum |v|^2 over the particles, J */
 #define PF_STATUS_FLUID_CELLS 9        /* FLUID cells (uint) */
 #define PF_STATUS_PARTICLE_VOLUME 10   /* dx^3 sum over cells of min(count / rest count, 1), m^3 */
+#define PF_STATUS_POTENTIAL_ENERGY 11  /* m sum -g . (x - origin) over the particles, J */
 #define PF_STATUS_WORDS 12
 
 /* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */

@@ -11,25 +11,30 @@ layout(location = PF_LOC_METRICS_GROUPS) uniform uint u_groups;
 
 shared vec4 s_sum[PF_WORKGROUP_SIZE];   // (div^2, max |div|, volume fraction, |v|^2)
 shared uint s_fluid[PF_WORKGROUP_SIZE];
+shared float s_height[PF_WORKGROUP_SIZE];  // sum of -g . (x - origin)
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
     vec4 sum = vec4(0.0);
     uint fluid = 0u;
+    float height = 0.0;
     for (uint g = lid; g < u_groups; g += uint(PF_WORKGROUP_SIZE)) {
         vec4 grid = partials[2u * g];
         sum += vec4(grid.x, 0.0, grid.w, partials[2u * g + 1u].x);
         sum.y = max(sum.y, grid.y);
         fluid += uint(grid.z);
+        height += partials[2u * g + 1u].y;
     }
     s_sum[lid] = sum;
     s_fluid[lid] = fluid;
+    s_height[lid] = height;
     barrier();
     for (uint stride = uint(PF_WORKGROUP_SIZE) / 2u; stride > 0u; stride >>= 1u) {
         if (lid < stride) {
             vec4 a = s_sum[lid], b = s_sum[lid + stride];
             s_sum[lid] = vec4(a.x + b.x, max(a.y, b.y), a.z + b.z, a.w + b.w);
             s_fluid[lid] += s_fluid[lid + stride];
+            s_height[lid] += s_height[lid + stride];
         }
         barrier();
     }
@@ -43,4 +48,5 @@ void main() {
     status[PF_STATUS_KINETIC_ENERGY] = floatBitsToUint(0.5 * particle_mass * total.w);
     status[PF_STATUS_FLUID_CELLS] = cells;
     status[PF_STATUS_PARTICLE_VOLUME] = floatBitsToUint(cell_volume * total.z);
+    status[PF_STATUS_POTENTIAL_ENERGY] = floatBitsToUint(particle_mass * s_height[0]);
 }

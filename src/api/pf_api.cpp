@@ -62,6 +62,7 @@ pf_sim_params pf_default_sim_params(void) {
     p.sor_omega = 1.6f;
     p.volume_correction = 0.1f;  // measured: docs/design.md §4.5
     p.volume_loss_limit = 0.1f;  // docs/stability.md
+    p.energy_gain_limit = 0.1f;  // docs/stability.md
     return p;
 }
 

@@ -30,6 +30,7 @@ pf_sim_params resolve_params(const pf_sim_params& in) {
     if (p.pressure_tolerance == 0.0f) p.pressure_tolerance = d.pressure_tolerance;
     if (p.sor_omega == 0.0f) p.sor_omega = d.sor_omega;
     if (p.volume_loss_limit == 0.0f) p.volume_loss_limit = d.volume_loss_limit;
+    if (p.energy_gain_limit == 0.0f) p.energy_gain_limit = d.energy_gain_limit;
     return p;
 }
 
@@ -68,6 +69,8 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
         return bad("params.advection is not a pf_advection value, got " + std::to_string(int(p.advection)));
     if (!(p.volume_correction >= 0.0f && p.volume_correction <= 1.0f))
         return bad("params.volume_correction must be in [0, 1], got " + str(p.volume_correction));
+    if (!(p.energy_gain_limit > 0.0f && p.energy_gain_limit <= 100.0f))
+        return bad("params.energy_gain_limit must be in (0, 100], got " + str(p.energy_gain_limit));
     if (!(p.volume_loss_limit > 0.0f && p.volume_loss_limit <= 1.0f))
         return bad("params.volume_loss_limit must be in (0, 1], got " + str(p.volume_loss_limit));
     if (p.extrapolation_layers < 1 || p.extrapolation_layers > 16)

@@ -302,7 +302,7 @@ void Simulation::run_metrics() {
     const uint64_t n = std::max<uint64_t>(uint64_t(cells_), particle_count_);
     const Bind partials{PF_SLOT_METRICS_PARTIALS, &metrics_partials_};
     r.run({ProgramId::metrics, stat_.metrics, n,
-           {{PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_COUNT, &cell_count_},
+           {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_COUNT, &cell_count_},
             {PF_SLOT_CELL_TYPE, &cell_type_}, partials}});
     r.run({ProgramId::metrics_finish, stat_.metrics, PF_WORKGROUP_SIZE, {partials, {PF_SLOT_STATUS, &status_}}, {},
            {Uniform::uint1(PF_LOC_METRICS_GROUPS, r.workgroups(n).total())}});
@@ -442,6 +442,9 @@ void Simulation::poll_status() const {
             std::memcpy(&m.divergence_max, &words[PF_STATUS_DIVERGENCE_MAX], sizeof(float));
             std::memcpy(&m.kinetic_energy, &words[PF_STATUS_KINETIC_ENERGY], sizeof(float));
             std::memcpy(&m.particle_volume, &words[PF_STATUS_PARTICLE_VOLUME], sizeof(float));
+            float height_energy = 0.0f;
+            std::memcpy(&height_energy, &words[PF_STATUS_POTENTIAL_ENERGY], sizeof(float));
+            m.potential_energy = float(double(height_energy) - double(fence_particles_[s]) * lowest_potential_per_particle());
             m.fluid_cells = words[PF_STATUS_FLUID_CELLS];
             metrics_ = m;
             // The drifts' reference: the first step measured since the particles last changed.
@@ -457,6 +460,21 @@ void Simulation::poll_status() const {
             if (fence_step_[s] > flags_cleared_at_step_ && rest > 0.0 &&
                 double(m.particle_volume) / rest - 1.0 < -double(desc_.params.volume_loss_limit))
                 raise_flags(PF_FLAG_VOLUME_LOST);
+            // Mechanical energy against its reference: without input (gravity does no net work
+            // on a closed system; the projection and the walls only remove energy) it can only
+            // fall, so a gain beyond the limit is numerical. The scale has a floor of every
+            // particle lifted one cell under 9.81 m/s^2, so a liquid at rest near zero energy
+            // does not raise it for rounding.
+            if (!energy_first_set_ && fence_step_[s] >= energy_epoch_step_) {
+                energy_first_ = double(m.kinetic_energy) + m.potential_energy;
+                energy_first_set_ = true;
+            }
+            if (energy_first_set_ && fence_step_[s] > flags_cleared_at_step_) {
+                const double floor = double(fence_particles_[s]) * particle_mass() * 9.81 * desc_.cell_size;
+                const double scale = std::max(energy_first_, floor);
+                if (double(m.kinetic_energy) + m.potential_energy - energy_first_ > double(desc_.params.energy_gain_limit) * scale)
+                    raise_flags(PF_FLAG_ENERGY_GAINED);
+            }
         }
     }
 }
@@ -490,6 +508,28 @@ pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t
 void Simulation::restart_volume_reference() {
     metrics_first_set_ = false;
     metrics_epoch_step_ = steps_ + 1;  // readbacks of earlier steps measured other particles
+    restart_energy_reference();
+}
+
+void Simulation::restart_energy_reference() {
+    energy_first_set_ = false;
+    energy_epoch_step_ = steps_ + 1;
+}
+
+double Simulation::particle_mass() const {
+    return double(desc_.density) * std::pow(double(desc_.cell_size), 3) / desc_.fill_particles_per_cell;
+}
+
+double Simulation::lowest_potential_per_particle() const {
+    // m * min over the domain's corners of -g . (corner - origin): the potential's zero.
+    double lowest = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+        double h = 0.0;
+        for (int a = 0; a < 3; ++a)
+            if ((corner >> a) & 1) h -= double(desc_.params.gravity[a]) * desc_.cell_size * desc_.grid_size[a];
+        lowest = std::min(lowest, h);
+    }
+    return particle_mass() * lowest;
 }
 
 pf_result Simulation::fill_box(const float lo[3], const float hi[3], const float vel[3]) {
@@ -531,6 +571,10 @@ void Simulation::raise_flags(uint32_t bits) const {
         {PF_FLAG_SUBSTEPS_CLAMPED, "the frame needs more than params.max_substeps CFL substeps: particles cross more "
                                    "than params.cfl cells per substep, so the step is less accurate "
                                    "(PF_FLAG_SUBSTEPS_CLAMPED)"},
+        {PF_FLAG_ENERGY_GAINED, "the liquid's mechanical energy rose more than params.energy_gain_limit above its "
+                                "reference without input (pf_stats.energy_drift): the step is numerically unsound, "
+                                "typically an unconverged pressure solve; a converged solver (PF_QUALITY_BALANCED) "
+                                "or smaller frame times fix it (PF_FLAG_ENERGY_GAINED)"},
         {PF_FLAG_VOLUME_LOST, "the liquid lost more than params.volume_loss_limit of its rest volume to compression "
                               "(pf_stats.particle_volume); consider a converged pressure solver, volume "
                               "correction or smaller frame times (PF_FLAG_VOLUME_LOST)"},
@@ -573,6 +617,7 @@ pf_result Simulation::push(const float center[3], float radius, const float dv[3
     const float known = added_at_step_ > status_step_ ? std::max(added_speed_, gpu_max_speed_) : gpu_max_speed_;
     added_speed_ = std::min(desc_.max_speed, known + std::sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]));
     added_at_step_ = steps_ + 1;
+    restart_energy_reference();  // the push is an input of energy
     gl_.MemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     return PF_OK;
 }
@@ -589,6 +634,7 @@ pf_result Simulation::set_params(const pf_sim_params& params) {
         zero_affine(0, particle_count_);
     solver_ = solver;
     desc_.params = params;
+    restart_energy_reference();  // gravity may have changed: the old total is not comparable
     return PF_OK;
 }
 
@@ -634,6 +680,9 @@ void Simulation::stats(pf_stats& out) const {
     out.kinetic_energy = metrics_.kinetic_energy;
     out.fluid_cells = metrics_.fluid_cells;
     out.particle_volume = metrics_.particle_volume;
+    out.potential_energy = metrics_.potential_energy;
+    if (energy_first_set_ && energy_first_ > 0.0)
+        out.energy_drift = float((double(metrics_.kinetic_energy) + metrics_.potential_energy) / energy_first_ - 1.0);
     if (metrics_first_set_ && metrics_first_.fluid_cells > 0)
         out.fluid_cell_drift = float(double(metrics_.fluid_cells) / metrics_first_.fluid_cells - 1.0);
     if (metrics_first_set_ && metrics_first_.particle_volume > 0.0f)

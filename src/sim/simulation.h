@@ -154,12 +154,20 @@ private:
     // Accuracy metrics of the newest readback (status words PF_STATUS_DIVERGENCE_L2..).
     struct Metrics {
         float divergence_l2 = 0, divergence_max = 0, kinetic_energy = 0, particle_volume = 0;
+        float potential_energy = 0;  // from the domain's lowest corner along g, J
         uint32_t fluid_cells = 0;
     };
     mutable Metrics metrics_{};
     mutable Metrics metrics_first_{};      // the reference of the drifts...
     mutable bool metrics_first_set_ = false;
     uint64_t metrics_epoch_step_ = 0;      // ...taken from the first readback of a step >= this one
+    mutable double energy_first_ = 0.0;    // mechanical energy reference (PF_FLAG_ENERGY_GAINED)...
+    mutable bool energy_first_set_ = false;
+    uint64_t energy_epoch_step_ = 0;       // ...from the first readback of a step >= this one
+    // Restarts the energy reference: particles added or cleared, a push, new parameters.
+    void restart_energy_reference();
+    double particle_mass() const;                   // kg
+    double lowest_potential_per_particle() const;   // m g . x at the domain's lowest corner, J
     gl::Buffer metrics_partials_;          // two vec4 per workgroup of the metrics pass
     uint64_t flags_cleared_at_step_ = 0;   // pf_clear_flags: ignore flags read back from older steps
     float added_speed_ = 0.0f;             // fastest particle added since...

@@ -100,6 +100,9 @@ std::vector<ParamCase> bad_param_cases() {
         {"volume_loss_limit 1.5", "volume_loss_limit", [](pf_sim_params& p) { p.volume_loss_limit = 1.5f; }},
         {"volume_loss_limit NaN", "volume_loss_limit", [](pf_sim_params& p) { p.volume_loss_limit = kNaN; }},
         {"volume_loss_limit Inf", "volume_loss_limit", [](pf_sim_params& p) { p.volume_loss_limit = kInf; }},
+        {"energy_gain_limit -1", "energy_gain_limit", [](pf_sim_params& p) { p.energy_gain_limit = -1.0f; }},
+        {"energy_gain_limit 101", "energy_gain_limit", [](pf_sim_params& p) { p.energy_gain_limit = 101.0f; }},
+        {"energy_gain_limit NaN", "energy_gain_limit", [](pf_sim_params& p) { p.energy_gain_limit = kNaN; }},
         {"volume_correction NaN", "volume_correction", [](pf_sim_params& p) { p.volume_correction = kNaN; }},
         {"volume_correction Inf", "volume_correction", [](pf_sim_params& p) { p.volume_correction = kInf; }},
         {"gravity[0] +Inf", "gravity", [](pf_sim_params& p) { p.gravity[0] = kInf; }},
@@ -342,6 +345,7 @@ TEST_F(CreateValidation, AcceptsBoundaryValues) {
     hi.params.extrapolation_layers = 16;
     hi.params.volume_correction = 1.0f;
     hi.params.volume_loss_limit = 1.0f;
+    hi.params.energy_gain_limit = 100.0f;
     {
         SimPtr s = create(hi);
         ASSERT_TRUE(s) << "upper bounds";
@@ -361,6 +365,7 @@ TEST_F(CreateValidation, AcceptsBoundaryValues) {
     lo.params.extrapolation_layers = 1;
     lo.params.volume_correction = 0.0f;  // off, taken literally
     lo.params.volume_loss_limit = 1e-6f;
+    lo.params.energy_gain_limit = 1e-6f;
     lo.params.gravity[0] = 1e30f;  // finite is all gravity must be
     {
         SimPtr s = create(lo);
