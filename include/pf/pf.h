@@ -200,8 +200,8 @@ typedef struct pf_sim pf_sim;
 typedef enum pf_pass {
     PF_PASS_CLEAR = 0,            /**< zero the grid accumulators */
     PF_PASS_P2G = 1,              /**< particle-to-grid splat (fixed-point atomics) */
-    PF_PASS_GRID_FORCES = 2,      /**< normalise face velocities, apply gravity */
-    PF_PASS_CLASSIFY = 3,         /**< mark cells fluid / air */
+    PF_PASS_GRID_FORCES = 2,      /**< normalise face velocities, apply gravity (and force fields) */
+    PF_PASS_CLASSIFY = 3,         /**< mark cells fluid / air (and solid: obstacles, PF_FEATURE_OBSTACLES) */
     PF_PASS_PRESSURE_SETUP = 4,   /**< divergence right-hand side */
     PF_PASS_PRESSURE_SOLVE = 5,   /**< Jacobi iterations */
     PF_PASS_VELOCITY_UPDATE = 6,  /**< subtract pressure gradient, free-slip walls; also holds the
@@ -209,7 +209,7 @@ typedef enum pf_pass {
                                        which measure what the projection left */
     PF_PASS_EXTRAPOLATE = 7,      /**< extend velocity into air faces */
     PF_PASS_G2P = 8,              /**< grid-to-particle transfer (PIC/FLIP blend or APIC) */
-    PF_PASS_ADVECT = 9,           /**< move particles, keep them in the domain */
+    PF_PASS_ADVECT = 9,           /**< move particles, keep them in the domain (and out of obstacles) */
     PF_PASS_COUNT = 10,
     PF_PASS_FORCE32 = 0x7fffffff
 } pf_pass;
