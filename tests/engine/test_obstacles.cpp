@@ -270,5 +270,25 @@ TEST_F(ObstacleArguments, BadObstaclesAreRefusedAndChangeNothing) {
     EXPECT_EQ(inside_count(read_all(sim.get()), {good}), 0u);
 }
 
+// pf_set_obstacle moves an obstacle between steps: the next step keeps particles out of it
+// where it is now (a sphere moved into the middle of resting liquid clears its volume).
+TEST_F(ObstacleArguments, SetObstacleMovesIt) {
+    pf_sim_desc d = test_desc(10, 10, 10, 0.05f);
+    d.features = PF_FEATURE_OBSTACLES;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    pf_obstacle ball = sphere(0.1, 0.4, 0.1, 0.08);
+    uint32_t id = 0;
+    ASSERT_EQ(pf_add_obstacle(sim.get(), &ball, &id), PF_OK);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.5f, 0.3f, 0.5f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+    ball.position[0] = 0.25f, ball.position[1] = 0.15f, ball.position[2] = 0.25f;
+    ASSERT_GT(inside_count(read_all(sim.get()), {ball}), 20u) << "liquid fills the new place before the move";
+    ASSERT_EQ(pf_set_obstacle(sim.get(), id, &ball), PF_OK);
+    ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+    EXPECT_EQ(inside_count(read_all(sim.get()), {ball}), 0u);
+}
+
 }  // namespace
 }  // namespace pf::test
