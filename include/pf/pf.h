@@ -347,7 +347,7 @@ PF_API pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out);
 PF_API pf_result pf_get_stats(const pf_sim* sim, pf_stats* out);
 /** Clear the sticky PF_FLAG_* bits. */
 PF_API pf_result pf_clear_flags(pf_sim* sim);
-/** Number of entries in the per-pass statistics list (it may grow when parameters change). */
+/** Number of entries in the per-pass statistics list (it may grow when parameters or features change). */
 PF_API pf_result pf_get_pass_count(const pf_sim* sim, uint32_t* out);
 /** Entry `index` (< pf_get_pass_count) of the per-pass statistics list; no stall. */
 PF_API pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_stats* out);
@@ -400,7 +400,9 @@ typedef struct pf_force_field {
 /** Default force field: DIRECTIONAL with zero acceleration (no effect until edited), radius 1 m. */
 PF_API pf_force_field pf_default_force_field(void);
 /** Adds a force field; *out_id (may be NULL) names it for pf_set_force_field / pf_remove_force_field.
- *  PF_ERROR_CAPACITY when PF_MAX_FORCE_FIELDS are present; on any error nothing changes. */
+ *  PF_ERROR_INVALID_ARGUMENT for a NULL field, an unknown type, a non-finite value, a radius <= 0
+ *  (POINT, VORTEX), a zero vortex axis or a negative drag; PF_ERROR_CAPACITY when
+ *  PF_MAX_FORCE_FIELDS are present. Each error is logged; on any error nothing changes. */
 PF_API pf_result pf_add_force_field(pf_sim* sim, const pf_force_field* field, uint32_t* out_id);
 /** Replaces force field `id`; validated as in pf_add_force_field, nothing changes on error. */
 PF_API pf_result pf_set_force_field(pf_sim* sim, uint32_t id, const pf_force_field* field);
@@ -432,7 +434,9 @@ typedef struct pf_obstacle {
 /** Default obstacle: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m). */
 PF_API pf_obstacle pf_default_obstacle(void);
 /** Adds an obstacle; *out_id (may be NULL) names it for pf_set_obstacle / pf_remove_obstacle.
- *  PF_ERROR_CAPACITY when PF_MAX_OBSTACLES are present; on any error nothing changes. */
+ *  PF_ERROR_INVALID_ARGUMENT for a NULL obstacle, an unknown shape, a non-finite value, a box half
+ *  extent or radius <= 0 or a negative capsule half height; PF_ERROR_CAPACITY when
+ *  PF_MAX_OBSTACLES are present. Each error is logged; on any error nothing changes. */
 PF_API pf_result pf_add_obstacle(pf_sim* sim, const pf_obstacle* obstacle, uint32_t* out_id);
 /** Replaces obstacle `id` (moves it, say); validated as in pf_add_obstacle, nothing changes on error. */
 PF_API pf_result pf_set_obstacle(pf_sim* sim, uint32_t id, const pf_obstacle* obstacle);

@@ -340,7 +340,13 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     float v_max = gpu_max_speed_;
     if (added_at_step_ > status_step_) v_max = std::max(v_max, added_speed_);
     const float* g = desc_.params.gravity;
-    const float v_est = v_max + std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) * frame_dt;
+    float accel = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    float wind = 0.0f;  // drag pulls the liquid towards the wind, never beyond it
+    if (desc_.features & PF_FEATURE_FORCE_FIELDS) {
+        accel += force_fields().max_acceleration();
+        wind = force_fields().max_wind_speed();
+    }
+    const float v_est = std::max(v_max + accel * frame_dt, wind);
     const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
     const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
     if (clamped) *clamped = wanted > double(desc_.params.max_substeps);

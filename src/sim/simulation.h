@@ -108,6 +108,7 @@ private:
     // Start of a step: effects that are on upload what changed.
     void begin_effects_step();
     ForceFieldsEffect& force_fields() { return static_cast<ForceFieldsEffect&>(*effects_[0]); }
+    const ForceFieldsEffect& force_fields() const { return static_cast<const ForceFieldsEffect&>(*effects_[0]); }
     ObstaclesEffect& obstacles() { return static_cast<ObstaclesEffect&>(*effects_[1]); }
     void run_g2p_and_advect();
     const gl::Buffer& grid_buffer(GridBuffer which) const;

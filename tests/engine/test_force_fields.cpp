@@ -166,6 +166,38 @@ TEST_F(ForceFields, VortexSpinsABlobWithTheRightHandedness) {
     }
 }
 
+// The CFL substep count (design.md §5) counts the fields' accelerations with gravity's, and a
+// drag field's wind speed as a speed the liquid may reach.
+TEST_F(ForceFields, SubstepsCountTheFieldsAccelerations) {
+    pf_sim_desc d = field_desc(-9.81f);
+    d.params.max_substeps = 32;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    pf_force_field gust = pf_default_force_field();
+    gust.vector[0] = 300.0f, gust.vector[1] = 400.0f;  // |a| = 500 m/s^2
+    uint32_t gust_id = 0, swirl_id = 0;
+    ASSERT_EQ(pf_add_force_field(sim.get(), &gust, &gust_id), PF_OK);
+    pf_force_field swirl = pf_default_force_field();
+    swirl.type = PF_FORCE_FIELD_VORTEX, swirl.vector[1] = 1.0f, swirl.strength = -100.0f, swirl.radius = 0.2f;
+    ASSERT_EQ(pf_add_force_field(sim.get(), &swirl, &swirl_id), PF_OK);
+    const float x0[3] = {0.4137f, 0.6071f, 0.3862f};
+    ASSERT_EQ(pf_add_particles(sim.get(), x0, nullptr, 1), PF_OK);
+    ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+    pf_stats st{};
+    ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+    EXPECT_EQ(int(st.substeps), int(std::ceil(kFrame * ((9.81 + 500.0 + 100.0) * kFrame) / 0.05)));
+
+    pf_force_field wind = pf_default_force_field();
+    wind.vector[2] = 20.0f, wind.drag = 1.0f;
+    ASSERT_EQ(pf_clear_particles(sim.get()), PF_OK);
+    ASSERT_EQ(pf_add_particles(sim.get(), x0, nullptr, 1), PF_OK);
+    ASSERT_EQ(pf_set_force_field(sim.get(), gust_id, &wind), PF_OK);
+    ASSERT_EQ(pf_remove_force_field(sim.get(), swirl_id), PF_OK);
+    ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+    ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+    EXPECT_EQ(int(st.substeps), int(std::ceil(kFrame * 20.0 / 0.05)));
+}
+
 TEST_F(ForceFields, BadFieldsAreRefusedAndChangeNothing) {
     SimPtr sim = create(field_desc(-9.81f));
     ASSERT_TRUE(sim);

@@ -1,5 +1,6 @@
 #include "sim/effects/force_fields/force_fields.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -40,6 +41,27 @@ void ForceFieldsEffect::begin_step() {
     if (!words.empty()) records_.upload(0, words.size() * 4, words.data());
     uploaded_ = list_.size();
     dirty_ = false;
+}
+
+namespace {
+double length3(const float v[3]) { return std::sqrt(double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2]); }
+}  // namespace
+
+float ForceFieldsEffect::max_acceleration() const {
+    double sum = 0;  // fields add up where they overlap
+    for (const pf_force_field& f : list_.items()) {
+        if (f.type == PF_FORCE_FIELD_DIRECTIONAL) sum += f.drag > 0.0f ? 0.0 : length3(f.vector);
+        else sum += std::abs(double(f.strength));  // the peak of the point and vortex profiles
+    }
+    return float(sum);
+}
+
+float ForceFieldsEffect::max_wind_speed() const {
+    double fastest = 0;
+    for (const pf_force_field& f : list_.items()) {
+        if (f.type == PF_FORCE_FIELD_DIRECTIONAL && f.drag > 0.0f) fastest = std::max(fastest, length3(f.vector));
+    }
+    return float(fastest);
 }
 
 void ForceFieldsEffect::run(EffectStage stage, PassRunner& runner, const EffectBuffers& b) {

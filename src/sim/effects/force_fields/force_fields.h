@@ -20,6 +20,10 @@ public:
     // The host list; call changed() after editing it.
     List& list() { return list_; }
     void changed() { dirty_ = true; }
+    // For the CFL estimate (design.md §5): the largest acceleration the fields without drag can
+    // add (m/s^2), and the fastest wind a drag field pulls towards (m/s).
+    float max_acceleration() const;
+    float max_wind_speed() const;
 
 private:
     List list_;
