@@ -167,6 +167,17 @@ typedef enum pf_quality {
     PF_QUALITY_FORCE32 = 0x7fffffff
 } pf_quality;
 
+/** Effects a scene may call for (pf_sim_desc.features, pf_set_features). An effect that is off
+ *  builds no shader program and dispatches no pass; its objects (force fields, obstacles) may
+ *  still be added and edited, and act once it is turned on. */
+enum {
+    PF_FEATURE_FORCE_FIELDS = 1u << 0, /**< pf_add_force_field: wind, attractors/repulsors, vortices
+                                            (one grid pass per substep after gravity) */
+    PF_FEATURE_OBSTACLES = 1u << 1,    /**< pf_add_obstacle: static boxes, spheres and capsules (solid
+                                            cells, free-slip faces, particles pushed out after advection) */
+    PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES /**< every known feature bit */
+};
+
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
 typedef struct pf_sim_desc {
     uint32_t grid_size[3];        /**< cells per axis, each 2..1024; default 32^3 */
@@ -183,6 +194,8 @@ typedef struct pf_sim_desc {
     pf_sim_params params;         /**< step parameters */
     pf_gl_get_proc_address_fn gl_get_proc_address; /**< required: the engine's GL loader */
     pf_logger logger;             /**< optional message sink */
+    uint32_t features;            /**< effects to simulate, a set of PF_FEATURE_* bits; default 0 (none:
+                                       the core step only). pf_set_features changes it later */
 } pf_sim_desc;
 
 /** Opaque simulation handle. Several may live in one GL context. */
@@ -192,8 +205,8 @@ typedef struct pf_sim pf_sim;
 typedef enum pf_pass {
     PF_PASS_CLEAR = 0,            /**< zero the grid accumulators */
     PF_PASS_P2G = 1,              /**< particle-to-grid splat (fixed-point atomics) */
-    PF_PASS_GRID_FORCES = 2,      /**< normalise face velocities, apply gravity */
-    PF_PASS_CLASSIFY = 3,         /**< mark cells fluid / air */
+    PF_PASS_GRID_FORCES = 2,      /**< normalise face velocities, apply gravity (and force fields) */
+    PF_PASS_CLASSIFY = 3,         /**< mark cells fluid / air (and solid: obstacles, PF_FEATURE_OBSTACLES) */
     PF_PASS_PRESSURE_SETUP = 4,   /**< divergence right-hand side */
     PF_PASS_PRESSURE_SOLVE = 5,   /**< Jacobi iterations */
     PF_PASS_VELOCITY_UPDATE = 6,  /**< subtract pressure gradient, free-slip walls; also holds the
@@ -201,7 +214,7 @@ typedef enum pf_pass {
                                        which measure what the projection left */
     PF_PASS_EXTRAPOLATE = 7,      /**< extend velocity into air faces */
     PF_PASS_G2P = 8,              /**< grid-to-particle transfer (PIC/FLIP blend or APIC) */
-    PF_PASS_ADVECT = 9,           /**< move particles, keep them in the domain */
+    PF_PASS_ADVECT = 9,           /**< move particles, keep them in the domain (and out of obstacles) */
     PF_PASS_COUNT = 10,
     PF_PASS_FORCE32 = 0x7fffffff
 } pf_pass;
@@ -353,11 +366,101 @@ PF_API pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out);
 PF_API pf_result pf_get_stats(const pf_sim* sim, pf_stats* out);
 /** Clear the sticky PF_FLAG_* bits. */
 PF_API pf_result pf_clear_flags(pf_sim* sim);
-/** Number of entries in the per-pass statistics list (it may grow when parameters change). */
+/** Number of entries in the per-pass statistics list (it may grow when parameters or features change). */
 PF_API pf_result pf_get_pass_count(const pf_sim* sim, uint32_t* out);
 /** Entry `index` (< pf_get_pass_count) of the per-pass statistics list; no stall. */
 PF_API pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_stats* out);
 
+
+/* ---- effects (docs/design.md §9) --------------------------------------------------------------- */
+
+/** Turns effects on or off (a set of PF_FEATURE_* bits). Builds only the programs and buffers of
+ *  effects turned on for the first time; particles and every other state are kept.
+ *  PF_ERROR_INVALID_ARGUMENT for unknown bits; on any error nothing changes. */
+PF_API pf_result pf_set_features(pf_sim* sim, uint32_t features);
+/** The PF_FEATURE_* bits currently on. */
+PF_API pf_result pf_get_features(const pf_sim* sim, uint32_t* out);
+
+/** Most force fields one simulation holds. */
+#define PF_MAX_FORCE_FIELDS 16
+/** Most obstacles one simulation holds. */
+#define PF_MAX_OBSTACLES 16
+
+/** Kinds of force field (PF_FEATURE_FORCE_FIELDS). Each adds an acceleration to the liquid's
+ *  grid velocity every substep, after gravity. */
+typedef enum pf_force_field_type {
+    PF_FORCE_FIELD_DIRECTIONAL = 0, /**< wind, everywhere: with drag 0, the uniform acceleration `vector`
+                                         (m/s^2); with drag > 0, the liquid's velocity relaxes towards the
+                                         wind velocity `vector` (m/s) at rate drag: du/dt = drag (vector - u),
+                                         integrated exactly per substep */
+    PF_FORCE_FIELD_POINT = 1,       /**< attractor (strength > 0) or repulsor (< 0) at `position`: an
+                                         acceleration towards it of strength * (1 - d / radius) m/s^2 at
+                                         distance d < radius, 0 beyond */
+    PF_FORCE_FIELD_VORTEX = 2,      /**< swirl around the axis through `position` along `vector`: a tangential
+                                         acceleration of strength * 4 (r / radius)(1 - r / radius) m/s^2 at
+                                         distance r < radius from the axis (peak `strength` at radius / 2),
+                                         counter-clockwise seen from the tip of `vector` for strength > 0 */
+    PF_FORCE_FIELD_TYPE_COUNT = 3,
+    PF_FORCE_FIELD_TYPE_FORCE32 = 0x7fffffff
+} pf_force_field_type;
+
+/** One force field. Start from pf_default_force_field(). */
+typedef struct pf_force_field {
+    pf_force_field_type type;
+    float position[3];            /**< POINT: the centre; VORTEX: a point on the axis (world m) */
+    float vector[3];              /**< DIRECTIONAL: acceleration (m/s^2) or, with drag > 0, the wind velocity
+                                       (m/s); VORTEX: the axis direction (non-zero, normalised internally) */
+    float strength;               /**< POINT, VORTEX: peak acceleration in m/s^2 (sign: see the types) */
+    float radius;                 /**< POINT, VORTEX: range in m, > 0 */
+    float drag;                   /**< DIRECTIONAL: relaxation rate towards the wind in 1/s, >= 0 (0: vector
+                                       is an acceleration) */
+} pf_force_field;
+
+/** Default force field: DIRECTIONAL with zero acceleration (no effect until edited), radius 1 m. */
+PF_API pf_force_field pf_default_force_field(void);
+/** Adds a force field; *out_id (may be NULL) names it for pf_set_force_field / pf_remove_force_field.
+ *  PF_ERROR_INVALID_ARGUMENT for a NULL field, an unknown type, a non-finite value, a radius <= 0
+ *  (POINT, VORTEX), a zero vortex axis or a negative drag; PF_ERROR_CAPACITY when
+ *  PF_MAX_FORCE_FIELDS are present. Each error is logged; on any error nothing changes. */
+PF_API pf_result pf_add_force_field(pf_sim* sim, const pf_force_field* field, uint32_t* out_id);
+/** Replaces force field `id`; validated as in pf_add_force_field, nothing changes on error. */
+PF_API pf_result pf_set_force_field(pf_sim* sim, uint32_t id, const pf_force_field* field);
+/** Removes force field `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
+PF_API pf_result pf_remove_force_field(pf_sim* sim, uint32_t id);
+
+/** Shapes of static obstacles (PF_FEATURE_OBSTACLES). */
+typedef enum pf_obstacle_shape {
+    PF_OBSTACLE_BOX = 0,          /**< half_extents along the local axes */
+    PF_OBSTACLE_SPHERE = 1,       /**< radius */
+    PF_OBSTACLE_CAPSULE = 2,      /**< radius around the local y segment from -half_height to +half_height */
+    PF_OBSTACLE_SHAPE_COUNT = 3,
+    PF_OBSTACLE_SHAPE_FORCE32 = 0x7fffffff
+} pf_obstacle_shape;
+
+/** One static obstacle. Cells whose centre lies inside are solid (free-slip walls for the liquid);
+ *  particles that end a substep inside are pushed out along the distance gradient. Start from
+ *  pf_default_obstacle(). */
+typedef struct pf_obstacle {
+    pf_obstacle_shape shape;
+    float position[3];            /**< centre, world m */
+    float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
+                                       (0, 0, 0, 0) means the identity */
+    float half_extents[3];        /**< BOX: half sizes in m, each > 0 */
+    float radius;                 /**< SPHERE, CAPSULE: radius in m, > 0 */
+    float half_height;            /**< CAPSULE: half length of the axis segment in m, >= 0 */
+} pf_obstacle;
+
+/** Default obstacle: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m). */
+PF_API pf_obstacle pf_default_obstacle(void);
+/** Adds an obstacle; *out_id (may be NULL) names it for pf_set_obstacle / pf_remove_obstacle.
+ *  PF_ERROR_INVALID_ARGUMENT for a NULL obstacle, an unknown shape, a non-finite value, a box half
+ *  extent or radius <= 0 or a negative capsule half height; PF_ERROR_CAPACITY when
+ *  PF_MAX_OBSTACLES are present. Each error is logged; on any error nothing changes. */
+PF_API pf_result pf_add_obstacle(pf_sim* sim, const pf_obstacle* obstacle, uint32_t* out_id);
+/** Replaces obstacle `id` (moves it, say); validated as in pf_add_obstacle, nothing changes on error. */
+PF_API pf_result pf_set_obstacle(pf_sim* sim, uint32_t id, const pf_obstacle* obstacle);
+/** Removes obstacle `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
+PF_API pf_result pf_remove_obstacle(pf_sim* sim, uint32_t id);
 
 /* ---- rendering into the engine's frame ----------------------------------------------------- */
 

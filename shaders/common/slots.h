@@ -48,6 +48,11 @@
 #define PF_SLOT_METRICS_PARTIALS 4
 /* storage blocks of the hydrostatic pressure estimate (sim/hydrostatic_start.comp) use
  * PF_SLOT_CELL_TYPE and PF_SLOT_PRESSURE */
+/* storage blocks of the effects (shaders/effects/<name>/): each effect's own list of objects on
+ * slot 3, which none of their kernels uses otherwise (they bind particles 0-1, face velocities 2,
+ * face accumulators 4, cell types 6) */
+#define PF_SLOT_FORCE_FIELDS 3
+#define PF_SLOT_OBSTACLES 3
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
@@ -64,6 +69,9 @@
 
 /* explicit uniform location of the metrics reduction: workgroups (partial-sum pairs) to add */
 #define PF_LOC_METRICS_GROUPS 0
+
+/* explicit uniform location of the effects' kernels: how many objects of the effect's list are live */
+#define PF_LOC_EFFECT_COUNT 0
 
 /* uniform block with the per-step constants (common/sim.glsl, src/sim/sim_uniforms.h) */
 #define PF_UBO_SIM 0

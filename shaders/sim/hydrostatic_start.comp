@@ -7,7 +7,9 @@
 // which solves §4.6 exactly for a flat tank: the face between the top FLUID cell and the AIR
 // above it carries p_top - 0 = density |g_a| dx, every face below the same step. Only cells still
 // at p = 0 are written (cells the solver has seen keep their warm start); fluid not resting on
-// the floor (a falling blob: p = 0 is its solution) and AIR are left alone.
+// the floor (a falling blob: p = 0 is its solution) and AIR are left alone. A SOLID cell
+// (obstacle) is a floor for the run above it; a run capped by a SOLID cell (liquid under an
+// obstacle, whose pressure comes from the liquid around it) is left to the solver.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
@@ -28,16 +30,24 @@ void main() {
     int floor_cell = down_is_low ? 0 : n[axis] - 1;
     int up = down_is_low ? 1 : -1;
 
-    int run = 0;
-    for (int k = 0; k < n[axis]; ++k) {
-        c[axis] = floor_cell + up * k;
-        if (cell_type[cell_index(c)] != PF_CELL_FLUID) break;
-        ++run;
-    }
     float step = sim.density * g[axis] * sim.dx;
-    for (int k = 0; k < run; ++k) {
-        c[axis] = floor_cell + up * k;
-        int i = cell_index(c);
-        if (pressure[i] == 0.0) pressure[i] = step * float(run - k);
+    int start = 0;  // first cell of the current run, counted from the floor
+    for (int k = 0; k <= n[axis]; ++k) {
+        uint t = PF_CELL_AIR;  // k = n: the run ends at the lid, as under AIR
+        if (k < n[axis]) {
+            c[axis] = floor_cell + up * k;
+            t = cell_type[cell_index(c)];
+        }
+        if (t == PF_CELL_FLUID) continue;
+        // The run [start, k) rests on the floor or a SOLID cell and ends here.
+        if (t != PF_CELL_SOLID) {
+            for (int j = start; j < k; ++j) {
+                c[axis] = floor_cell + up * j;
+                int i = cell_index(c);
+                if (pressure[i] == 0.0) pressure[i] = step * float(k - j);
+            }
+            break;  // above AIR nothing rests on anything
+        }
+        start = k + 1;
     }
 }

@@ -1,6 +1,9 @@
 // Velocity update: subtracts the pressure gradient on faces next to FLUID cells (p = 0 in
 // AIR) and marks them valid; wall faces are 0 (free-slip) and valid; faces between two AIR
-// cells are reset to 0 and left invalid for extrapolation.
+// cells are reset to 0 and left invalid for extrapolation. SOLID cells (obstacles) are walls
+// too: a face between a SOLID cell and another keeps the obstacle's normal velocity that
+// obstacle_faces set (free-slip) and is valid; a face inside a solid (two SOLID cells) is reset
+// to 0 and left to extrapolation, like one between two AIR cells.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_FACE_VEL) buffer FaceVel { float face_vel[]; };
@@ -25,7 +28,11 @@ void main() {
     int b = cell_index(f);
     uint ta = cell_type[a];
     uint tb = cell_type[b];
-    if (ta == PF_CELL_FLUID || tb == PF_CELL_FLUID) {
+    if (ta == PF_CELL_SOLID || tb == PF_CELL_SOLID) {
+        bool inside = ta == tb;
+        if (inside) face_vel[id] = 0.0;
+        valid[id] = inside ? 0u : 1u;
+    } else if (ta == PF_CELL_FLUID || tb == PF_CELL_FLUID) {
         float pa = ta == PF_CELL_FLUID ? pressure[a] : 0.0;
         float pb = tb == PF_CELL_FLUID ? pressure[b] : 0.0;
         float scale = sim.dt / (sim.density * sim.dx);

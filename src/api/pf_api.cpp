@@ -184,6 +184,80 @@ pf_result pf_push(pf_sim* sim, const float center[3], float radius, const float 
     return guarded(s.log(), "pf_push", [&] { return s.push(center, radius, dv); });
 }
 
+pf_result pf_set_features(pf_sim* sim, uint32_t features) {
+    PF_CHECK_SIM(sim, "pf_set_features");
+    pf::Simulation& s = *sim->impl;
+    if (pf_result r = pf::validate_features(features, s.log(), "pf_set_features"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_set_features", [&] { return s.set_features(features, "pf_set_features"); });
+}
+
+pf_result pf_get_features(const pf_sim* sim, uint32_t* out) {
+    PF_CHECK_SIM(sim, "pf_get_features");
+    if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_features: out must not be NULL");
+    *out = sim->impl->features();
+    return PF_OK;
+}
+
+pf_force_field pf_default_force_field(void) {
+    pf_force_field f{};
+    f.type = PF_FORCE_FIELD_DIRECTIONAL;
+    f.radius = 1.0f;
+    return f;
+}
+
+pf_obstacle pf_default_obstacle(void) {
+    pf_obstacle o{};
+    o.shape = PF_OBSTACLE_BOX;
+    o.rotation[3] = 1.0f;
+    o.half_extents[0] = o.half_extents[1] = o.half_extents[2] = 0.1f;
+    o.radius = 0.1f;
+    return o;
+}
+
+pf_result pf_add_force_field(pf_sim* sim, const pf_force_field* field, uint32_t* out_id) {
+    PF_CHECK_SIM(sim, "pf_add_force_field");
+    pf::Simulation& s = *sim->impl;
+    if (!field) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_force_field: field must not be NULL");
+    if (pf_result r = pf::validate_force_field(*field, s.log(), "pf_add_force_field"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_add_force_field", [&] { return s.add_force_field(*field, out_id); });
+}
+
+pf_result pf_set_force_field(pf_sim* sim, uint32_t id, const pf_force_field* field) {
+    PF_CHECK_SIM(sim, "pf_set_force_field");
+    pf::Simulation& s = *sim->impl;
+    if (!field) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_force_field: field must not be NULL");
+    if (pf_result r = pf::validate_force_field(*field, s.log(), "pf_set_force_field"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_set_force_field", [&] { return s.set_force_field(id, *field); });
+}
+
+pf_result pf_remove_force_field(pf_sim* sim, uint32_t id) {
+    PF_CHECK_SIM(sim, "pf_remove_force_field");
+    pf::Simulation& s = *sim->impl;
+    return guarded(s.log(), "pf_remove_force_field", [&] { return s.remove_force_field(id); });
+}
+
+pf_result pf_add_obstacle(pf_sim* sim, const pf_obstacle* obstacle, uint32_t* out_id) {
+    PF_CHECK_SIM(sim, "pf_add_obstacle");
+    pf::Simulation& s = *sim->impl;
+    if (!obstacle) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_obstacle: obstacle must not be NULL");
+    if (pf_result r = pf::validate_obstacle(*obstacle, s.log(), "pf_add_obstacle"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_add_obstacle", [&] { return s.add_obstacle(*obstacle, out_id); });
+}
+
+pf_result pf_set_obstacle(pf_sim* sim, uint32_t id, const pf_obstacle* obstacle) {
+    PF_CHECK_SIM(sim, "pf_set_obstacle");
+    pf::Simulation& s = *sim->impl;
+    if (!obstacle) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_obstacle: obstacle must not be NULL");
+    if (pf_result r = pf::validate_obstacle(*obstacle, s.log(), "pf_set_obstacle"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_set_obstacle", [&] { return s.set_obstacle(id, *obstacle); });
+}
+
+pf_result pf_remove_obstacle(pf_sim* sim, uint32_t id) {
+    PF_CHECK_SIM(sim, "pf_remove_obstacle");
+    pf::Simulation& s = *sim->impl;
+    return guarded(s.log(), "pf_remove_obstacle", [&] { return s.remove_obstacle(id); });
+}
+
 pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out) {
     PF_CHECK_SIM(sim, "pf_get_params");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_params: out must not be NULL");

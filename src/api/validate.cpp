@@ -111,7 +111,53 @@ pf_result validate_desc(const pf_sim_desc& d, const Log& log) {
     if (ppc != 1 && ppc != 8 && ppc != 27 && ppc != 64)
         return bad("desc.fill_particles_per_cell must be 1, 8, 27 or 64, got " + std::to_string(ppc));
     if (!(d.fill_jitter >= 0.0f && d.fill_jitter <= 1.0f)) return bad("desc.fill_jitter must be in [0, 1], got " + str(d.fill_jitter));
+    if (pf_result r = validate_features(d.features, log, "pf_create"); r != PF_OK) return r;
     return validate_params(d.params, log, "pf_create");
+}
+
+pf_result validate_features(uint32_t features, const Log& log, const char* fn) {
+    if (features & ~uint32_t(PF_FEATURE_ALL)) {
+        return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": unknown feature bits " +
+                                                        std::to_string(features & ~uint32_t(PF_FEATURE_ALL)) +
+                                                        " (known: PF_FEATURE_ALL = " + std::to_string(PF_FEATURE_ALL) + ")");
+    }
+    return PF_OK;
+}
+
+pf_result validate_force_field(const pf_force_field& f, const Log& log, const char* fn) {
+    auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
+    if (uint32_t(f.type) >= PF_FORCE_FIELD_TYPE_COUNT) return bad("unknown force field type " + std::to_string(int(f.type)));
+    if (!finite3(f.position) || !finite3(f.vector) || !std::isfinite(f.strength) || !std::isfinite(f.radius) ||
+        !std::isfinite(f.drag))
+        return bad("every field of the force field must be finite");
+    if (f.type == PF_FORCE_FIELD_DIRECTIONAL) {
+        if (f.drag < 0.0f) return bad("drag must be >= 0, got " + str(f.drag));
+        return PF_OK;
+    }
+    if (!(f.radius > 0.0f)) return bad("radius must be > 0, got " + str(f.radius));
+    if (f.type == PF_FORCE_FIELD_VORTEX) {
+        const double n2 = double(f.vector[0]) * f.vector[0] + double(f.vector[1]) * f.vector[1] + double(f.vector[2]) * f.vector[2];
+        if (!(n2 > 1e-20)) return bad("a vortex needs a non-zero axis (vector)");
+    }
+    return PF_OK;
+}
+
+pf_result validate_obstacle(const pf_obstacle& o, const Log& log, const char* fn) {
+    auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
+    if (uint32_t(o.shape) >= PF_OBSTACLE_SHAPE_COUNT) return bad("unknown obstacle shape " + std::to_string(int(o.shape)));
+    if (!finite3(o.position) || !finite3(o.half_extents) || !std::isfinite(o.rotation[3]) || !finite3(o.rotation) ||
+        !std::isfinite(o.radius) || !std::isfinite(o.half_height))
+        return bad("every field of the obstacle must be finite");
+    if (o.shape == PF_OBSTACLE_BOX) {
+        for (int a = 0; a < 3; ++a) {
+            if (!(o.half_extents[a] > 0.0f))
+                return bad("half_extents[" + std::to_string(a) + "] must be > 0, got " + str(o.half_extents[a]));
+        }
+        return PF_OK;
+    }
+    if (!(o.radius > 0.0f)) return bad("radius must be > 0, got " + str(o.radius));
+    if (o.shape == PF_OBSTACLE_CAPSULE && o.half_height < 0.0f) return bad("half_height must be >= 0, got " + str(o.half_height));
+    return PF_OK;
 }
 
 pf_result validate_particles(const pf_sim_desc& d, const float* xyz, const float* vel, uint32_t n, const Log& log) {

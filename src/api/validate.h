@@ -12,6 +12,11 @@ pf_sim_params resolve_params(const pf_sim_params& params);
 // PF_OK or PF_ERROR_INVALID_ARGUMENT with a message naming the field; `fn` prefixes messages.
 pf_result validate_desc(const pf_sim_desc& desc, const Log& log);
 pf_result validate_params(const pf_sim_params& params, const Log& log, const char* fn);
+// Effects' objects: every field finite and in range (pf.h documents the ranges); `fn` prefixes messages.
+pf_result validate_force_field(const pf_force_field& field, const Log& log, const char* fn);
+pf_result validate_obstacle(const pf_obstacle& obstacle, const Log& log, const char* fn);
+// Only known PF_FEATURE_* bits.
+pf_result validate_features(uint32_t features, const Log& log, const char* fn);
 // Positions finite and inside the domain, velocities finite and at most max_speed.
 pf_result validate_particles(const pf_sim_desc& desc, const float* xyz, const float* vel, uint32_t n,
                              const Log& log);

@@ -35,6 +35,12 @@ public:
     GLuint get(ProgramId id, std::string& error);
     // The program if it was built already, else 0.
     GLuint built(ProgramId id) const { return programs_[static_cast<size_t>(id)]; }
+    // How many programs have been linked so far.
+    uint32_t built_count() const {
+        uint32_t n = 0;
+        for (GLuint p : programs_) n += p != 0 ? 1u : 0u;
+        return n;
+    }
 
 private:
     const Api& gl_;

@@ -46,6 +46,8 @@ public:
     std::string prepare(gl::ProgramId id);
     // GL name of a prepared program, 0 if not prepared.
     GLuint program(gl::ProgramId id) const { return programs_.built(id); }
+    // Programs linked so far (tests: effects that are off build none).
+    uint32_t programs_built() const { return programs_.built_count(); }
 
     // Starts a step: clears the dispatch counts and opens a timing slot.
     void begin_step(uint64_t step, uint32_t substeps);

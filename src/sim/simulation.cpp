@@ -35,7 +35,11 @@ GLADapiproc load_gl(void* user, const char* name) {
 using gl::hex;
 }  // namespace
 
-Simulation::Simulation(const pf_sim_desc& desc) : desc_(desc), log_(desc.logger) {}
+Simulation::Simulation(const pf_sim_desc& desc) : desc_(desc), log_(desc.logger) {
+    for (uint32_t i = 0; i < kEffectCount; ++i) effects_[i] = make_effect(1u << i);
+    requested_features_ = desc.features;
+    desc_.features = 0;  // init() turns them on
+}
 
 Simulation::~Simulation() {
     if (!gl_.DeleteSync) return;  // GL never loaded: nothing was created
@@ -143,6 +147,7 @@ pf_result Simulation::init() {
     }
     if (pf_result res = prepare_particle_passes(desc_.params, "pf_create"); res != PF_OK) return res;
     if (pf_result res = solver_for(desc_.params, "pf_create", &solver_); res != PF_OK) return res;
+    if (pf_result res = set_features(requested_features_, "pf_create"); res != PF_OK) return res;
     // Pressure starts at zero (warm start of the first solve); everything else is written
     // before it is read.
     fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
@@ -261,8 +266,10 @@ void Simulation::run_substep() {
            apic ? Bindings{pos, vel, accum, count, status, affine} : Bindings{pos, vel, accum, count, status}});
     r.run({particle_programs(desc_.params).grid_forces, stat_.grid_forces, faces,
            {{PF_SLOT_FACE_ACCUM, &face_accum_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}}});
+    run_effects(EffectStage::after_grid_forces);
     r.run({ProgramId::classify, stat_.classify, cells,
            {{PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_CELL_TYPE, &cell_type_}}});
+    run_effects(EffectStage::after_classify);
     r.run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_CELL_COUNT, &cell_count_},
             {PF_SLOT_RHS, &rhs_}, {PF_SLOT_PRESSURE, &pressure_}}});
@@ -325,6 +332,7 @@ void Simulation::run_g2p_and_advect() {
     } else {
         r.run({programs.advect, stat_.advect, np, {pos, face_vel}});
     }
+    run_effects(EffectStage::after_advect);
 }
 
 uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
@@ -332,7 +340,13 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     float v_max = gpu_max_speed_;
     if (added_at_step_ > status_step_) v_max = std::max(v_max, added_speed_);
     const float* g = desc_.params.gravity;
-    const float v_est = v_max + std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) * frame_dt;
+    float accel = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    float wind = 0.0f;  // drag pulls the liquid towards the wind, never beyond it
+    if (desc_.features & PF_FEATURE_FORCE_FIELDS) {
+        accel += force_fields().max_acceleration();
+        wind = force_fields().max_wind_speed();
+    }
+    const float v_est = std::max(v_max + accel * frame_dt, wind);
     const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
     const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
     if (clamped) *clamped = wanted > double(desc_.params.max_substeps);
@@ -357,6 +371,7 @@ pf_result Simulation::step(float frame_dt) {
                   "the per-step status words are contiguous");
     status_.upload(PF_STATUS_MAX_SPEED * 4, sizeof(zeros), zeros);
     upload_uniforms(frame_dt / float(substeps));
+    begin_effects_step();
     for (uint32_t s = 0; s < substeps; ++s) run_substep();
     run_metrics();
     runner_->end_step();
@@ -384,6 +399,7 @@ void Simulation::run_one_step_for_test(float dt, Passes&& passes) {
     ++steps_;
     runner_->begin_step(steps_, 1);
     upload_uniforms(dt);
+    begin_effects_step();
     passes();
     runner_->end_step();
     gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
@@ -636,6 +652,94 @@ pf_result Simulation::set_params(const pf_sim_params& params) {
     desc_.params = params;
     restart_energy_reference();  // gravity may have changed: the old total is not comparable
     return PF_OK;
+}
+
+pf_result Simulation::set_features(uint32_t features, const char* fn) {
+    // Effects turned on for the first time are built first, so a failure changes nothing.
+    gl::StateGuard guard(gl_, gl_state_);
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        const uint32_t bit = 1u << i;
+        if (!(features & bit) || (effects_ready_ & bit)) continue;
+        if (pf_result r = effects_[i]->init(gl_, *runner_, log_, fn); r != PF_OK) return r;
+        if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
+            return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
+                              std::string(fn) + ": allocating an effect's buffers failed (GL error " + hex(err) + ")");
+        }
+        effects_ready_ |= bit;
+    }
+    desc_.features = features;
+    return PF_OK;
+}
+
+void Simulation::begin_effects_step() {
+    bool work = false;
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        if (!(desc_.features & (1u << i))) continue;
+        effects_[i]->begin_step();
+        work = work || effects_[i]->does_work();
+    }
+    if (work) restart_energy_reference();  // energy put in by an effect is not a numerical gain
+}
+
+void Simulation::run_effects(EffectStage stage) {
+    if (desc_.features == 0) return;
+    const EffectBuffers buffers{pos_,           vel_,          face_accum_, face_vel_, cell_type_, particle_count_,
+                                uint64_t(cells_), uint64_t(faces_)};
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        if (desc_.features & (1u << i)) effects_[i]->run(stage, *runner_, buffers);
+    }
+}
+
+namespace {
+template <typename List, typename T>
+pf_result add_to(List& list, const T& item, uint32_t* out_id, const Log& log, const char* fn, const char* what) {
+    if (list.full()) {
+        return log.error(PF_ERROR_CAPACITY, std::string(fn) + ": already " + std::to_string(List::kCapacity) + " " + what +
+                                                " (the most a simulation holds); remove one first");
+    }
+    const uint32_t id = list.add(item);
+    if (out_id) *out_id = id;
+    return PF_OK;
+}
+
+template <typename List, typename T>
+pf_result set_in(List& list, uint32_t id, const T& item, const Log& log, const char* fn) {
+    T* slot = list.find(id);
+    if (!slot) return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": no object has id " + std::to_string(id));
+    *slot = item;
+    return PF_OK;
+}
+
+template <typename List>
+pf_result remove_from(List& list, uint32_t id, const Log& log, const char* fn) {
+    if (!list.remove(id)) return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": no object has id " + std::to_string(id));
+    return PF_OK;
+}
+}  // namespace
+
+pf_result Simulation::add_force_field(const pf_force_field& field, uint32_t* out_id) {
+    force_fields().changed();
+    return add_to(force_fields().list(), field, out_id, log_, "pf_add_force_field", "force fields");
+}
+pf_result Simulation::set_force_field(uint32_t id, const pf_force_field& field) {
+    force_fields().changed();
+    return set_in(force_fields().list(), id, field, log_, "pf_set_force_field");
+}
+pf_result Simulation::remove_force_field(uint32_t id) {
+    force_fields().changed();
+    return remove_from(force_fields().list(), id, log_, "pf_remove_force_field");
+}
+pf_result Simulation::add_obstacle(const pf_obstacle& obstacle, uint32_t* out_id) {
+    obstacles().changed();
+    return add_to(obstacles().list(), obstacle, out_id, log_, "pf_add_obstacle", "obstacles");
+}
+pf_result Simulation::set_obstacle(uint32_t id, const pf_obstacle& obstacle) {
+    obstacles().changed();
+    return set_in(obstacles().list(), id, obstacle, log_, "pf_set_obstacle");
+}
+pf_result Simulation::remove_obstacle(uint32_t id) {
+    obstacles().changed();
+    return remove_from(obstacles().list(), id, log_, "pf_remove_obstacle");
 }
 
 pf_result Simulation::read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const {

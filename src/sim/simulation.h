@@ -12,6 +12,9 @@
 #include "gl/program.h"
 #include "gl/state_guard.h"
 #include "pf/pf.h"
+#include "sim/effects/force_fields/force_fields.h"
+#include "sim/effects/obstacles/obstacles.h"
+#include "sim/effects/registry.h"
 #include "sim/pass_runner.h"
 #include "sim/sim_uniforms.h"
 #include "sim/solvers/pressure_solver.h"
@@ -37,6 +40,16 @@ public:
     pf_result push(const float center[3], float radius, const float dv[3]);
     pf_result step(float frame_dt);
     pf_result set_params(const pf_sim_params& params);
+    // pf_set_features: initialises the effects turned on for the first time (all or nothing).
+    pf_result set_features(uint32_t features, const char* fn);
+    uint32_t features() const { return desc_.features; }
+    // The effects' object lists (validated by the API); edits take effect at the next step.
+    pf_result add_force_field(const pf_force_field& field, uint32_t* out_id);
+    pf_result set_force_field(uint32_t id, const pf_force_field& field);
+    pf_result remove_force_field(uint32_t id);
+    pf_result add_obstacle(const pf_obstacle& obstacle, uint32_t* out_id);
+    pf_result set_obstacle(uint32_t id, const pf_obstacle& obstacle);
+    pf_result remove_obstacle(uint32_t id);
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
     void gl_buffers(pf_gl_buffers& out) const;
     void stats(pf_stats& out) const;
@@ -90,6 +103,13 @@ private:
     template <typename Passes>
     void run_one_step_for_test(float dt, Passes&& passes);
     void run_substep();
+    // Every effect that is on, its passes of `stage` (lowest feature bit first).
+    void run_effects(EffectStage stage);
+    // Start of a step: effects that are on upload what changed.
+    void begin_effects_step();
+    ForceFieldsEffect& force_fields() { return static_cast<ForceFieldsEffect&>(*effects_[0]); }
+    const ForceFieldsEffect& force_fields() const { return static_cast<const ForceFieldsEffect&>(*effects_[0]); }
+    ObstaclesEffect& obstacles() { return static_cast<ObstaclesEffect&>(*effects_[1]); }
     void run_g2p_and_advect();
     const gl::Buffer& grid_buffer(GridBuffer which) const;
     void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat);
@@ -116,6 +136,11 @@ private:
     CoreStats stat_{};
     std::unique_ptr<PressureSolver> solvers_[PF_PRESSURE_SOLVER_COUNT];
     PressureSolver* solver_ = nullptr;  // the one params.pressure_solver selects
+    // One effect per feature bit (bit i: effects_[i]); made at construction (their host lists
+    // exist while off), initialised when first turned on (effects_ready_ bits).
+    std::unique_ptr<Effect> effects_[kEffectCount];
+    uint32_t effects_ready_ = 0;
+    uint32_t requested_features_ = 0;  // desc.features, turned on at the end of init()
 
     // particles
     gl::Buffer pos_, vel_;

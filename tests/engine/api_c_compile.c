@@ -8,8 +8,11 @@ int pf_test_c_header_defaults_ok(void) {
     pf_sim_params params = pf_default_sim_params();
     pf_stats stats = {0};
     pf_gl_buffers buffers = {0};
+    pf_force_field field = pf_default_force_field();
+    pf_obstacle obstacle = pf_default_obstacle();
     (void)stats;
     (void)buffers;
-    return desc.grid_size[0] > 0 && params.pressure_iterations > 0 && pf_version() == PF_VERSION &&
+    desc.features = PF_FEATURE_ALL;
+    return field.radius > 0.0f && obstacle.half_extents[0] > 0.0f && desc.grid_size[0] > 0 && params.pressure_iterations > 0 && pf_version() == PF_VERSION &&
            pf_result_string(PF_OK) != 0;
 }

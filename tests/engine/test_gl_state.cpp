@@ -89,6 +89,18 @@ void GlState::etiquette(EngineProgram kind) {
     guarded_call(engine, v++, "pf_get_gl_buffers", [&] { EXPECT_EQ(pf_get_gl_buffers(sim, &bufs), PF_OK); });
     guarded_call(engine, v++, "pf_clear_flags", [&] { EXPECT_EQ(pf_clear_flags(sim), PF_OK); });
     guarded_call(engine, v++, "pf_step (FLIP 0.5)", [&] { EXPECT_EQ(pf_step(sim, kDt), PF_OK) << last_log(); });
+    // Effects: turning them on builds their programs and buffers; a step runs their passes.
+    guarded_call(engine, v++, "pf_set_features (all: builds the effects)",
+                 [&] { EXPECT_EQ(pf_set_features(sim, PF_FEATURE_ALL), PF_OK) << last_log(); });
+    pf_obstacle obstacle = pf_default_obstacle();
+    obstacle.position[0] = obstacle.position[1] = obstacle.position[2] = 0.3f;
+    guarded_call(engine, v++, "pf_add_obstacle",
+                 [&] { EXPECT_EQ(pf_add_obstacle(sim, &obstacle, nullptr), PF_OK) << last_log(); });
+    pf_force_field field = pf_default_force_field();
+    field.vector[0] = 1.0f;
+    guarded_call(engine, v++, "pf_add_force_field",
+                 [&] { EXPECT_EQ(pf_add_force_field(sim, &field, nullptr), PF_OK) << last_log(); });
+    guarded_call(engine, v++, "pf_step (effects)", [&] { EXPECT_EQ(pf_step(sim, kDt), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_clear_particles", [&] { EXPECT_EQ(pf_clear_particles(sim), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_step (no particles)", [&] { EXPECT_EQ(pf_step(sim, kDt), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_destroy", [&] { pf_destroy(sim); });

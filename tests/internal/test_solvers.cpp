@@ -147,6 +147,49 @@ TEST_P(Solvers, ConvergesToItsToleranceAndAgreesWithTheReference) {
     RecordProperty("iterations", int(s.iterations));
 }
 
+// Obstacles: SOLID cells are walls (Neumann: left out of the stencil, not p = 0). A block of
+// SOLID cells inside the liquid, one resting on the floor and scattered single SOLID cells: every
+// solver (multigrid's coarse levels coarsen SOLID too) converges to the reference solution of
+// the system with those cells excluded, which differs from treating them as AIR.
+TEST_P(Solvers, SolidCellsAreWalls) {
+    Problem pb = bubbly_tank({14, 12, 10}, 13, 0.03);
+    std::mt19937 rng(99);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int k = 0; k < 10; ++k)
+        for (int j = 0; j < 12; ++j)
+            for (int i = 0; i < 14; ++i) {
+                const size_t c = size_t(pb.grid.cell_index(i, j, k));
+                const bool block = i >= 4 && i < 9 && j >= 2 && j < 6 && k >= 3 && k < 7;
+                const bool pillar = i >= 10 && i < 12 && j < 5 && k >= 1 && k < 3;
+                if (block || pillar || u(rng) < 0.03) {
+                    pb.type[c] = ref::SOLID;
+                    pb.rhs[c] = 0.0;
+                }
+            }
+    const float tol = 1e-5f;
+    const uint32_t cap = generous_cap(GetParam().solver);
+    const Solved s = solve(pb, tol, cap, 0);
+    ASSERT_EQ(s.p.size(), pb.rhs.size());
+    EXPECT_LT(s.iterations, cap) << "stopped by the cap, not the tolerance";
+    EXPECT_LE(relative_residual(pb, s.p, false), 1.5 * tol);
+    std::vector<double> rhs_f(pb.rhs.size());
+    for (size_t c = 0; c < rhs_f.size(); ++c) rhs_f[c] = double(float(pb.rhs[c]));
+    const std::vector<double> exact = ref::solve_pressure_exact(pb.grid, pb.type, rhs_f);
+    std::vector<double> err(exact.size());
+    for (size_t c = 0; c < err.size(); ++c) {
+        err[c] = s.p[c] - exact[c];
+        if (pb.type[c] == ref::SOLID) ASSERT_EQ(s.p[c], 0.0) << "cell " << c;
+    }
+    EXPECT_LT(norm(err) / norm(exact), 200.0 * tol);
+    // The same cells as AIR give another solution: the test can tell the two apart.
+    Problem as_air = pb;
+    for (uint8_t& t : as_air.type) t = t == ref::SOLID ? ref::AIR : t;
+    const std::vector<double> other = ref::solve_pressure_exact(as_air.grid, as_air.type, rhs_f);
+    for (size_t c = 0; c < err.size(); ++c) err[c] = other[c] - exact[c];
+    EXPECT_GT(norm(err) / norm(exact), 1e3 * tol);
+    RecordProperty("iterations", int(s.iterations));
+}
+
 TEST_P(Solvers, ClosedFullBoxIsSingularAndStillConverges) {
     const Problem pb = closed_full_box({10, 8, 9}, 3);
     const float tol = 1e-5f;

@@ -212,11 +212,20 @@ void hydrostatic_start(const Grid& grid, const std::vector<uint8_t>& type, glm::
                 c[axis] = floor_cell + up * k;
                 return grid.cell_index(c.x, c.y, c.z);
             };
-            int run = 0;
-            while (run < n[axis] && type[index(run)] == FLUID) ++run;
-            for (int k = 0; k < run; ++k) {
-                double& p = pressure[index(k)];
-                if (p == 0.0) p = density * g[axis] * grid.dx * (run - k);
+            // Runs of FLUID cells resting on the floor or on a SOLID cell; a run capped by a
+            // SOLID cell is left alone, the first one capped by AIR (or the lid) is the last.
+            int start = 0;
+            for (int k = 0; k <= n[axis]; ++k) {
+                const uint8_t t = k < n[axis] ? type[index(k)] : uint8_t(AIR);
+                if (t == FLUID) continue;
+                if (t != SOLID) {
+                    for (int j = start; j < k; ++j) {
+                        double& p = pressure[index(j)];
+                        if (p == 0.0) p = density * g[axis] * grid.dx * (k - j);
+                    }
+                    break;
+                }
+                start = k + 1;
             }
         }
     }
@@ -246,6 +255,7 @@ std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type
         if (!is_fluid(type, id)) return;
         double s = 0.0;
         for_each_neighbour(grid, i, j, k, [&](int n) {
+            if (type[n] == SOLID) return; // an obstacle, like a wall: no flux (Neumann)
             s += p[id] - (is_fluid(type, n) ? p[n] : 0.0); // AIR: p = 0 (free surface)
         });
         out[id] = s;
@@ -266,10 +276,11 @@ std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
             int diag = 0;
             double sum = 0.0;
             for_each_neighbour(grid, i, j, k, [&](int n) {
+                if (type[n] == SOLID) return; // Neumann, like a wall
                 ++diag; // AIR neighbours count in the diagonal but add p = 0
                 if (is_fluid(type, n)) sum += p0[n];
             });
-            // diag = 0 only for a 1x1x1 grid, which the stencil does not support anyway.
+            // diag = 0: a FLUID cell walled in by walls and SOLID cells (no equation): p = 0.
             next[id] = diag ? (1.0 - omega) * p0[id] + omega * (rhs[id] + sum) / diag : 0.0;
             if (no_tension) next[id] = std::max(next[id], 0.0); // projected Jacobi: p >= 0 (design.md §4.6)
         });
@@ -321,7 +332,13 @@ VelocityUpdate velocity_update(const Grid& grid, const std::vector<uint8_t>& typ
             glm::ivec3 lo(i, j, k);
             lo[c] -= 1;
             const int a = grid.cell_index(lo.x, lo.y, lo.z), b = grid.cell_index(i, j, k);
-            if (is_fluid(type, a) || is_fluid(type, b)) {
+            if (type[a] == SOLID || type[b] == SOLID) {
+                // A face of an obstacle keeps the obstacle's normal velocity (set before the
+                // projection); one inside it (two SOLID cells) is left to extrapolation.
+                const bool inside = type[a] == type[b];
+                if (inside) out.vel[id] = 0.0;
+                out.valid[id] = inside ? 0 : 1;
+            } else if (is_fluid(type, a) || is_fluid(type, b)) {
                 const double pa = is_fluid(type, a) ? p[a] : 0.0;
                 const double pb = is_fluid(type, b) ? p[b] : 0.0;
                 out.vel[id] -= scale * (pb - pa);

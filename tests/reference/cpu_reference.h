@@ -97,8 +97,8 @@ std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& t
                                  const std::vector<uint32_t>& count, double rest, double k);
 
 // §4.6 operator: (A p)_i = Σ_{j∈N(i)} (p_i - p_j) for FLUID i, with N(i) the in-domain
-// neighbours (walls excluded) and p_j = 0 for non-FLUID j; 0 for non-FLUID i. The pressure
-// system is A p = b; tests use b - A p as the residual.
+// neighbours that are not SOLID (walls and obstacles excluded: Neumann) and p_j = 0 for AIR j;
+// 0 for non-FLUID i. The pressure system is A p = b; tests use b - A p as the residual.
 std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type,
                               const std::vector<double>& p);
 
@@ -113,8 +113,10 @@ std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
 std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uint8_t>& type,
                                          const std::vector<double>& rhs);
 
-// §4.7: wall faces 0 and valid; interior faces with a FLUID side get the pressure gradient
-// and are valid; faces between two non-FLUID cells become 0 and invalid.
+// §4.7: wall faces 0 and valid; faces between a SOLID cell and another keep their velocity (the
+// obstacle's) and are valid, faces between two SOLID cells become 0 and invalid; other interior
+// faces with a FLUID side get the pressure gradient and are valid; faces between two AIR cells
+// become 0 and invalid.
 struct VelocityUpdate {
     std::vector<double> vel;
     std::vector<uint8_t> valid;
@@ -155,7 +157,8 @@ void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>
 
 // §4.5a: the hydrostatic start. Along gravity's dominant axis a (ties: x before y before z),
 // the run of L FLUID cells resting on the floor of each column gets, in its k-th cell from the
-// floor, p = ρ·|g_a|·dx·(L - k) where p is still 0. Other cells are unchanged.
+// floor, p = ρ·|g_a|·dx·(L - k) where p is still 0. A SOLID cell is a floor for the run above
+// it; a run capped by a SOLID cell is skipped. Other cells are unchanged.
 void hydrostatic_start(const Grid& grid, const std::vector<uint8_t>& type, glm::dvec3 gravity,
                        double density, std::vector<double>& pressure);
 

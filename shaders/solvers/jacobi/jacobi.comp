@@ -29,6 +29,7 @@ void main() {
     for (int n = 0; n < 6; ++n) {
         if (s.nb[n] >= 0) pair_sum[n / 2] += p_in[s.nb[n]];
     }
-    float p = (1.0 - u_omega) * p_in[c] + u_omega * (rhs[c] - rhs_mean() + pair_total(pair_sum)) / s.diag;
+    // diag = 0: a FLUID cell walled in by SOLID cells and domain walls (no equation): p = 0.
+    float p = s.diag > 0.0 ? (1.0 - u_omega) * p_in[c] + u_omega * (rhs[c] - rhs_mean() + pair_total(pair_sum)) / s.diag : 0.0;
     p_out[c] = project_nonnegative() ? max(p, 0.0) : p;
 }

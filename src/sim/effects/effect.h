@@ -1,0 +1,56 @@
+// The interface every effect implements (docs/design.md §9). An effect is one PF_FEATURE_* bit
+// and one module: src/sim/effects/<name>/ (this interface, its object list and parameters),
+// shaders/effects/<name>/ (its kernels, lines in shaders/permutations.inc) and its tests. It
+// owns its programs, buffers and statistics entries, and makes them only when its feature is
+// first turned on (init), so an effect that is off costs nothing: no program is built, no pass
+// dispatched, no statistics entry listed. Adding an effect: a class here, a feature bit in
+// pf.h, one case in make_effect (registry.cpp), and its passes at the stages it needs.
+#pragma once
+#include <cstdint>
+#include <memory>
+
+#include "api/log.h"
+#include "gl/buffer.h"
+#include "gl/gl.h"
+#include "pf/pf.h"
+#include "sim/pass_runner.h"
+
+namespace pf {
+
+// The simulation's buffers an effect's passes may bind, and their sizes in this substep.
+struct EffectBuffers {
+    const gl::Buffer& pos;         // particle positions (vec4)
+    const gl::Buffer& vel;         // particle velocities (vec4)
+    const gl::Buffer& face_accum;  // P2G sums (momentum, weight) per face
+    const gl::Buffer& face_vel;    // face velocities
+    const gl::Buffer& cell_type;   // AIR / FLUID / SOLID per cell
+    uint32_t particles = 0;
+    uint64_t cells = 0, faces = 0;
+};
+
+// The points of a substep (docs/design.md §4) where effects add passes, in substep order.
+enum class EffectStage : uint8_t {
+    after_grid_forces,  // face velocities hold u_old + gravity (force fields)
+    after_classify,     // cells are FLUID / AIR (obstacles mark SOLID and set their faces)
+    after_advect,       // particles have moved (obstacles push them out)
+};
+
+class Effect {
+public:
+    virtual ~Effect() = default;
+    // Its PF_FEATURE_* bit.
+    virtual uint32_t feature() const = 0;
+    // Builds its programs, allocates its buffers and registers its statistics entries; called
+    // the first time its feature is turned on. Errors are logged (prefixed with fn) and
+    // returned; the effect then stays off and may be tried again.
+    virtual pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) = 0;
+    // Start of a step (GL state guarded): upload what changed on the host since the last step.
+    virtual void begin_step() = 0;
+    // Records its passes of one substep at `stage` (nothing at stages it does not use).
+    virtual void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) = 0;
+    // True while it does work on the liquid (adds energy): PF_FLAG_ENERGY_GAINED then takes its
+    // reference after the last such step instead of before it.
+    virtual bool does_work() const { return false; }
+};
+
+}  // namespace pf

@@ -1,0 +1,37 @@
+// Force fields (PF_FEATURE_FORCE_FIELDS): wind, attractors/repulsors and vortices, up to
+// PF_MAX_FORCE_FIELDS, applied to the grid velocity by one pass per substep right after gravity
+// (shaders/effects/force_fields/force_fields.comp; pass list entry "force_fields" in the
+// PF_PASS_GRID_FORCES group). The fields live on the host (validated by the API) and are
+// uploaded, 48 bytes each, at the start of a step after they changed.
+#pragma once
+#include "sim/effects/effect.h"
+#include "sim/effects/object_list.h"
+
+namespace pf {
+
+class ForceFieldsEffect final : public Effect {
+public:
+    using List = ObjectList<pf_force_field, PF_MAX_FORCE_FIELDS>;
+    uint32_t feature() const override { return PF_FEATURE_FORCE_FIELDS; }
+    pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
+    void begin_step() override;
+    void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;
+    bool does_work() const override { return list_.size() > 0; }
+
+    // The host list; call changed() after editing it.
+    List& list() { return list_; }
+    void changed() { dirty_ = true; }
+    // For the CFL estimate (design.md §5): the largest acceleration the fields without drag can
+    // add (m/s^2), and the fastest wind a drag field pulls towards (m/s).
+    float max_acceleration() const;
+    float max_wind_speed() const;
+
+private:
+    List list_;
+    bool dirty_ = true;
+    gl::Buffer records_;  // PF_MAX_FORCE_FIELDS records (force_field_types.h)
+    StatId stat_ = 0;
+    uint32_t uploaded_ = 0;  // records live on the GPU
+};
+
+}  // namespace pf

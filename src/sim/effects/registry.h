@@ -1,0 +1,17 @@
+// The effects of pflip, one per PF_FEATURE_* bit (docs/design.md §9).
+#pragma once
+#include <cstdint>
+#include <memory>
+
+#include "sim/effects/effect.h"
+
+namespace pf {
+
+// Feature bits in the order their effects run within a stage (lowest bit first).
+constexpr uint32_t kEffectCount = 2;
+static_assert(PF_FEATURE_ALL == (1u << kEffectCount) - 1u, "one effect per feature bit");
+
+// A new, uninitialised effect for one feature bit, or nullptr for an unknown bit.
+std::unique_ptr<Effect> make_effect(uint32_t feature);
+
+}  // namespace pf

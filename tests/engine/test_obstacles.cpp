@@ -1,0 +1,294 @@
+// Static obstacles (PF_FEATURE_OBSTACLES) on the default solver (projected Jacobi) and on MGPCG:
+// liquid poured on a sphere flows around it; no particle is inside any obstacle at any check of
+// a long sloshing run; a one-cell-thick wall holds a dam break; a tank at rest with a box in it
+// stays at rest. Bad obstacles are refused with nothing changed. The signed distances below
+// are the test's own (double precision), not the library's.
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "support/sim_fixture.h"
+
+namespace pf::test {
+namespace {
+
+constexpr float kFrame = 1.0f / 60.0f;
+
+// Signed distance of one obstacle at p, in metres (negative inside), as documented in pf.h.
+double distance_to(const pf_obstacle& o, const double p[3]) {
+    double q[4] = {o.rotation[0], o.rotation[1], o.rotation[2], o.rotation[3]};
+    const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    if (n > 0) {
+        for (double& c : q) c /= n;
+    } else {
+        q[3] = 1;
+    }
+    // Local point: the inverse rotation of p - position (rotation by the conjugate).
+    const double v[3] = {p[0] - o.position[0], p[1] - o.position[1], p[2] - o.position[2]};
+    const double u[3] = {-q[0], -q[1], -q[2]}, w = q[3];
+    const double t[3] = {2 * (u[1] * v[2] - u[2] * v[1]), 2 * (u[2] * v[0] - u[0] * v[2]), 2 * (u[0] * v[1] - u[1] * v[0])};
+    double l[3] = {v[0] + w * t[0] + (u[1] * t[2] - u[2] * t[1]), v[1] + w * t[1] + (u[2] * t[0] - u[0] * t[2]),
+                   v[2] + w * t[2] + (u[0] * t[1] - u[1] * t[0])};
+    if (o.shape == PF_OBSTACLE_BOX) {
+        double outside = 0, inside = -1e30;
+        for (int a = 0; a < 3; ++a) {
+            const double d = std::abs(l[a]) - o.half_extents[a];
+            outside += std::max(d, 0.0) * std::max(d, 0.0);
+            inside = std::max(inside, d);
+        }
+        return std::sqrt(outside) + std::min(inside, 0.0);
+    }
+    if (o.shape == PF_OBSTACLE_CAPSULE) l[1] -= std::clamp(l[1], -double(o.half_height), double(o.half_height));
+    return std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]) - o.radius;
+}
+
+// Particles whose centre lies inside any of the obstacles (deeper than float rounding).
+size_t inside_count(const ParticleState& p, const std::vector<pf_obstacle>& obstacles, double* deepest = nullptr) {
+    size_t n = 0;
+    double worst = 0;
+    for (size_t i = 0; i < p.count(); ++i) {
+        const double x[3] = {p.pos[i * 3], p.pos[i * 3 + 1], p.pos[i * 3 + 2]};
+        for (const pf_obstacle& o : obstacles) {
+            const double d = distance_to(o, x);
+            worst = std::min(worst, d);
+            if (d < -1e-5) {
+                ++n;
+                break;
+            }
+        }
+    }
+    if (deepest) *deepest = worst;
+    return n;
+}
+
+struct SolverCase {
+    pf_pressure_solver solver;
+    const char* name;
+};
+
+class Obstacles : public GpuTest, public ::testing::WithParamInterface<SolverCase> {
+protected:
+    pf_sim_desc desc(uint32_t nx, uint32_t ny, uint32_t nz) const {
+        pf_sim_desc d = test_desc(nx, ny, nz, 0.05f);
+        d.features = PF_FEATURE_OBSTACLES;
+        d.params.pressure_solver = GetParam().solver;
+        if (GetParam().solver == PF_PRESSURE_SOLVER_MGPCG) d.params.pressure_tolerance = 1e-3f;
+        return d;
+    }
+    void add(pf_sim* sim, const std::vector<pf_obstacle>& obstacles) {
+        for (const pf_obstacle& o : obstacles) ASSERT_EQ(pf_add_obstacle(sim, &o, nullptr), PF_OK) << last_log();
+    }
+};
+
+pf_obstacle sphere(double x, double y, double z, double r) {
+    pf_obstacle o = pf_default_obstacle();
+    o.shape = PF_OBSTACLE_SPHERE;
+    o.position[0] = float(x), o.position[1] = float(y), o.position[2] = float(z);
+    o.radius = float(r);
+    return o;
+}
+
+pf_obstacle box(double x, double y, double z, double hx, double hy, double hz) {
+    pf_obstacle o = pf_default_obstacle();
+    o.position[0] = float(x), o.position[1] = float(y), o.position[2] = float(z);
+    o.half_extents[0] = float(hx), o.half_extents[1] = float(hy), o.half_extents[2] = float(hz);
+    return o;
+}
+
+// A column of liquid falls on a sphere wider than itself: it must part and flow down both sides
+// (a fifth of it on each side of the sphere, below its equator, after 0.75 s), and none of it may
+// ever be inside (were the sphere ignored, the column would fall straight through it).
+TEST_P(Obstacles, LiquidPouredOnASphereFlowsAroundIt) {
+    const pf_obstacle ball = sphere(0.4, 0.45, 0.4, 0.15);
+    SimPtr sim = create(desc(16, 24, 16));
+    ASSERT_TRUE(sim);
+    add(sim.get(), {ball});
+    const float lo[3] = {0.3f, 0.75f, 0.3f}, hi[3] = {0.5f, 0.95f, 0.5f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    for (int f = 0; f < 45; ++f) {
+        ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+        if (f % 9 == 8) EXPECT_EQ(inside_count(read_all(sim.get()), {ball}), 0u) << "frame " << f;
+    }
+    const ParticleState p = read_all(sim.get());
+    size_t left = 0, right = 0;
+    for (size_t i = 0; i < p.count(); ++i) {
+        if (p.pos[i * 3 + 1] > 0.45f) continue;
+        left += p.pos[i * 3] < 0.4f - 0.1f;
+        right += p.pos[i * 3] > 0.4f + 0.1f;
+    }
+    EXPECT_GT(left, p.count() / 5) << "left of the sphere, below its equator";
+    EXPECT_GT(right, p.count() / 5) << "right of the sphere, below its equator";
+    RecordProperty("left_fraction", std::to_string(double(left) / p.count()));
+    RecordProperty("right_fraction", std::to_string(double(right) / p.count()));
+}
+
+// Liquid sloshing for 1.5 s around a tilted box standing on the floor, a tilted capsule and a
+// sphere: no particle is ever found inside one (checked every quarter second).
+TEST_P(Obstacles, NoParticleEndsInsideAnyObstacle) {
+    SimPtr sim = create(desc(16, 10, 10));
+    ASSERT_TRUE(sim);
+    pf_obstacle capsule = pf_default_obstacle();
+    capsule.shape = PF_OBSTACLE_CAPSULE;
+    capsule.position[0] = 0.55f, capsule.position[1] = 0.15f, capsule.position[2] = 0.25f;
+    capsule.radius = 0.07f;
+    capsule.half_height = 0.15f;
+    const float s = std::sin(0.6f), c = std::cos(0.6f);  // 1.2 rad about z
+    capsule.rotation[0] = 0, capsule.rotation[1] = 0, capsule.rotation[2] = s, capsule.rotation[3] = c;
+    pf_obstacle tilted_box = box(0.3, 0.1, 0.25, 0.06, 0.1, 0.1);
+    const float s2 = std::sin(0.3f), c2 = std::cos(0.3f);  // 0.6 rad about y
+    tilted_box.rotation[0] = 0, tilted_box.rotation[1] = s2, tilted_box.rotation[2] = 0, tilted_box.rotation[3] = c2;
+    const std::vector<pf_obstacle> obstacles = {tilted_box, capsule, sphere(0.65, 0.35, 0.25, 0.08)};
+    add(sim.get(), obstacles);
+    // A dam break from the left end, over every obstacle.
+    const float lo[3] = {0.0f, 0.0f, 0.0f}, hi[3] = {0.2f, 0.45f, 0.5f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    // Particles the fill put inside the box are pushed out in the first substep.
+    double deepest = 0;
+    for (int f = 0; f < 90; ++f) {
+        ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+        if (f % 15 == 14) {
+            const ParticleState p = read_all(sim.get());
+            EXPECT_EQ(inside_count(p, obstacles, &deepest), 0u) << "frame " << f << ", deepest " << deepest;
+            for (float v : p.pos) ASSERT_TRUE(std::isfinite(v));
+        }
+    }
+    pf_stats st{};
+    ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+    EXPECT_EQ(st.flags & PF_FLAG_NONFINITE, 0u);
+}
+
+// A dam break against a wall one cell thick (only one column of cell centres inside it) that
+// spans the domain's height and depth: in 1.25 s of sloshing no particle crosses it.
+TEST_P(Obstacles, AOneCellThickWallDoesNotLeak) {
+    SimPtr sim = create(desc(16, 10, 6));
+    ASSERT_TRUE(sim);
+    const double wall_x = 8.5 * 0.05;  // the centre of cell column 8
+    const pf_obstacle wall = box(wall_x, 0.25, 0.15, 0.45 * 0.05, 1.0, 1.0);
+    add(sim.get(), {wall});
+    const float lo[3] = {0.0f, 0.0f, 0.0f}, hi[3] = {0.35f, 0.4f, 0.3f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    size_t most = 0;
+    for (int f = 0; f < 75; ++f) {
+        ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+        if (f % 15 != 14) continue;
+        const ParticleState p = read_all(sim.get());
+        size_t leaked = 0;
+        for (size_t i = 0; i < p.count(); ++i) leaked += p.pos[i * 3] > wall_x;
+        most = std::max(most, leaked);
+    }
+    EXPECT_EQ(most, 0u);
+}
+
+// Liquid at rest around a submerged box (particles placed outside it, eight per cell) stays at
+// rest: the largest speed over 1 s stays below 0.1 sqrt(g dx) (0.07 m/s here).
+TEST_P(Obstacles, HydrostaticTankWithABoxStaysAtRest) {
+    pf_sim_desc d = desc(12, 16, 12);
+    d.params.pressure_iterations = 200;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    // The box covers cells 4..7 in x and z and 2..5 in y exactly.
+    const pf_obstacle block = box(0.3, 0.2, 0.3, 0.1, 0.1, 0.1);
+    add(sim.get(), {block});
+    std::vector<float> xyz;
+    const double dx = 0.05;
+    for (int k = 0; k < 12; ++k)
+        for (int j = 0; j < 8; ++j)
+            for (int i = 0; i < 12; ++i) {
+                if (i >= 4 && i < 8 && k >= 4 && k < 8 && j >= 2 && j < 6) continue;
+                for (int s = 0; s < 8; ++s) {
+                    xyz.push_back(float((i + 0.25 + 0.5 * (s & 1)) * dx));
+                    xyz.push_back(float((j + 0.25 + 0.5 * ((s >> 1) & 1)) * dx));
+                    xyz.push_back(float((k + 0.25 + 0.5 * (s >> 2)) * dx));
+                }
+            }
+    ASSERT_EQ(pf_add_particles(sim.get(), xyz.data(), nullptr, uint32_t(xyz.size() / 3)), PF_OK);
+    double fastest = 0;
+    for (int f = 0; f < 60; ++f) {
+        ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+        if (f % 20 == 19) fastest = std::max(fastest, max_speed_of(read_all(sim.get())));
+    }
+    const double bound = 0.1 * std::sqrt(9.81 * dx);
+    EXPECT_LT(fastest, bound);
+    EXPECT_EQ(inside_count(read_all(sim.get()), {block}), 0u);
+    RecordProperty("max_speed_over_sqrt_g_dx", std::to_string(fastest / std::sqrt(9.81 * dx)));
+}
+
+INSTANTIATE_TEST_SUITE_P(DefaultAndMgpcg, Obstacles,
+                         ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_JACOBI, "jacobi"},
+                                           SolverCase{PF_PRESSURE_SOLVER_MGPCG, "mgpcg"}),
+                         [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
+
+class ObstacleArguments : public GpuTest {};
+
+TEST_F(ObstacleArguments, BadObstaclesAreRefusedAndChangeNothing) {
+    pf_sim_desc d = test_desc(8, 8, 8, 0.05f);
+    d.features = PF_FEATURE_OBSTACLES;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    uint32_t id = 0;
+    const pf_obstacle good = box(0.2, 0.2, 0.2, 0.05, 0.05, 0.05);
+    ASSERT_EQ(pf_add_obstacle(sim.get(), &good, &id), PF_OK);
+    auto refused = [&](pf_obstacle o, const char* why) {
+        clear_log();
+        uint32_t out = 777;
+        EXPECT_EQ(pf_add_obstacle(sim.get(), &o, &out), PF_ERROR_INVALID_ARGUMENT) << why;
+        EXPECT_EQ(out, 777u) << why;
+        EXPECT_EQ(pf_set_obstacle(sim.get(), id, &o), PF_ERROR_INVALID_ARGUMENT) << why;
+        EXPECT_STRNE(last_log(), "") << why;
+    };
+    pf_obstacle o = good;
+    o.shape = pf_obstacle_shape(9);
+    refused(o, "unknown shape");
+    o = good, o.position[1] = NAN;
+    refused(o, "NaN position");
+    o = good, o.rotation[2] = INFINITY;
+    refused(o, "Inf rotation");
+    o = good, o.half_extents[0] = -0.1f;
+    refused(o, "negative half extent");
+    o = good, o.half_extents[2] = 0.0f;
+    refused(o, "zero half extent");
+    o = sphere(0.2, 0.2, 0.2, -0.1);
+    refused(o, "negative radius");
+    o = sphere(0.2, 0.2, 0.2, 0.1), o.shape = PF_OBSTACLE_CAPSULE, o.half_height = -0.2f;
+    refused(o, "negative half height");
+    EXPECT_EQ(pf_add_obstacle(sim.get(), nullptr, nullptr), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_set_obstacle(sim.get(), id, nullptr), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_set_obstacle(sim.get(), id + 5, &good), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_remove_obstacle(sim.get(), id + 5), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_remove_obstacle(nullptr, id), PF_ERROR_INVALID_ARGUMENT);
+    for (int i = 1; i < PF_MAX_OBSTACLES; ++i) ASSERT_EQ(pf_add_obstacle(sim.get(), &good, nullptr), PF_OK);
+    clear_log();
+    EXPECT_EQ(pf_add_obstacle(sim.get(), &good, nullptr), PF_ERROR_CAPACITY);
+    EXPECT_STRNE(last_log(), "");
+    ASSERT_EQ(pf_remove_obstacle(sim.get(), id), PF_OK);
+    EXPECT_EQ(pf_remove_obstacle(sim.get(), id), PF_ERROR_INVALID_ARGUMENT) << "ids are not reused";
+    // Still usable: the refused edits left the original box, which keeps particles out.
+    const float lo[3] = {0.1f, 0.1f, 0.1f}, hi[3] = {0.3f, 0.3f, 0.3f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+    EXPECT_EQ(inside_count(read_all(sim.get()), {good}), 0u);
+}
+
+// pf_set_obstacle moves an obstacle between steps: the next step keeps particles out of it
+// where it is now (a sphere moved into the middle of resting liquid clears its volume).
+TEST_F(ObstacleArguments, SetObstacleMovesIt) {
+    pf_sim_desc d = test_desc(10, 10, 10, 0.05f);
+    d.features = PF_FEATURE_OBSTACLES;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    pf_obstacle ball = sphere(0.1, 0.4, 0.1, 0.08);
+    uint32_t id = 0;
+    ASSERT_EQ(pf_add_obstacle(sim.get(), &ball, &id), PF_OK);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.5f, 0.3f, 0.5f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+    ball.position[0] = 0.25f, ball.position[1] = 0.15f, ball.position[2] = 0.25f;
+    ASSERT_GT(inside_count(read_all(sim.get()), {ball}), 20u) << "liquid fills the new place before the move";
+    ASSERT_EQ(pf_set_obstacle(sim.get(), id, &ball), PF_OK);
+    ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+    EXPECT_EQ(inside_count(read_all(sim.get()), {ball}), 0u);
+}
+
+}  // namespace
+}  // namespace pf::test
