@@ -40,6 +40,18 @@ class Frame:
         """The scene: one colour everywhere at the given window depth (1.0: far, standard depth)."""
         self.fbo.clear(*color, depth=depth)
 
+    def write_color(self, image):
+        """Upload the scene's colour: (height, width, 3 or 4), uint8 or floats in [0, 1], top row
+        first (the depth is left as it is)."""
+        img = np.asarray(image)
+        if img.dtype != np.uint8:
+            img = (np.clip(img, 0.0, 1.0) * 255.0 + 0.5).astype(np.uint8)
+        if img.shape[:2] != (self.height, self.width) or img.shape[2] not in (3, 4):
+            raise ValueError(f"expected ({self.height}, {self.width}, 3 or 4), got {img.shape}")
+        if img.shape[2] == 3:
+            img = np.dstack([img, np.full(img.shape[:2], 255, np.uint8)])
+        self.color.write(np.ascontiguousarray(img[::-1]).tobytes())
+
     def read_color(self):
         """(height, width, 4) uint8, top row first (as an image file stores it)."""
         data = np.frombuffer(self.color.read(), dtype=np.uint8).reshape(self.height, self.width, 4)
