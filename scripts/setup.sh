@@ -25,7 +25,7 @@ fi
 # glad2 generates the GL loader at build time; the rest is the Python client's (python/): numpy,
 # moderngl (its tests' GL context), pytest, Pillow (examples) and setuptools (`pip install ./python`).
 python_packages=(glad2==2.0.8 numpy==2.4.6 moderngl==5.13.0 glcontext==3.1.0 pytest==9.2.0 pillow==13.0.0
-                 "setuptools>=70.1")
+                 "setuptools>=77")
 [ -x .venv/bin/python ] || python3 -m venv .venv
 # pip checks the installed versions against the pins and reaches the index only for what is missing.
 .venv/bin/python -m pip install -q --disable-pip-version-check "${python_packages[@]}"
