@@ -26,9 +26,3 @@ def get_proc_address():
     """eglGetProcAddress as a pf_gl_get_proc_address_fn (same C signature, no Python wrapper)."""
     return ctypes.cast(_libegl().eglGetProcAddress, GetProcAddressFn)
 
-
-def current_context():
-    """The EGL context current on this thread (an opaque pointer value; None when there is none)."""
-    egl = _libegl()
-    egl.eglGetCurrentContext.restype = ctypes.c_void_p
-    return egl.eglGetCurrentContext()
