@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs everything pflip needs on a fresh Debian 12 machine: build tools, GL/EGL (Mesa
 # llvmpipe runs every test without a GPU), GoogleTest, glslang, GLM, stb, nlohmann-json,
-# and glad2 (pinned) in a virtual environment at .venv. Safe to run again.
+# and, pinned in a virtual environment at .venv, glad2 and the Python client's modules. Safe to run again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,8 +22,11 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-if [ ! -x .venv/bin/python ] || ! .venv/bin/python -c 'import glad' 2>/dev/null; then
-  python3 -m venv .venv
-  .venv/bin/python -m pip install -q --disable-pip-version-check glad2==2.0.8
-fi
+# glad2 generates the GL loader at build time; the rest is the Python client's (python/): numpy,
+# moderngl (its tests' GL context), pytest, Pillow (examples) and setuptools (`pip install ./python`).
+python_packages=(glad2==2.0.8 numpy==2.4.6 moderngl==5.13.0 glcontext==3.1.0 pytest==9.2.0 pillow==13.0.0
+                 "setuptools>=77")
+[ -x .venv/bin/python ] || python3 -m venv .venv
+# pip checks the installed versions against the pins and reaches the index only for what is missing.
+.venv/bin/python -m pip install -q --disable-pip-version-check "${python_packages[@]}"
 echo "setup: ok"

@@ -1,0 +1,350 @@
+"""ctypes mirrors of the structs and enums of include/pf/pf.h, field for field and in order.
+
+tests/test_layout.py compiles a C program that prints sizeof/offsetof of every struct and field
+named here and compares them with ctypes, so a field added to pf.h without being added here (or
+a type that differs) fails the tests instead of silently shifting memory.
+"""
+import ctypes
+import enum
+
+c_enum = ctypes.c_int  # C enums whose values fit in int are int-sized (every PF_*_FORCE32 does)
+
+
+class Result(enum.IntEnum):
+    OK = 0
+    ERROR_INVALID_ARGUMENT = 1
+    ERROR_GL_UNSUPPORTED = 2
+    ERROR_SHADER_COMPILE = 3
+    ERROR_OUT_OF_MEMORY = 4
+    ERROR_CAPACITY = 5
+    ERROR_INVALID_STATE = 6
+    ERROR_GL = 7
+
+
+class LogLevel(enum.IntEnum):
+    ERROR = 0
+    WARNING = 1
+    INFO = 2
+
+
+class P2G(enum.IntEnum):
+    FIXED_POINT = 0
+    FLOAT_ATOMIC = 1
+
+
+class PressureSolver(enum.IntEnum):
+    JACOBI = 0
+    RBGS = 1
+    CG = 2
+    PCG = 3
+    MGPCG = 4
+
+
+class Transfer(enum.IntEnum):
+    PIC_FLIP = 0
+    APIC = 1
+
+
+class Advection(enum.IntEnum):
+    EULER = 0
+    RK2 = 1
+    RK3 = 2
+
+
+class Quality(enum.IntEnum):
+    FAST = 0
+    BALANCED = 1
+    ACCURATE = 2
+
+
+class Pass(enum.IntEnum):
+    CLEAR = 0
+    P2G = 1
+    GRID_FORCES = 2
+    CLASSIFY = 3
+    PRESSURE_SETUP = 4
+    PRESSURE_SOLVE = 5
+    VELOCITY_UPDATE = 6
+    EXTRAPOLATE = 7
+    G2P = 8
+    ADVECT = 9
+
+
+PASS_COUNT = 10
+
+
+class RenderPass(enum.IntEnum):
+    SCENE_COPY = 0
+    THICKNESS = 1
+    DEPTH = 2
+    SMOOTH = 3
+    SHADE = 4
+    RESOLVE = 5
+    PARTICLES = 6
+
+
+RENDER_PASS_COUNT = 7
+
+
+class Flag(enum.IntFlag):
+    P2G_OVERFLOW = 1 << 0
+    NONFINITE = 1 << 1
+    SPEED_CLAMPED = 1 << 2
+    SUBSTEPS_CLAMPED = 1 << 3
+    VOLUME_LOST = 1 << 4
+
+
+class DepthConvention(enum.IntEnum):
+    STANDARD = 0
+    ZERO_TO_ONE = 1
+    REVERSED_Z = 2
+
+
+class SsfFilter(enum.IntEnum):
+    BILATERAL = 0
+    NARROW_RANGE = 1
+    NONE = 2
+
+
+class SsfPath(enum.IntEnum):
+    COMPUTE = 0
+    RASTER = 1
+
+
+class ParticleColor(enum.IntEnum):
+    SPEED = 0
+    VELOCITY_X = 1
+    VELOCITY_Y = 2
+    VELOCITY_Z = 3
+    HEIGHT = 4
+    UNIFORM = 5
+
+
+# void (*pf_log_fn)(void* user, pf_log_level level, pf_result code, const char* message)
+LogFn = ctypes.CFUNCTYPE(None, ctypes.c_void_p, c_enum, c_enum, ctypes.c_char_p)
+# pf_gl_proc (*pf_gl_get_proc_address_fn)(const char* name); a pf_gl_proc is only passed through.
+GetProcAddressFn = ctypes.CFUNCTYPE(ctypes.c_void_p, ctypes.c_char_p)
+
+
+class _Struct(ctypes.Structure):
+    """repr() lists the fields, so a descriptor or stats prints readably."""
+
+    def __repr__(self):
+        parts = []
+        for name, *_ in self._fields_:
+            value = getattr(self, name)
+            if isinstance(value, ctypes.Array):
+                value = list(value)
+            parts.append(f"{name}={value!r}")
+        return f"{type(self).__name__}({', '.join(parts)})"
+
+
+class Logger(_Struct):
+    _fields_ = [("fn", LogFn), ("user", ctypes.c_void_p)]
+
+
+def _lib():
+    from . import _lib as lib_module  # late: _lib imports this module for the prototypes
+    return lib_module.lib
+
+
+class SimParams(_Struct):
+    """pf_sim_params. Start from SimParams.default() or SimParams.quality(...)."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_sim_params()."""
+        return _lib().pf_default_sim_params()
+
+    @classmethod
+    def quality(cls, quality):
+        """pf_quality_params(quality): the preset's complete parameters."""
+        out = cls()
+        code = _lib().pf_quality_params(int(quality), ctypes.byref(out))
+        if code != Result.OK:
+            from .errors import PflipError
+            raise PflipError("pf_quality_params", code, f"unknown quality {quality!r}")
+        return out
+
+    _fields_ = [
+        ("gravity", ctypes.c_float * 3),
+        ("flip_ratio", ctypes.c_float),
+        ("pressure_iterations", ctypes.c_uint32),
+        ("jacobi_omega", ctypes.c_float),
+        ("cfl", ctypes.c_float),
+        ("max_substeps", ctypes.c_uint32),
+        ("extrapolation_layers", ctypes.c_uint32),
+        ("separation", ctypes.c_uint32),
+        ("pressure_solver", c_enum),
+        ("pressure_tolerance", ctypes.c_float),
+        ("sor_omega", ctypes.c_float),
+        ("transfer", c_enum),
+        ("advection", c_enum),
+        ("volume_correction", ctypes.c_float),
+        ("p2g", c_enum),
+        ("volume_loss_limit", ctypes.c_float),
+    ]
+
+
+class SimDesc(_Struct):
+    """pf_sim_desc. Start from SimDesc.default(); gl_get_proc_address and logger are filled by
+    Simulation."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_sim_desc()."""
+        return _lib().pf_default_sim_desc()
+
+    _fields_ = [
+        ("grid_size", ctypes.c_uint32 * 3),
+        ("cell_size", ctypes.c_float),
+        ("origin", ctypes.c_float * 3),
+        ("max_particles", ctypes.c_uint32),
+        ("max_speed", ctypes.c_float),
+        ("density", ctypes.c_float),
+        ("fill_particles_per_cell", ctypes.c_uint32),
+        ("fill_jitter", ctypes.c_float),
+        ("seed", ctypes.c_uint32),
+        ("params", SimParams),
+        ("gl_get_proc_address", GetProcAddressFn),
+        ("logger", Logger),
+    ]
+
+
+class Stats(_Struct):
+    """pf_stats."""
+    _fields_ = [
+        ("particle_count", ctypes.c_uint32),
+        ("max_particles", ctypes.c_uint32),
+        ("steps", ctypes.c_uint64),
+        ("substeps", ctypes.c_uint32),
+        ("flags", ctypes.c_uint32),
+        ("max_speed", ctypes.c_float),
+        ("cpu_ms", ctypes.c_float),
+        ("gpu_step", ctypes.c_uint64),
+        ("gpu_substeps", ctypes.c_uint32),
+        ("gpu_ms", ctypes.c_float * PASS_COUNT),
+        ("gpu_total_ms", ctypes.c_float),
+        ("dispatches", ctypes.c_uint32 * PASS_COUNT),
+        ("render_frame", ctypes.c_uint64),
+        ("render_gpu_ms", ctypes.c_float * RENDER_PASS_COUNT),
+        ("render_gpu_total_ms", ctypes.c_float),
+        ("render_cpu_ms", ctypes.c_float),
+        ("metrics_step", ctypes.c_uint64),
+        ("divergence_l2", ctypes.c_float),
+        ("divergence_max", ctypes.c_float),
+        ("kinetic_energy", ctypes.c_float),
+        ("fluid_cells", ctypes.c_uint32),
+        ("fluid_cell_drift", ctypes.c_float),
+        ("particle_volume", ctypes.c_float),
+        ("particle_volume_drift", ctypes.c_float),
+        ("solver_iterations", ctypes.c_uint32),
+        ("solver_residual", ctypes.c_float),
+    ]
+
+
+class PassStatsC(_Struct):
+    """pf_pass_stats (Simulation.pass_stats() returns PassStats tuples built from it)."""
+    _fields_ = [
+        ("name", ctypes.c_char_p),
+        ("group", c_enum),
+        ("gpu_ms", ctypes.c_float),
+        ("dispatches", ctypes.c_uint32),
+    ]
+
+
+class GlBuffers(_Struct):
+    """pf_gl_buffers."""
+    _fields_ = [
+        ("positions", ctypes.c_uint32),
+        ("velocities", ctypes.c_uint32),
+        ("count", ctypes.c_uint32),
+        ("stride", ctypes.c_uint32),
+    ]
+
+
+class Camera(_Struct):
+    """pf_camera: matrices column-major (pflip.camera builds them from numpy)."""
+    _fields_ = [
+        ("view", ctypes.c_float * 16),
+        ("proj", ctypes.c_float * 16),
+        ("viewport", ctypes.c_int32 * 4),
+        ("near_plane", ctypes.c_float),
+        ("far_plane", ctypes.c_float),
+        ("depth_convention", c_enum),
+    ]
+
+
+class RenderTarget(_Struct):
+    """pf_render_target: GL object names owned by the caller."""
+    _fields_ = [
+        ("framebuffer", ctypes.c_uint32),
+        ("scene_color", ctypes.c_uint32),
+        ("scene_depth", ctypes.c_uint32),
+        ("environment_cubemap", ctypes.c_uint32),
+    ]
+
+
+class SsfParams(_Struct):
+    """pf_ssf_params. Start from SsfParams.default()."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_ssf_params()."""
+        return _lib().pf_default_ssf_params()
+
+    _fields_ = [
+        ("particle_radius", ctypes.c_float),
+        ("filter", c_enum),
+        ("filter_radius", ctypes.c_uint32),
+        ("filter_iterations", ctypes.c_uint32),
+        ("filter_depth_range", ctypes.c_float),
+        ("absorption", ctypes.c_float * 3),
+        ("refraction", ctypes.c_float),
+        ("fresnel_f0", ctypes.c_float),
+        ("specular", ctypes.c_float),
+        ("shininess", ctypes.c_float),
+        ("light_direction", ctypes.c_float * 3),
+        ("path", c_enum),
+    ]
+
+
+class ParticleParams(_Struct):
+    """pf_particle_params. Start from ParticleParams.default()."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_particle_params()."""
+        return _lib().pf_default_particle_params()
+
+    _fields_ = [
+        ("particle_radius", ctypes.c_float),
+        ("color_by", c_enum),
+        ("range", ctypes.c_float * 2),
+        ("color_low", ctypes.c_float * 3),
+        ("color_high", ctypes.c_float * 3),
+    ]
+
+
+# C name of each mirrored struct, for the layout test.
+C_NAMES = {
+    Logger: "pf_logger",
+    SimParams: "pf_sim_params",
+    SimDesc: "pf_sim_desc",
+    Stats: "pf_stats",
+    PassStatsC: "pf_pass_stats",
+    GlBuffers: "pf_gl_buffers",
+    Camera: "pf_camera",
+    RenderTarget: "pf_render_target",
+    SsfParams: "pf_ssf_params",
+    ParticleParams: "pf_particle_params",
+}
+
+# Enums mirrored above with the C prefix of their values, for the layout test (values checked too).
+C_ENUMS = {
+    Result: "PF_", LogLevel: "PF_LOG_", P2G: "PF_P2G_", PressureSolver: "PF_PRESSURE_SOLVER_",
+    Transfer: "PF_TRANSFER_", Advection: "PF_ADVECTION_", Quality: "PF_QUALITY_", Pass: "PF_PASS_",
+    RenderPass: "PF_RENDER_PASS_", Flag: "PF_FLAG_", DepthConvention: "PF_DEPTH_",
+    SsfFilter: "PF_SSF_FILTER_", SsfPath: "PF_SSF_PATH_", ParticleColor: "PF_PARTICLE_COLOR_",
+}
+C_CONSTANTS = {"PF_PASS_COUNT": PASS_COUNT, "PF_RENDER_PASS_COUNT": RENDER_PASS_COUNT}

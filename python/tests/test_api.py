@@ -1,0 +1,118 @@
+"""The Python surface of the C API: errors carry the code and the library's message and leave the
+simulation usable; parameters round-trip; push changes velocities locally; lifetime is explicit."""
+import numpy as np
+import pytest
+
+import pflip
+from pflip import PflipError, Result
+
+
+@pytest.fixture
+def sim(gl):
+    s = pflip.Simulation(grid_size=(16, 16, 16), cell_size=1.0 / 16, max_particles=1 << 15)
+    yield s
+    s.close()
+
+
+def test_invalid_step_raises_with_the_logged_reason_and_the_sim_goes_on(sim):
+    sim.fill_box((0.25, 0.25, 0.25), (0.5, 0.5, 0.5))
+    n = sim.particle_count
+    with pytest.raises(PflipError) as e:
+        sim.step(0.0)
+    assert e.value.code == Result.ERROR_INVALID_ARGUMENT
+    assert e.value.function == "pf_step"
+    # The text is the logger's explanation, not just the generic pf_result_string.
+    assert "frame_dt" in e.value.message and e.value.message != pflip.result_string(e.value.code)
+    sim.step(1.0 / 60)
+    assert sim.stats().steps == 1 and sim.particle_count == n
+
+
+def test_capacity_error_adds_nothing(sim):
+    too_many = np.full((sim.stats().max_particles + 1, 3), 0.5, np.float32)
+    with pytest.raises(PflipError) as e:
+        sim.add_particles(too_many)
+    assert e.value.code == Result.ERROR_CAPACITY
+    assert sim.particle_count == 0
+
+
+def test_invalid_params_change_nothing(sim):
+    before = bytes(sim.params)
+    p = sim.params
+    p.cfl = -1.0
+    with pytest.raises(PflipError) as e:
+        sim.params = p
+    assert e.value.code == Result.ERROR_INVALID_ARGUMENT and "cfl" in e.value.message
+    assert bytes(sim.params) == before
+
+
+def test_create_error_names_the_field(gl):
+    with pytest.raises(PflipError) as e:
+        pflip.Simulation(grid_size=(1, 16, 16))
+    assert e.value.code == Result.ERROR_INVALID_ARGUMENT and "grid_size" in e.value.message
+
+
+def test_unknown_quality_raises():
+    with pytest.raises(PflipError) as e:
+        pflip.SimParams.quality(99)
+    assert e.value.code == Result.ERROR_INVALID_ARGUMENT
+
+
+def test_quality_presets_round_trip(sim):
+    for q in pflip.Quality:
+        sim.set_quality(q)
+        want = pflip.SimParams.quality(q)
+        want.gravity = sim.params.gravity
+        assert bytes(sim.params) == bytes(want), q
+
+
+def test_added_particles_read_back_exactly(sim):
+    rng = np.random.default_rng(3)
+    xyz = rng.uniform(0.1, 0.9, (100, 3)).astype(np.float32)
+    vel = rng.uniform(-1, 1, (100, 3)).astype(np.float32)
+    sim.add_particles(xyz, vel)
+    got_xyz, got_vel = sim.read_particles()
+    np.testing.assert_array_equal(got_xyz, xyz)
+    np.testing.assert_array_equal(got_vel, vel)
+    part, none = sim.read_particles(first=10, count=5, velocities=False)
+    np.testing.assert_array_equal(part, xyz[10:15])
+    assert none is None
+    with pytest.raises(ValueError):
+        sim.add_particles(xyz[:, :2])
+
+
+def test_push_moves_only_particles_within_its_radius(sim):
+    p = sim.params
+    p.gravity = (0.0, 0.0, 0.0)
+    sim.params = p
+    sim.fill_box((0.0, 0.0, 0.0), (1.0, 0.5, 1.0))
+    center, radius = np.array([0.5, 0.25, 0.5]), 0.2
+    sim.push(center, radius, (1.0, 0.0, 0.0))
+    xyz, vel = sim.read_particles()
+    d = np.linalg.norm(xyz - center, axis=1)
+    assert vel[d < radius / 2, 0].min() > 0.0
+    assert np.abs(vel[d > radius * 1.01]).max() == 0.0
+
+
+def test_closed_simulation_refuses_calls(gl):
+    s = pflip.Simulation(grid_size=(8, 8, 8))
+    s.close()
+    s.close()  # idempotent, as pf_destroy(NULL) is
+    assert s.closed
+    with pytest.raises(PflipError) as e:
+        s.step()
+    assert e.value.code == Result.ERROR_INVALID_STATE
+
+
+def test_gl_buffers_name_real_buffers(sim, gl):
+    sim.fill_box((0.0, 0.0, 0.0), (0.5, 0.5, 0.5))
+    b = sim.gl_buffers()
+    assert b.count == sim.particle_count and b.stride == 16
+    assert b.positions != 0 and b.velocities != 0 and b.positions != b.velocities
+
+
+def test_logger_callback_receives_errors(gl):
+    seen = []
+    with pflip.Simulation(grid_size=(8, 8, 8), log=lambda *m: seen.append(m)) as s:
+        with pytest.raises(PflipError):
+            s.step(2.0)
+    assert any(level == pflip.LogLevel.ERROR and code == Result.ERROR_INVALID_ARGUMENT for level, code, _ in seen)

@@ -1,0 +1,101 @@
+"""The ctypes mirrors in pflip._types agree with pf.h as the C compiler sees it.
+
+A C program generated from the ctypes definitions prints sizeof and offsetof of every struct and
+field and the value of every enumerator; a struct that grew in pf.h (a field appended) changes its
+sizeof, a retyped field its size, and an enumerator pf.h gained but Python lacks is found by
+scanning the header. Needs a C compiler ($CC, else cc) and PFLIP_INCLUDE_DIRS.
+"""
+import ctypes
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+
+import pytest
+
+from pflip import _types as t
+
+
+def include_dirs():
+    env = os.environ.get("PFLIP_INCLUDE_DIRS")
+    if env:
+        return [d for d in env.split(os.pathsep) if d]
+    root = pathlib.Path(__file__).resolve().parents[2]
+    return [str(root / "include"), str(root / "build" / "include")]
+
+
+def header_text():
+    for d in include_dirs():
+        p = pathlib.Path(d) / "pf" / "pf.h"
+        if p.exists():
+            return p.read_text()
+    pytest.fail(f"pf/pf.h not found in {include_dirs()}")
+
+
+def c_program():
+    lines = ["#include <pf/pf.h>", "#include <stdio.h>", "#include <stddef.h>", "int main(void) {"]
+    for cls, c_name in t.C_NAMES.items():
+        lines.append(f'  printf("size {c_name} %zu\\n", sizeof({c_name}));')
+        for field, *_ in cls._fields_:
+            lines.append(f'  printf("field {c_name}.{field} %zu %zu\\n", offsetof({c_name}, {field}), '
+                         f"sizeof((({c_name}*)0)->{field}));")
+    for enum, prefix in t.C_ENUMS.items():
+        for member in enum:
+            lines.append(f'  printf("value {prefix}{member.name} %lld\\n", (long long)({prefix}{member.name}));')
+    for name in t.C_CONSTANTS:
+        lines.append(f'  printf("value {name} %lld\\n", (long long)({name}));')
+    lines += ['  printf("size enum %zu\\n", sizeof(pf_result));', "  return 0;", "}"]
+    return "\n".join(lines) + "\n"
+
+
+@pytest.fixture(scope="module")
+def c_layout(tmp_path_factory):
+    cc = os.environ.get("CC") or shutil.which("cc") or shutil.which("gcc")
+    assert cc, "no C compiler: set CC"
+    d = tmp_path_factory.mktemp("layout")
+    src, exe = d / "layout.c", d / "layout"
+    src.write_text(c_program())
+    cmd = [cc, "-std=c99", str(src), "-o", str(exe)] + [f"-I{i}" for i in include_dirs()]
+    build = subprocess.run(cmd, capture_output=True, text=True)
+    assert build.returncode == 0, f"a field or enumerator named in pflip._types is not in pf.h:\n{build.stderr}"
+    out = subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout
+    layout = {}
+    for line in out.splitlines():
+        kind, name, *numbers = line.split()
+        layout[(kind, name)] = tuple(int(n) for n in numbers)
+    return layout
+
+
+@pytest.mark.parametrize("cls", list(t.C_NAMES), ids=lambda c: t.C_NAMES[c])
+def test_struct_matches_c(c_layout, cls):
+    c_name = t.C_NAMES[cls]
+    for field, ctype in cls._fields_:
+        offset, size = c_layout[("field", f"{c_name}.{field}")]
+        assert (getattr(cls, field).offset, ctypes.sizeof(ctype)) == (offset, size), f"{c_name}.{field}"
+    assert ctypes.sizeof(cls) == c_layout[("size", c_name)][0], (
+        f"sizeof({c_name}) differs: a field was added to pf.h and not to pflip/_types.py")
+
+
+def test_enum_values_match_c(c_layout):
+    assert ctypes.sizeof(t.c_enum) == c_layout[("size", "enum")][0]
+    for enum, prefix in t.C_ENUMS.items():
+        for member in enum:
+            assert c_layout[("value", prefix + member.name)][0] == member.value, prefix + member.name
+    for name, value in t.C_CONSTANTS.items():
+        assert c_layout[("value", name)][0] == value, name
+
+
+def test_every_enumerator_of_the_header_is_mirrored():
+    # Enumerators are lines "PF_NAME = value" in pf.h; COUNT and FORCE32 are sizes, not values.
+    names = set(re.findall(r"^\s*(PF_[A-Z0-9_]+)\s*=", header_text(), re.M))
+    assert len(names) > 50, "the enumerator pattern no longer matches pf.h"
+    mirrored = {prefix + m.name for enum, prefix in t.C_ENUMS.items() for m in enum} | set(t.C_CONSTANTS)
+    missing = sorted(n for n in names - mirrored if not n.endswith(("_FORCE32", "_COUNT")))
+    assert not missing, f"pf.h enumerators missing from pflip/_types.py: {missing}"
+
+
+def test_every_struct_of_the_header_is_mirrored():
+    structs = set(re.findall(r"^typedef struct (pf_[a-z0-9_]+) \{", header_text(), re.M))
+    assert structs, "the struct pattern no longer matches pf.h"
+    assert structs == set(t.C_NAMES.values())
