@@ -337,6 +337,8 @@ void Simulation::run_g2p_and_advect() {
 
 uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     poll_status();
+    if (clamped) *clamped = false;
+    if (particle_count_ == 0) return 1;  // nothing moves: one substep keeps the grid state current
     float v_max = gpu_max_speed_;
     if (added_at_step_ > status_step_) v_max = std::max(v_max, added_speed_);
     const float* g = desc_.params.gravity;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "api/handle.h"
 
@@ -126,6 +127,8 @@ void Stability::expect_usable(pf_sim* sim, const pf_sim_desc& d, const std::stri
     ASSERT_EQ(pf_step(sim, 1.0f / 60.0f), PF_OK) << when;
     check(sim, d, expected, when + ", then used again");
 }
+
+bool long_mode() { return std::getenv("PF_STABILITY_LONG") != nullptr; }
 
 std::string preset_name(const ::testing::TestParamInfo<pf_quality>& info) {
     switch (info.param) {
