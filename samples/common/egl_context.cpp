@@ -143,6 +143,11 @@ void EglContext::make_current() {
         throw Error("eglMakeCurrent failed: " + egl_err());
 }
 
+void EglContext::release_current() {
+    if (!eglMakeCurrent(static_cast<EGLDisplay>(display_), EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT))
+        throw Error("eglMakeCurrent (release) failed: " + egl_err());
+}
+
 bool EglContext::try_device(const Options& o, std::string& log) {
     const char* cext = client_extensions();
     const bool enumerate = has_ext(cext, "EGL_EXT_device_base") || has_ext(cext, "EGL_EXT_device_enumeration");

@@ -55,6 +55,8 @@ public:
 
     /// Make the context current again on this thread (it already is after construction).
     void make_current();
+    /// Leave this thread with no current context (make_current restores it).
+    void release_current();
 
 private:
     bool try_device(const Options& o, std::string& log);

@@ -404,6 +404,23 @@ pf_gl_proc gl33_loader(const char* name) {
     return get_proc(name);
 }
 
+// An engine calling before its context is current (or from another thread): a clear error, not
+// a crash, and the context works once it is current.
+TEST_F(CreateValidation, NoCurrentContextIsUnsupported) {
+    const pf_sim_desc d = test_desc(8, 8, 8);
+    release_context();
+    pf_sim* s = nullptr;
+    clear_log();
+    const pf_result r = pf_create(&d, &s);
+    ASSERT_TRUE(ensure_context());
+    EXPECT_EQ(r, PF_ERROR_GL_UNSUPPORTED);
+    EXPECT_EQ(s, nullptr);
+    EXPECT_NE(std::string(last_log()).find("current"), std::string::npos) << last_log();
+    SimPtr ok = create(d);
+    ASSERT_TRUE(ok);
+    EXPECT_EQ(pf_step(ok.get(), kDt), PF_OK);
+}
+
 TEST_F(CreateValidation, NoGlAtAllIsUnsupported) {
     pf_sim_desc d = test_desc(8, 8, 8);
     d.gl_get_proc_address = null_loader;

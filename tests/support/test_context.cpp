@@ -31,10 +31,19 @@ std::unique_ptr<pfs::EglContext> make_context() {
 }
 }  // namespace
 
-bool ensure_context() {
+pfs::EglContext* the_context() {
     static const std::unique_ptr<pfs::EglContext> ctx = make_context();
+    return ctx.get();
+}
+
+bool ensure_context() {
+    pfs::EglContext* ctx = the_context();
     if (ctx) ctx->make_current();
     return ctx != nullptr;
+}
+
+void release_context() {
+    if (pfs::EglContext* ctx = the_context()) ctx->release_current();
 }
 
 pf_gl_proc get_proc(const char* name) { return pfs::get_proc(name); }

@@ -10,6 +10,8 @@ namespace pf::test {
 
 // Makes the shared test context current (creating it on first use); false if impossible.
 bool ensure_context();
+// Leaves the thread with no current context (ensure_context makes it current again).
+void release_context();
 // eglGetProcAddress, as an engine would hand it to pf_create.
 pf_gl_proc get_proc(const char* name);
 // pf_default_sim_desc() with the test loader and a logger that records the last message.
