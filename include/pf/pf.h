@@ -185,7 +185,7 @@ typedef struct pf_sim_desc {
     float origin[3];              /**< world position of the grid's minimum corner; the whole domain must lie
                                        within 2^16 cells of the world origin (float positions); default 0 */
     uint32_t max_particles;       /**< particle capacity, 1..2^28; default 262144 */
-    float max_speed;              /**< speed bound in m/s (particles are clamped to it; sizes the
+    float max_speed;              /**< speed bound in m/s, (0, 1e4] (particles are clamped to it; sizes the
                                        fixed-point P2G range); 0 = default 100 */
     float density;                /**< liquid density in kg/m^3 (pressure units); 0 = default 1000 */
     uint32_t fill_particles_per_cell; /**< pf_fill_box density: 1, 8, 27 or 64; 0 = default 8 */

@@ -105,7 +105,9 @@ pf_result validate_desc(const pf_sim_desc& d, const Log& log) {
     }
     if (d.max_particles < 1 || d.max_particles > (1u << 28))
         return bad("desc.max_particles must be in [1, 2^28], got " + std::to_string(d.max_particles));
-    if (!(std::isfinite(d.max_speed) && d.max_speed > 0.0f)) return bad("desc.max_speed must be finite and > 0, got " + str(d.max_speed));
+    // The fixed-point P2G resolves max_speed / 2^20 per full-weight particle: above 1e4 m/s a
+    // particle's velocity would be rounded by more than 1 cm/s.
+    if (!(d.max_speed > 0.0f && d.max_speed <= 1e4f)) return bad("desc.max_speed must be in (0, 1e4] m/s, got " + str(d.max_speed));
     if (!(std::isfinite(d.density) && d.density > 0.0f)) return bad("desc.density must be finite and > 0, got " + str(d.density));
     const uint32_t ppc = d.fill_particles_per_cell;
     if (ppc != 1 && ppc != 8 && ppc != 27 && ppc != 64)

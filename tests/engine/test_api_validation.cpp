@@ -301,6 +301,8 @@ TEST_F(CreateValidation, RejectsBadDescFields) {
         {"max_speed -1", "max_speed", [](pf_sim_desc& d) { d.max_speed = -1.0f; }},
         {"max_speed NaN", "max_speed", [](pf_sim_desc& d) { d.max_speed = kNaN; }},
         {"max_speed +Inf", "max_speed", [](pf_sim_desc& d) { d.max_speed = kInf; }},
+        {"max_speed 1e38", "max_speed", [](pf_sim_desc& d) { d.max_speed = 1e38f; }},
+        {"max_speed 10001", "max_speed", [](pf_sim_desc& d) { d.max_speed = 10001.0f; }},
         {"density -1000", "density", [](pf_sim_desc& d) { d.density = -1000.0f; }},
         {"density NaN", "density", [](pf_sim_desc& d) { d.density = kNaN; }},
         {"density +Inf", "density", [](pf_sim_desc& d) { d.density = kInf; }},
@@ -335,6 +337,7 @@ TEST_F(CreateValidation, RejectsBadParamsFields) {
 TEST_F(CreateValidation, AcceptsBoundaryValues) {
     pf_sim_desc hi = test_desc(1024, 2, 2);
     hi.max_particles = 1;
+    hi.max_speed = 1e4f;
     hi.fill_particles_per_cell = 64;
     hi.fill_jitter = 1.0f;
     hi.params.flip_ratio = 1.0f;

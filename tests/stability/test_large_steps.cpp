@@ -12,9 +12,11 @@ namespace {
 
 class LargeSteps : public Stability {
 protected:
-    // A dam break: a 0.6 x 0.6 x 0.8 m block in a 1.6 x 0.8 x 0.8 m tank of 0.1 m cells.
-    void dam_break(float dt, int frames) {
-        const pf_sim_desc d = desc(16, 8, 8, 0.1f);
+    // A dam break: a 0.6 x 0.6 x 0.8 m block in a 1.6 x 0.8 x 0.8 m tank of 0.1 m cells, with
+    // the default cap of 8 substeps (max_substeps 0) or another.
+    void dam_break(float dt, int frames, uint32_t max_substeps = 0) {
+        pf_sim_desc d = desc(16, 8, 8, 0.1f);
+        if (max_substeps) d.params.max_substeps = max_substeps;
         SimPtr sim = create(d);
         ASSERT_TRUE(sim);
         const float lo[3] = {0, 0, 0}, hi[3] = {0.6f, 0.6f, 0.8f};
@@ -40,8 +42,15 @@ protected:
         // lose it; the projection never adds energy, so any growth is the integrator's error.
         // Bound: 1% of the start (measured growth is in the results table).
         EXPECT_LT(worst_energy, 1.01);
-        EXPECT_NE(st.flags & PF_FLAG_SUBSTEPS_CLAMPED, 0u) << "CFL wanted more than 8 substeps at dt " << dt;
-        EXPECT_EQ(log_.warnings_with("PF_FLAG_SUBSTEPS_CLAMPED"), 1u) << "one warning, not one per frame";
+        if (max_substeps) {
+            // 64 substeps: the volume loss is within the limit. (CFL still asks for more — its
+            // estimate adds a whole frame's gravity, 9.81 m/s at 1 s frames, to the fastest
+            // particle — so the clamp flag may stay raised.)
+            EXPECT_GT(drift, -d.params.volume_loss_limit);
+        } else {
+            EXPECT_NE(st.flags & PF_FLAG_SUBSTEPS_CLAMPED, 0u) << "CFL wanted more than 8 substeps at dt " << dt;
+            EXPECT_EQ(log_.warnings_with("PF_FLAG_SUBSTEPS_CLAMPED"), 1u) << "one warning, not one per frame";
+        }
         // Either the liquid kept its volume or the library said it did not.
         if (drift < -d.params.volume_loss_limit) {
             EXPECT_NE(st.flags & PF_FLAG_VOLUME_LOST, 0u) << "lost " << -drift << " of the volume silently";
@@ -53,6 +62,8 @@ protected:
 
 TEST_P(LargeSteps, DamBreakAtHalfSecondFrames) { dam_break(0.5f, 10); }
 TEST_P(LargeSteps, DamBreakAtOneSecondFrames) { dam_break(1.0f, 5); }
+// The remedy: the highest cap (64 substeps) at the same 1 s frames keeps the volume.
+TEST_P(LargeSteps, DamBreakAtOneSecondFramesWithEnoughSubsteps) { dam_break(1.0f, 5, 64); }
 
 // Particles thrown at 40 m/s (max_speed 100) across 0.1 m cells with two substeps per 1/30 s
 // frame: each substep crosses 6.7 cells, far above CFL 1. No gravity, so nothing adds energy.
