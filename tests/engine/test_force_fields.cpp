@@ -63,10 +63,13 @@ TEST_F(ForceFields, DragRelaxesTowardsTheWindVelocityExponentially) {
         t += kFrame;
     }
     const ParticleState p = read_all(sim.get());
+    // Bound 5e-3 m/s: the jump a lone particle's velocity takes where it crosses a cell face,
+    // with or without a field (see above; measured on the H100: 2.6e-3 m/s in y, where the
+    // wind does not act at all).
     const double decay = std::exp(-4.0 * t);
-    EXPECT_NEAR(p.vel[0], 1.5 + (-0.5 - 1.5) * decay, 2e-3);
-    EXPECT_NEAR(p.vel[1], 0.0, 2e-3);
-    EXPECT_NEAR(p.vel[2], 0.2 * decay, 2e-3);
+    EXPECT_NEAR(p.vel[0], 1.5 + (-0.5 - 1.5) * decay, 5e-3);
+    EXPECT_NEAR(p.vel[1], 0.0, 5e-3);
+    EXPECT_NEAR(p.vel[2], 0.2 * decay, 5e-3);
 }
 
 struct Blob {
