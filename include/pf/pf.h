@@ -234,7 +234,8 @@ typedef enum pf_render_pass {
 
 /** Bits of pf_stats.flags: conditions detected on the GPU (sticky until pf_clear_flags). */
 enum {
-    PF_FLAG_P2G_OVERFLOW = 1u << 0,    /**< a fixed-point accumulator would have overflowed */
+    PF_FLAG_P2G_OVERFLOW = 1u << 0,    /**< a fixed-point accumulator overflowed (that step's velocity there is
+                                            wrong); the range is widened for later steps (logged) */
     PF_FLAG_NONFINITE = 1u << 1,       /**< a non-finite velocity was found and zeroed */
     PF_FLAG_SPEED_CLAMPED = 1u << 2,   /**< a particle exceeded max_speed and was clamped */
     PF_FLAG_SUBSTEPS_CLAMPED = 1u << 3, /**< CFL wanted more than max_substeps: particles moved more than

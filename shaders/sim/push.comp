@@ -14,8 +14,10 @@ layout(location = PF_LOC_PUSH_COUNT) uniform uint u_count;
 void main() {
     uint i = flat_id();
     if (i >= u_count) return;
-    vec3 offset = pos[i].xyz - u_center_radius.xyz;
-    float q = dot(offset, offset) / (u_center_radius.w * u_center_radius.w);
+    // (|offset| / r)^2 without squaring either first: a centre or radius near float range would
+    // make both squares +Inf and q NaN.
+    float q = robust_length(pos[i].xyz - u_center_radius.xyz) / u_center_radius.w;
+    q *= q;
     if (q >= 1.0) return;
     float falloff = (1.0 - q) * (1.0 - q);
     vec3 v = vel[i].xyz + falloff * u_dv_max_speed.xyz;

@@ -67,7 +67,7 @@ pf_sim_params pf_default_sim_params(void) {
 }
 
 pf_result pf_quality_params(pf_quality quality, pf_sim_params* out) {
-    if (!out || uint32_t(quality) >= PF_QUALITY_COUNT) {
+    if (!out || pf::enum_bits(quality) >= PF_QUALITY_COUNT) {
         return kSilent.error(PF_ERROR_INVALID_ARGUMENT, "pf_quality_params: unknown quality or NULL out");
     }
     pf_sim_params p = pf_default_sim_params();

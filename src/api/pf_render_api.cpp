@@ -8,9 +8,11 @@
 #include <type_traits>
 
 #include "api/handle.h"
+#include "api/validate.h"
 #include "pf/pf.h"
 
 namespace {
+using pf::enum_bits;
 
 using pf::guarded;
 using pf::live;
@@ -70,16 +72,16 @@ struct Validator {
             return bad("camera->near_plane must be finite and > 0, got " + str(c.near_plane));
         if (!(std::isfinite(c.far_plane) && c.far_plane > c.near_plane))
             return bad("camera->far_plane must be finite and > near_plane, got " + str(c.far_plane));
-        if (c.depth_convention < PF_DEPTH_STANDARD || c.depth_convention > PF_DEPTH_REVERSED_Z)
-            return bad("camera->depth_convention is not a pf_depth_convention (" + std::to_string(int(c.depth_convention)) + ")");
+        if (enum_bits(c.depth_convention) > PF_DEPTH_REVERSED_Z)
+            return bad("camera->depth_convention is not a pf_depth_convention (" + std::to_string(int32_t(enum_bits(c.depth_convention))) + ")");
         return PF_OK;
     }
 
     pf_result ssf(const pf_ssf_params& p) const {
         if (!(std::isfinite(p.particle_radius) && p.particle_radius > 0.0f))
             return bad("params->particle_radius must be finite and >= 0 (0 = default), got " + str(p.particle_radius));
-        if (p.filter < PF_SSF_FILTER_BILATERAL || p.filter > PF_SSF_FILTER_NONE)
-            return bad("params->filter is not a pf_ssf_filter (" + std::to_string(int(p.filter)) + ")");
+        if (enum_bits(p.filter) > PF_SSF_FILTER_NONE)
+            return bad("params->filter is not a pf_ssf_filter (" + std::to_string(int32_t(enum_bits(p.filter))) + ")");
         if (p.filter_radius < 1 || p.filter_radius > 64)
             return bad("params->filter_radius must be in [1, 64] (0 = default), got " + std::to_string(p.filter_radius));
         if (p.filter_iterations < 1 || p.filter_iterations > 16)
@@ -101,16 +103,16 @@ struct Validator {
         const float* l = p.light_direction;
         if (!finite_n(l, 3) || double(l[0]) * l[0] + double(l[1]) * l[1] + double(l[2]) * l[2] < 1e-12)
             return bad("params->light_direction must be finite and non-zero");
-        if (p.path != PF_SSF_PATH_COMPUTE && p.path != PF_SSF_PATH_RASTER)
-            return bad("params->path is not a pf_ssf_path (" + std::to_string(int(p.path)) + ")");
+        if (enum_bits(p.path) != PF_SSF_PATH_COMPUTE && enum_bits(p.path) != PF_SSF_PATH_RASTER)
+            return bad("params->path is not a pf_ssf_path (" + std::to_string(int32_t(enum_bits(p.path))) + ")");
         return PF_OK;
     }
 
     pf_result particles(const pf_particle_params& p) const {
         if (!(std::isfinite(p.particle_radius) && p.particle_radius > 0.0f))
             return bad("params->particle_radius must be finite and >= 0 (0 = default), got " + str(p.particle_radius));
-        if (p.color_by < PF_PARTICLE_COLOR_SPEED || p.color_by > PF_PARTICLE_COLOR_UNIFORM)
-            return bad("params->color_by is not a pf_particle_color (" + std::to_string(int(p.color_by)) + ")");
+        if (enum_bits(p.color_by) > PF_PARTICLE_COLOR_UNIFORM)
+            return bad("params->color_by is not a pf_particle_color (" + std::to_string(int32_t(enum_bits(p.color_by))) + ")");
         if (!finite_n(p.range, 2) || p.range[0] == p.range[1])
             return bad("params->range must be finite with range[0] != range[1], got [" + str(p.range[0]) + ", " +
                        str(p.range[1]) + "]");

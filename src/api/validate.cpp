@@ -57,16 +57,16 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
     if (p.max_substeps < 1 || p.max_substeps > 64)
         return bad("params.max_substeps must be in [1, 64], got " + std::to_string(p.max_substeps));
     if (p.separation > 1) return bad("params.separation must be 0 or 1, got " + std::to_string(p.separation));
-    if (uint32_t(p.pressure_solver) >= PF_PRESSURE_SOLVER_COUNT)
-        return bad("params.pressure_solver is not a pf_pressure_solver value, got " + std::to_string(int(p.pressure_solver)));
+    if (enum_bits(p.pressure_solver) >= PF_PRESSURE_SOLVER_COUNT)
+        return bad("params.pressure_solver is not a pf_pressure_solver value, got " + std::to_string(int32_t(enum_bits(p.pressure_solver))));
     if (!(p.pressure_tolerance > 0.0f && p.pressure_tolerance < 1.0f))
         return bad("params.pressure_tolerance must be in (0, 1), got " + str(p.pressure_tolerance));
     if (!(p.sor_omega > 0.0f && p.sor_omega < 2.0f)) return bad("params.sor_omega must be in (0, 2), got " + str(p.sor_omega));
-    if (uint32_t(p.p2g) >= PF_P2G_COUNT) return bad("params.p2g is not a pf_p2g value, got " + std::to_string(int(p.p2g)));
-    if (uint32_t(p.transfer) >= PF_TRANSFER_COUNT)
-        return bad("params.transfer is not a pf_transfer value, got " + std::to_string(int(p.transfer)));
-    if (uint32_t(p.advection) >= PF_ADVECTION_COUNT)
-        return bad("params.advection is not a pf_advection value, got " + std::to_string(int(p.advection)));
+    if (enum_bits(p.p2g) >= PF_P2G_COUNT) return bad("params.p2g is not a pf_p2g value, got " + std::to_string(int32_t(enum_bits(p.p2g))));
+    if (enum_bits(p.transfer) >= PF_TRANSFER_COUNT)
+        return bad("params.transfer is not a pf_transfer value, got " + std::to_string(int32_t(enum_bits(p.transfer))));
+    if (enum_bits(p.advection) >= PF_ADVECTION_COUNT)
+        return bad("params.advection is not a pf_advection value, got " + std::to_string(int32_t(enum_bits(p.advection))));
     if (!(p.volume_correction >= 0.0f && p.volume_correction <= 1.0f))
         return bad("params.volume_correction must be in [0, 1], got " + str(p.volume_correction));
     if (!(p.energy_gain_limit > 0.0f && p.energy_gain_limit <= 100.0f))
@@ -128,7 +128,7 @@ pf_result validate_features(uint32_t features, const Log& log, const char* fn) {
 
 pf_result validate_force_field(const pf_force_field& f, const Log& log, const char* fn) {
     auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
-    if (uint32_t(f.type) >= PF_FORCE_FIELD_TYPE_COUNT) return bad("unknown force field type " + std::to_string(int(f.type)));
+    if (enum_bits(f.type) >= PF_FORCE_FIELD_TYPE_COUNT) return bad("unknown force field type " + std::to_string(int32_t(enum_bits(f.type))));
     if (!finite3(f.position) || !finite3(f.vector) || !std::isfinite(f.strength) || !std::isfinite(f.radius) ||
         !std::isfinite(f.drag))
         return bad("every field of the force field must be finite");
@@ -146,7 +146,7 @@ pf_result validate_force_field(const pf_force_field& f, const Log& log, const ch
 
 pf_result validate_obstacle(const pf_obstacle& o, const Log& log, const char* fn) {
     auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
-    if (uint32_t(o.shape) >= PF_OBSTACLE_SHAPE_COUNT) return bad("unknown obstacle shape " + std::to_string(int(o.shape)));
+    if (enum_bits(o.shape) >= PF_OBSTACLE_SHAPE_COUNT) return bad("unknown obstacle shape " + std::to_string(int32_t(enum_bits(o.shape))));
     if (!finite3(o.position) || !finite3(o.half_extents) || !std::isfinite(o.rotation[3]) || !finite3(o.rotation) ||
         !std::isfinite(o.radius) || !std::isfinite(o.half_height))
         return bad("every field of the obstacle must be finite");

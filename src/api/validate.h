@@ -1,9 +1,23 @@
 // Argument checks of the C API: every rule in one place, each failure a logged message.
 #pragma once
+#include <cstdint>
+#include <cstring>
+
 #include "api/log.h"
 #include "pf/pf.h"
 
 namespace pf {
+
+// An enum field's bits as the caller stored them. A C caller may store any int in it, and
+// loading a value outside the enum's range through the C++ enum type is undefined behaviour,
+// so validation reads the bits instead (as unsigned: negative values compare as huge).
+template <typename E>
+uint32_t enum_bits(const E& e) {
+    static_assert(sizeof(E) == sizeof(uint32_t), "pf.h enums are 32-bit (FORCE32)");
+    uint32_t bits;
+    std::memcpy(&bits, &e, sizeof bits);
+    return bits;
+}
 
 // Replaces zero tuning knobs by their defaults (pf.h documents which fields take 0 = default).
 pf_sim_desc resolve_desc(const pf_sim_desc& desc);

@@ -265,9 +265,11 @@ void Renderer::dispatch_particles(GLuint program) {
     const uint32_t n = sim_.particle_count();
     gl_.UseProgram(program);
     gl_.ProgramUniform1ui(program, PF_LOC_SPLAT_COUNT, n);
-    const int64_t groups = ceil_div(int64_t(n), PF_SPLAT_WORKGROUP);
-    const int64_t gx = std::min<int64_t>(groups, 65535), gy = ceil_div(groups, gx);
-    if (n > 0) gl_.DispatchCompute(GLuint(gx), GLuint(gy), 1);
+    if (n > 0) {  // no particles: no groups (and no division by zero groups per row)
+        const int64_t groups = ceil_div(int64_t(n), PF_SPLAT_WORKGROUP);
+        const int64_t gx = std::min<int64_t>(groups, 65535), gy = ceil_div(groups, gx);
+        gl_.DispatchCompute(GLuint(gx), GLuint(gy), 1);
+    }
     gl_.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 }
 

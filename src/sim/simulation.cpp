@@ -21,8 +21,11 @@ static_assert(PF_GPU_FLAG_SPEED_CLAMPED == PF_FLAG_SPEED_CLAMPED, "flag bits sha
 namespace {
 using gl::ProgramId;
 
-// Fixed-point weight scale S_w = 2^20: 2047 full-weight particles fit a 31-bit sum.
-constexpr float kWeightScale = 1048576.0f;
+// Fixed-point weight scale S_w = 2^(20 - range shift): at 2^20, 2047 full-weight particles fit
+// a 31-bit sum. Each overflow read back widens the range by 2 bits, up to 2^10 (2M particles per
+// sample, velocity resolution max_speed / 1024 per particle).
+constexpr int kWeightScaleBits = 20;
+constexpr uint32_t kMaxP2gRangeShift = 10;
 
 struct GlFunctionLoader {
     pf_gl_get_proc_address_fn fn;
@@ -238,11 +241,12 @@ void Simulation::upload_uniforms(float dt) {
     u.dt = dt;
     u.density = desc_.density;
     u.max_speed = desc_.max_speed;
-    const float momentum_scale = kWeightScale / desc_.max_speed;  // design.md §4.2
+    const float weight_scale = std::ldexp(1.0f, kWeightScaleBits - int(p2g_range_shift_));
+    const float momentum_scale = weight_scale / desc_.max_speed;  // design.md §4.2
     u.momentum_scale = momentum_scale;
-    u.weight_scale = kWeightScale;
+    u.weight_scale = weight_scale;
     u.inv_momentum_scale = 1.0f / momentum_scale;
-    u.inv_weight_scale = 1.0f / kWeightScale;
+    u.inv_weight_scale = 1.0f / weight_scale;
     u.flip_ratio = desc_.params.flip_ratio;
     u.particle_count = particle_count_;
     u.separation = desc_.params.separation;
@@ -383,6 +387,10 @@ pf_result Simulation::step(float frame_dt) {
     if (fences_[slot]) gl_.DeleteSync(fences_[slot]);  // too old to matter: dropped
     runner_->copy(status_, readback_[slot], PF_STATUS_WORDS * 4);
     fences_[slot] = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    // Each readback carries the flags raised since the previous one (the sticky union is the
+    // host's flags_), so a readback tells which step overflowed (the P2G range widening).
+    const uint32_t no_flags = 0;
+    status_.upload(PF_STATUS_FLAGS * 4, 4, &no_flags);
     fence_step_[slot] = steps_;
     fence_solver_[slot] = desc_.params.pressure_solver;
     fence_particles_[slot] = particle_count_;
@@ -447,6 +455,17 @@ void Simulation::poll_status() const {
             readback_[s].download(0, sizeof(words), words);
         }
         if (fence_step_[s] > flags_cleared_at_step_) raise_flags(words[PF_STATUS_FLAGS]);
+        // A fixed-point sum overflowed in a step run at today's range: widen it for the steps to
+        // come (the overflowing step's result is flagged; integer sums stay deterministic).
+        if ((words[PF_STATUS_FLAGS] & PF_FLAG_P2G_OVERFLOW) && fence_step_[s] > p2g_range_changed_at_step_ &&
+            p2g_range_shift_ < kMaxP2gRangeShift) {
+            p2g_range_shift_ += 2;
+            p2g_range_changed_at_step_ = steps_;
+            log_.warning("pf_step: fixed-point particle-to-grid range widened to " +
+                         std::to_string((1u << (11 + p2g_range_shift_)) - 1) +
+                         " full-weight particles per grid sample (velocity resolution max_speed / 2^" +
+                         std::to_string(kWeightScaleBits - int(p2g_range_shift_)) + ")");
+        }
         if (fence_step_[s] > status_step_) {
             status_step_ = fence_step_[s];
             std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
@@ -581,9 +600,10 @@ void Simulation::raise_flags(uint32_t bits) const {
         const char* text;
     };
     static constexpr Text kTexts[] = {
-        {PF_FLAG_P2G_OVERFLOW, "a fixed-point particle-to-grid sum overflowed (over ~2047 particles on one grid sample): "
-                               "that sample's velocity is wrong (particles there are clamped to max_speed); "
-                               "PF_P2G_FLOAT_ATOMIC cannot overflow (PF_FLAG_P2G_OVERFLOW)"},
+        {PF_FLAG_P2G_OVERFLOW, "a fixed-point particle-to-grid sum overflowed (too many particles on one grid sample): "
+                               "that step's velocity there is wrong (particles there are clamped to max_speed) and "
+                               "the range is widened for the following steps; PF_P2G_FLOAT_ATOMIC cannot overflow "
+                               "(PF_FLAG_P2G_OVERFLOW)"},
         {PF_FLAG_NONFINITE, "a non-finite particle velocity was found and set to 0 (PF_FLAG_NONFINITE)"},
         {PF_FLAG_SPEED_CLAMPED, "a particle exceeded desc.max_speed and was slowed to it (PF_FLAG_SPEED_CLAMPED)"},
         {PF_FLAG_SUBSTEPS_CLAMPED, "the frame needs more than params.max_substeps CFL substeps: particles cross more "

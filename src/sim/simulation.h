@@ -174,6 +174,8 @@ private:
     pf_pressure_solver fence_solver_[kReadbackSlots] = {};  // the solver of each readback's step
     uint32_t fence_particles_[kReadbackSlots] = {};         // and its particle count
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
+    mutable uint32_t p2g_range_shift_ = 0;             // fixed-point scale 2^(20 - shift)...
+    mutable uint64_t p2g_range_changed_at_step_ = 0;   // ...in use from the step after this one
     // Adds PF_FLAG_* bits, logging one warning for each bit not already set.
     void raise_flags(uint32_t bits) const;
     // Accuracy metrics of the newest readback (status words PF_STATUS_DIVERGENCE_L2..).

@@ -81,6 +81,33 @@ TEST_F(Push, HugeImpulseIsClampedAlongItsDirection) {
     }
 }
 
+// A centre and radius near float range: |offset|^2 and r^2 are both +Inf in float, and their
+// ratio NaN (the API fuzzer found NaN velocities from exactly this). The falloff is computed
+// without squaring first, so particles get the impulse they should: a radius of 1e20 around a
+// centre 1e20 away covers them with falloff ~0, a radius of FLT_MAX around a centre at the
+// domain covers them fully.
+TEST_F(Push, CentreAndRadiusNearFloatRangeStayFinite) {
+    pf_sim_desc d = test_desc(8, 8, 8, 0.1f);
+    d.max_speed = 5.0f;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    const float lo[3] = {0.2f, 0.2f, 0.2f}, hi[3] = {0.4f, 0.4f, 0.4f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    const float dv[3] = {1.0f, 0.0f, 0.0f};
+    const float far[3] = {1e20f, 0.3f, 0.3f}, huge_centre[3] = {3.4e38f, 0.3f, 0.3f}, near[3] = {0.3f, 0.3f, 0.3f};
+    ASSERT_EQ(pf_push(sim.get(), far, 1e20f, dv), PF_OK);
+    ASSERT_EQ(pf_push(sim.get(), huge_centre, 3.4e38f, dv), PF_OK);
+    ParticleState p = read_all(sim.get());
+    for (size_t i = 0; i < p.count(); ++i) {
+        ASSERT_TRUE(std::isfinite(p.vel[i * 3]) && std::isfinite(p.vel[i * 3 + 1]) && std::isfinite(p.vel[i * 3 + 2]))
+            << "particle " << i;
+        ASSERT_LT(p.vel[i * 3], 1e-3) << "a sphere whose rim passes the liquid gives it (almost) nothing";
+    }
+    ASSERT_EQ(pf_push(sim.get(), near, 3.4e38f, dv), PF_OK);
+    p = read_all(sim.get());
+    for (size_t i = 0; i < p.count(); ++i) ASSERT_NEAR(p.vel[i * 3], 1.0, 2e-3) << "particle " << i;
+}
+
 // Right after a push the GPU readback does not know the new speeds yet; the substep count
 // of the next step must still honour CFL for them.
 TEST_F(Push, NextStepTakesSubstepsForThePushedSpeed) {

@@ -71,6 +71,28 @@ TEST_F(RenderSsf, LiquidExactlyWhereSpheresProjectAndNothingElseChanges) {
     }
 }
 
+// No particles at all (the API fuzzer found a division by zero here): both paths render
+// nothing and leave the engine's frame exactly as it was.
+TEST_F(RenderSsf, EmptySimulationChangesNothing) {
+    EngineTarget t(64, 48, GL_RGBA8);
+    const int vp[4] = {0, 0, 64, 48};
+    const TestCamera c = camera(vp);
+    pf_render_target target{t.fbo, t.color, t.depth, 0};
+    for (pf_ssf_path path : {PF_SSF_PATH_COMPUTE, PF_SSF_PATH_RASTER}) {
+        SCOPED_TRACE("path " + std::to_string(path));
+        t.write_color(checkerboard(t.width, t.height, 8));
+        t.write_depth(std::vector<float>(size_t(t.width) * t.height, 1.0f));
+        const std::vector<float> color0 = t.read_color(), depth0 = t.read_depth();
+        pf_ssf_params p = pf_default_ssf_params();
+        p.path = path;
+        ASSERT_EQ(pf_render_ssf(sim_.get(), &c.cam, &target, &p), PF_OK) << last_log();
+        EXPECT_EQ(t.read_color(), color0);
+        EXPECT_EQ(t.read_depth(), depth0);
+    }
+    const pf_particle_params pp = pf_default_particle_params();
+    EXPECT_EQ(pf_render_particles(sim_.get(), &c.cam, &target, &pp), PF_OK) << last_log();
+}
+
 // A slab of spheres facing the camera: `layers` deep along z, jittered by `jitter` metres.
 std::vector<float> slab(int layers, float jitter, float spacing = 0.05f) {
     std::vector<float> xyz;

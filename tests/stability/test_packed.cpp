@@ -98,9 +98,11 @@ TEST_P(Packed, ParticlesOnFacesNodesAndWalls) {
 
 // 3000 particles at half of max_speed, all on one x-face sample (x on a face, y and z at a cell
 // centre): that sample gets 3000 full weights, more than the 2^31 / 2^20 = 2047 a fixed-point
-// sum holds. The overflow is detected, flagged and logged once; the sample's sums wrap, so its
-// velocity is wrong (measured below, see docs/stability.md), but G2P's speed clamp keeps every
-// particle finite, inside and at most max_speed, and the simulation usable.
+// sum holds. The overflow is detected, flagged and logged once; the sample's sums wrap, so that
+// step's velocity there is wrong (measured below, see docs/stability.md), but G2P's speed clamp
+// keeps every particle finite, inside and at most max_speed. Once the overflow is read back,
+// the library widens the fixed-point range (by 2 bits: 8191 particles per sample), so later
+// steps sum the same pile exactly: no new overflow, and the sample holds the particles' velocity.
 TEST_P(Packed, FixedPointP2gAtItsLimit) {
     pf_sim_desc d = desc(8, 8, 8, 0.1f);
     d.max_speed = 20.0f;
@@ -135,7 +137,19 @@ TEST_P(Packed, FixedPointP2gAtItsLimit) {
     const pf_stats st = settled_stats(sim.get());
     EXPECT_NE(st.flags & PF_FLAG_P2G_OVERFLOW, 0u);
     EXPECT_EQ(log_.warnings_with("PF_FLAG_P2G_OVERFLOW"), 1u);
+    EXPECT_EQ(log_.warnings_with("range widened to 8191"), 1u);
     expect_usable(sim.get(), d, "after the overflow");
+
+    // The widened range: the same pile, added again at rest, sums without overflow.
+    ASSERT_EQ(pf_clear_particles(sim.get()), PF_OK);
+    ASSERT_EQ(pf_clear_flags(sim.get()), PF_OK);
+    ASSERT_EQ(pf_add_particles(sim.get(), pos.data(), vel.data(), n), PF_OK);
+    ASSERT_NO_FATAL_FAILURE(run(sim.get(), 1.0f / 240.0f, 1));
+    const std::vector<uint32_t> again = sim->impl->read_grid(GridBuffer::face_accum);
+    const double widened_velocity = double(int32_t(again[2 * face])) / double(int32_t(again[2 * face + 1])) * d.max_speed;
+    record("sample_velocity_widened", widened_velocity);
+    EXPECT_NEAR(widened_velocity, 10.0, 1e-3) << "the widened sums hold the particles' velocity";
+    EXPECT_EQ(settled_stats(sim.get()).flags & PF_FLAG_P2G_OVERFLOW, 0u) << "the widened range overflowed again";
 }
 
 PF_STABILITY_PRESETS(Packed);
