@@ -5,7 +5,12 @@
 # (clang, build-fuzz/). Arguments go to the first ctest run only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/build.sh
-(cd build && ctest --output-on-failure -j"$(nproc)" "$@")
-scripts/test_sanitizers.sh
-scripts/test_fuzz.sh
+stage() {  # runs one stage and says how long it took (CI time is budgeted per stage)
+  local start=$SECONDS
+  "$@"
+  echo "test.sh: stage '$*' took $((SECONDS - start)) s"
+}
+main_tree() { scripts/build.sh && (cd build && ctest --output-on-failure -j"$(nproc)" "$@"); }
+stage main_tree "$@"
+stage scripts/test_sanitizers.sh
+stage scripts/test_fuzz.sh
