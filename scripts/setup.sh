@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Installs everything pflip needs on a fresh Debian 12 machine: build tools, GL/EGL (Mesa
-# llvmpipe runs every test without a GPU), GoogleTest, glslang, GLM, stb, nlohmann-json,
-# and, pinned in a virtual environment at .venv, glad2 and the Python client's modules. Safe to run again.
+# Installs everything pflip needs on a fresh Debian 12 machine: build tools (and clang with its
+# libFuzzer runtime), GL/EGL (Mesa llvmpipe runs every test without a GPU), GoogleTest,
+# glslang, GLM, stb, nlohmann-json, and, pinned in a virtual environment at .venv, glad2 and the
+# Python client's modules. Safe to run again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -10,6 +11,7 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri mesa-utils
   libgtest-dev glslang-tools libglm-dev libstb-dev nlohmann-json3-dev libcli11-dev
   libglfw3-dev libimgui-dev xvfb xauth ffmpeg
+  clang libclang-rt-14-dev  # the libFuzzer stage of scripts/test.sh (scripts/test_fuzz.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,5 +1,6 @@
 #include "scene.h"
 
+#include "json_read.h"
 #include "util.h"
 
 #include <nlohmann/json.hpp>
@@ -17,17 +18,25 @@ using json = nlohmann::json;
 
 namespace {
 
+// Every check names the value by its JSON Pointer ("/fill/0/lo/2") and never prints a value
+// that is not a scalar: an array or object is described by its type and size only, since a
+// nested one could be arbitrarily large.
 struct Parser {
     std::string file;
 
     [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-        throw Error(file + ": " + (where.empty() ? std::string() : "'" + where + "' ") + what);
+        throw Error(file + ": " + pointer_text(where) + ": " + what);
     }
 
-    static std::string type_of(const json& j) { return j.type_name(); }
+    static std::string join(const std::string& path, const std::string& key) { return pointer_join(path, key); }
+    static std::string join(const std::string& path, size_t index) { return pointer_join(path, std::to_string(index)); }
 
-    static std::string join(const std::string& path, const std::string& key) {
-        return path.empty() ? key : path + "." + key;
+    // What a value is, for "found ...": a number as written, anything else by its type.
+    static std::string describe(const json& j) {
+        if (j.is_number()) return j.dump();  // a scalar: short, no recursion
+        if (j.is_array()) return "an array of " + std::to_string(j.size()) + " element(s)";
+        if (j.is_object()) return "an object of " + std::to_string(j.size()) + " member(s)";
+        return j.type_name();
     }
 
     void check_keys(const json& obj, const std::string& path, std::initializer_list<const char*> known) const {
@@ -46,41 +55,51 @@ struct Parser {
     }
 
     const json& object(const json& j, const std::string& path) const {
-        if (!j.is_object()) fail(path, "must be an object, found " + type_of(j));
+        if (!j.is_object()) fail(path, "must be an object, found " + describe(j));
         return j;
     }
 
+    // read_json already refused numbers beyond double range, so every number here is finite.
     double number(const json& j, const std::string& path, double lo, double hi, bool lo_open = false) const {
-        if (!j.is_number()) fail(path, "must be a number, found " + type_of(j));
+        if (!j.is_number()) fail(path, "must be a number, found " + describe(j));
         const double v = j.get<double>();
         if (!std::isfinite(v) || v < lo || v > hi || (lo_open && v == lo)) {
             std::ostringstream s;
-            s << "must be in " << (lo_open ? "(" : "[") << lo << ", " << hi << "], found " << j.dump();
+            s << "must be in " << (lo_open ? "(" : "[") << lo << ", " << hi << "], found " << describe(j);
             fail(path, s.str());
         }
         return v;
     }
 
+    // A float field: the value must survive the conversion. Beyond float range it would load
+    // as +-Inf (which the library refuses later, far from the file); a non-zero value that
+    // rounds to 0 would silently change meaning (a cell size of 1e-50 becomes 0).
     float real(const json& j, const std::string& path,
-               double lo = -std::numeric_limits<double>::max(),
-               double hi = std::numeric_limits<double>::max(), bool lo_open = false) const {
+               double lo = -std::numeric_limits<float>::max(),
+               double hi = std::numeric_limits<float>::max(), bool lo_open = false) const {
+        if (j.is_number()) {
+            const double v = j.get<double>();
+            if (std::fabs(v) > double(std::numeric_limits<float>::max()))
+                fail(path, "is beyond float range (magnitude at most 3.40282e+38), found " + describe(j));
+            if (v != 0.0 && static_cast<float>(v) == 0.0f)
+                fail(path, "is too small for a float (it would round to 0), found " + describe(j));
+        }
         return static_cast<float>(number(j, path, lo, hi, lo_open));
     }
 
     uint32_t u32(const json& j, const std::string& path, uint32_t lo, uint32_t hi) const {
         if (!j.is_number_integer() && !(j.is_number_float() && std::floor(j.get<double>()) == j.get<double>()))
-            fail(path, "must be an integer, found " + (j.is_number() ? j.dump() : type_of(j)));
+            fail(path, "must be an integer, found " + describe(j));
         const double v = j.get<double>();
         if (v < lo || v > hi)
-            fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], found " + j.dump());
+            fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], found " + describe(j));
         return static_cast<uint32_t>(v);
     }
 
     vec3f vec3(const json& j, const std::string& path) const {
-        if (!j.is_array() || j.size() != 3)
-            fail(path, "must be an array of 3 numbers, found " + (j.is_array() ? j.dump() : type_of(j)));
+        if (!j.is_array() || j.size() != 3) fail(path, "must be an array of 3 numbers, found " + describe(j));
         vec3f v{};
-        for (size_t i = 0; i < 3; ++i) v[i] = real(j[i], path + "[" + std::to_string(i) + "]");
+        for (size_t i = 0; i < 3; ++i) v[i] = real(j[i], join(path, i));
         return v;
     }
 
@@ -88,6 +107,11 @@ struct Parser {
         auto it = obj.find(key);
         if (it == obj.end()) fail(join(path, key), "is required but missing");
         return *it;
+    }
+
+    std::string string(const json& j, const std::string& path) const {
+        if (!j.is_string()) fail(path, "must be a string, found " + describe(j));
+        return j.get<std::string>();
     }
 };
 
@@ -136,16 +160,8 @@ SceneCamera Scene::default_camera() const {
 
 Scene parse_scene(const std::string& text, const std::string& path) {
     Parser p{path};
-    json root;
-    try {
-        root = json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
-    } catch (const json::parse_error& e) {
-        std::string msg = e.what();
-        const size_t close = msg.find("] ");
-        if (msg.rfind("[json.exception", 0) == 0 && close != std::string::npos) msg = msg.substr(close + 2);
-        p.fail("", "invalid JSON: " + msg);
-    }
-    p.object(root, "(top level)");
+    const json root = read_json(text, path);
+    p.object(root, "");
     p.check_keys(root, "", {"name", "description", "grid", "max_particles", "particles_per_cell",
                             "fill_jitter", "seed", "max_speed", "density", "fill", "params", "frame_dt",
                             "frames", "camera"});
@@ -160,120 +176,113 @@ Scene parse_scene(const std::string& text, const std::string& path) {
         if (base.size() > 5 && base.compare(base.size() - 5, 5, ".json") == 0) base.resize(base.size() - 5);
         s.name = base;
     }
-    if (auto it = root.find("name"); it != root.end()) {
-        if (!it->is_string()) p.fail("name", std::string("must be a string, found ") + it->type_name());
-        s.name = it->get<std::string>();
-    }
-    if (auto it = root.find("description"); it != root.end()) {
-        if (!it->is_string()) p.fail("description", std::string("must be a string, found ") + it->type_name());
-        s.description = it->get<std::string>();
-    }
+    if (auto it = root.find("name"); it != root.end()) s.name = p.string(*it, "/name");
+    if (auto it = root.find("description"); it != root.end()) s.description = p.string(*it, "/description");
 
     // grid
-    const json& grid = p.object(p.required(root, "", "grid"), "grid");
-    p.check_keys(grid, "grid", {"size", "cell_size", "origin"});
+    const json& grid = p.object(p.required(root, "", "grid"), "/grid");
+    p.check_keys(grid, "/grid", {"size", "cell_size", "origin"});
     {
-        const json& size = p.required(grid, "grid", "size");
+        const json& size = p.required(grid, "/grid", "size");
         if (!size.is_array() || size.size() != 3)
-            p.fail("grid.size", "must be an array of 3 integers, found " + (size.is_array() ? size.dump() : size.type_name()));
-        for (size_t a = 0; a < 3; ++a)
-            s.grid_size[a] = p.u32(size[a], "grid.size[" + std::to_string(a) + "]", 2, 1024);
-        s.cell_size = p.real(p.required(grid, "grid", "cell_size"), "grid.cell_size", 0.0, 1e6, true);
-        if (auto it = grid.find("origin"); it != grid.end()) s.origin = p.vec3(*it, "grid.origin");
+            p.fail("/grid/size", "must be an array of 3 integers, found " + Parser::describe(size));
+        for (size_t a = 0; a < 3; ++a) s.grid_size[a] = p.u32(size[a], Parser::join("/grid/size", a), 2, 1024);
+        s.cell_size = p.real(p.required(grid, "/grid", "cell_size"), "/grid/cell_size", 0.0, 1e6, true);
+        if (auto it = grid.find("origin"); it != grid.end()) s.origin = p.vec3(*it, "/grid/origin");
     }
 
-    s.max_particles = p.u32(p.required(root, "", "max_particles"), "max_particles", 1, 1u << 28);
+    s.max_particles = p.u32(p.required(root, "", "max_particles"), "/max_particles", 1, 1u << 28);
     if (auto it = root.find("particles_per_cell"); it != root.end()) {
-        s.particles_per_cell = p.u32(*it, "particles_per_cell", 1, 64);
+        s.particles_per_cell = p.u32(*it, "/particles_per_cell", 1, 64);
         const uint32_t ppc = s.particles_per_cell;
         if (ppc != 1 && ppc != 8 && ppc != 27 && ppc != 64)
-            p.fail("particles_per_cell", "must be 1, 8, 27 or 64, found " + std::to_string(ppc));
+            p.fail("/particles_per_cell", "must be 1, 8, 27 or 64, found " + std::to_string(ppc));
     }
     if (auto it = root.find("fill_jitter"); it != root.end()) {
-        s.fill_jitter = p.real(*it, "fill_jitter", 0.0, 1.0);
+        s.fill_jitter = p.real(*it, "/fill_jitter", 0.0, 1.0);
         s.has_fill_jitter = true;
     }
     if (auto it = root.find("seed"); it != root.end()) {
-        s.seed = p.u32(*it, "seed", 0, 0xffffffffu);
+        s.seed = p.u32(*it, "/seed", 0, 0xffffffffu);
         s.has_seed = true;
     }
     if (auto it = root.find("max_speed"); it != root.end()) {
-        s.max_speed = p.real(*it, "max_speed", 0.0, 1e6, true);
+        s.max_speed = p.real(*it, "/max_speed", 0.0, 1e6, true);
         s.has_max_speed = true;
     }
     if (auto it = root.find("density"); it != root.end()) {
-        s.density = p.real(*it, "density", 0.0, 1e7, true);
+        s.density = p.real(*it, "/density", 0.0, 1e7, true);
         s.has_density = true;
     }
 
     // fill boxes
     if (auto it = root.find("fill"); it != root.end()) {
-        if (!it->is_array()) p.fail("fill", std::string("must be an array of boxes, found ") + it->type_name());
+        if (!it->is_array()) p.fail("/fill", "must be an array of boxes, found " + Parser::describe(*it));
         for (size_t i = 0; i < it->size(); ++i) {
-            const std::string bp = "fill[" + std::to_string(i) + "]";
+            const std::string bp = Parser::join("/fill", i);
             const json& b = p.object((*it)[i], bp);
             p.check_keys(b, bp, {"lo", "hi", "velocity"});
             FillBox box;
-            box.lo = p.vec3(p.required(b, bp, "lo"), bp + ".lo");
-            box.hi = p.vec3(p.required(b, bp, "hi"), bp + ".hi");
-            if (auto v = b.find("velocity"); v != b.end()) box.velocity = p.vec3(*v, bp + ".velocity");
+            box.lo = p.vec3(p.required(b, bp, "lo"), bp + "/lo");
+            box.hi = p.vec3(p.required(b, bp, "hi"), bp + "/hi");
+            if (auto v = b.find("velocity"); v != b.end()) box.velocity = p.vec3(*v, bp + "/velocity");
             for (int a = 0; a < 3; ++a)
                 if (!(box.lo[a] < box.hi[a]))
-                    p.fail(bp, "has lo[" + std::to_string(a) + "] >= hi[" + std::to_string(a) + "]");
+                    p.fail(Parser::join(bp + "/hi", size_t(a)), "must be greater than lo[" + std::to_string(a) + "]");
             s.boxes.push_back(box);
         }
     }
 
     // params
     if (auto it = root.find("params"); it != root.end()) {
-        const json& pr = p.object(*it, "params");
-        p.check_keys(pr, "params", {"gravity", "flip_ratio", "pressure_iterations", "jacobi_omega", "cfl",
-                                    "max_substeps", "extrapolation_layers", "separation", "pressure_solver",
-                                    "pressure_tolerance", "sor_omega"});
+        const json& pr = p.object(*it, "/params");
+        p.check_keys(pr, "/params", {"gravity", "flip_ratio", "pressure_iterations", "jacobi_omega", "cfl",
+                                     "max_substeps", "extrapolation_layers", "separation", "pressure_solver",
+                                     "pressure_tolerance", "sor_omega"});
         if (auto v = pr.find("gravity"); v != pr.end()) {
-            const vec3f g = p.vec3(*v, "params.gravity");
+            const vec3f g = p.vec3(*v, "/params/gravity");
             for (int a = 0; a < 3; ++a) s.params.gravity[a] = g[a];
         }
-        if (auto v = pr.find("flip_ratio"); v != pr.end()) s.params.flip_ratio = p.real(*v, "params.flip_ratio", 0.0, 1.0);
+        if (auto v = pr.find("flip_ratio"); v != pr.end()) s.params.flip_ratio = p.real(*v, "/params/flip_ratio", 0.0, 1.0);
         if (auto v = pr.find("pressure_iterations"); v != pr.end())
-            s.params.pressure_iterations = p.u32(*v, "params.pressure_iterations", 1, 10000);
+            s.params.pressure_iterations = p.u32(*v, "/params/pressure_iterations", 1, 10000);
         if (auto v = pr.find("jacobi_omega"); v != pr.end())
-            s.params.jacobi_omega = p.real(*v, "params.jacobi_omega", 0.0, 1.0, true);
-        if (auto v = pr.find("cfl"); v != pr.end()) s.params.cfl = p.real(*v, "params.cfl", 0.0, 16.0, true);
-        if (auto v = pr.find("max_substeps"); v != pr.end()) s.params.max_substeps = p.u32(*v, "params.max_substeps", 1, 64);
+            s.params.jacobi_omega = p.real(*v, "/params/jacobi_omega", 0.0, 1.0, true);
+        if (auto v = pr.find("cfl"); v != pr.end()) s.params.cfl = p.real(*v, "/params/cfl", 0.0, 16.0, true);
+        if (auto v = pr.find("max_substeps"); v != pr.end()) s.params.max_substeps = p.u32(*v, "/params/max_substeps", 1, 64);
         if (auto v = pr.find("extrapolation_layers"); v != pr.end())
-            s.params.extrapolation_layers = p.u32(*v, "params.extrapolation_layers", 1, 16);
-        if (auto v = pr.find("separation"); v != pr.end()) s.params.separation = p.u32(*v, "params.separation", 0, 1);
+            s.params.extrapolation_layers = p.u32(*v, "/params/extrapolation_layers", 1, 16);
+        if (auto v = pr.find("separation"); v != pr.end()) s.params.separation = p.u32(*v, "/params/separation", 0, 1);
         if (auto v = pr.find("pressure_solver"); v != pr.end()) {
-            if (!v->is_string()) p.fail("params.pressure_solver", std::string("must be a string, found ") + v->type_name());
+            const std::string name = p.string(*v, "/params/pressure_solver");
             try {
-                s.params.pressure_solver = parse_solver(v->get<std::string>(), "value");
+                s.params.pressure_solver = parse_solver(name, "value");
             } catch (const Error& e) {
-                p.fail("params.pressure_solver", e.what());
+                p.fail("/params/pressure_solver", e.what());
             }
         }
         if (auto v = pr.find("pressure_tolerance"); v != pr.end())
-            s.params.pressure_tolerance = p.real(*v, "params.pressure_tolerance", 0.0, 1.0, true);
-        if (auto v = pr.find("sor_omega"); v != pr.end()) s.params.sor_omega = p.real(*v, "params.sor_omega", 0.0, 2.0, true);
+            s.params.pressure_tolerance = p.real(*v, "/params/pressure_tolerance", 0.0, 1.0, true);
+        if (auto v = pr.find("sor_omega"); v != pr.end()) s.params.sor_omega = p.real(*v, "/params/sor_omega", 0.0, 2.0, true);
     }
 
-    if (auto it = root.find("frame_dt"); it != root.end()) s.frame_dt = p.real(*it, "frame_dt", 0.0, 1.0, true);
-    if (auto it = root.find("frames"); it != root.end()) s.frames = p.u32(*it, "frames", 0, 10000000);
+    if (auto it = root.find("frame_dt"); it != root.end()) s.frame_dt = p.real(*it, "/frame_dt", 0.0, 1.0, true);
+    if (auto it = root.find("frames"); it != root.end()) s.frames = p.u32(*it, "/frames", 0, 10000000);
 
     if (auto it = root.find("camera"); it != root.end()) {
-        const json& c = p.object(*it, "camera");
-        p.check_keys(c, "camera", {"eye", "target", "fov"});
-        s.camera.eye = p.vec3(p.required(c, "camera", "eye"), "camera.eye");
-        s.camera.target = p.vec3(p.required(c, "camera", "target"), "camera.target");
-        if (auto v = c.find("fov"); v != c.end()) s.camera.fov_deg = p.real(*v, "camera.fov", 1.0, 179.0);
-        if (s.camera.eye == s.camera.target) p.fail("camera", "eye and target coincide");
+        const json& c = p.object(*it, "/camera");
+        p.check_keys(c, "/camera", {"eye", "target", "fov"});
+        s.camera.eye = p.vec3(p.required(c, "/camera", "eye"), "/camera/eye");
+        s.camera.target = p.vec3(p.required(c, "/camera", "target"), "/camera/target");
+        if (auto v = c.find("fov"); v != c.end()) s.camera.fov_deg = p.real(*v, "/camera/fov", 1.0, 179.0);
+        if (s.camera.eye == s.camera.target) p.fail("/camera/target", "coincides with /camera/eye");
         s.has_camera = true;
     }
 
     const double est = s.estimated_particles();
     if (est > double(s.max_particles) * 1.001)
-        p.fail("max_particles", "is " + std::to_string(s.max_particles) + " but the fill boxes need about " +
-                                    std::to_string(uint64_t(est)));
+        p.fail("/max_particles", "is " + std::to_string(s.max_particles) + " but the fill boxes need about " +
+                                     std::to_string(uint64_t(est)));
     return s;
 }
 
@@ -311,7 +320,7 @@ void fill_scene(pf_sim* sim, const Scene& s) {
         const pf_result r = pf_fill_box(sim, b.lo.data(), b.hi.data(), b.velocity.data());
         if (r != PF_OK) {
             std::ostringstream what;
-            what << s.path << ": pf_fill_box(fill[" << i << "] lo=(" << b.lo[0] << ", " << b.lo[1] << ", "
+            what << s.path << ": pf_fill_box(/fill/" << i << " lo=(" << b.lo[0] << ", " << b.lo[1] << ", "
                  << b.lo[2] << ") hi=(" << b.hi[0] << ", " << b.hi[1] << ", " << b.hi[2] << "))";
             check(r, what.str().c_str());
         }

@@ -71,7 +71,9 @@ struct Scene {
     SceneCamera default_camera() const;
 };
 
-/// Parses a scene file; throws pfs::Error("<path>: <what is wrong, with its JSON path>").
+/// Parses a scene file; throws pfs::Error("<path>: <JSON Pointer of the bad value>: <reason>"),
+/// e.g. "dam.json: /fill/0/velocity/2: is beyond float range ...". Floats must survive the
+/// conversion (no value loads as +-Inf or rounds to 0 unless it is 0).
 Scene load_scene(const std::string& path);
 
 /// Parses scene JSON text (path is only used in messages).

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Sanitizer stage: the library, the engine and internal GoogleTest suites and the random-API
+# fuzzer built with -fsanitize=address,undefined,float-cast-overflow into build-asan/ (samples
+# off: they are covered by the main tree and the libFuzzer stage), then every test of that
+# tree. Any sanitizer report aborts its test. Only the GL driver's own leaks are suppressed
+# (tests/sanitizers/lsan.supp says why for each line).
+#   PF_FUZZ_SECONDS=600 scripts/test_sanitizers.sh -R fuzz.api    # a longer API fuzz by hand
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cmake -S . -B build-asan -G Ninja -DPF_SANITIZE=ON -DPF_BUILD_SAMPLES=OFF \
+      -DPF_FUZZ_SECONDS="${PF_FUZZ_SECONDS:-60}" -DPython3_EXECUTABLE="$PWD/.venv/bin/python" >/dev/null
+cmake --build build-asan
+supp="$PWD/tests/sanitizers"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
+export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+cd build-asan
+ctest --output-on-failure -j"$(nproc)" "$@"

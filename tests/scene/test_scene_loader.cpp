@@ -1,0 +1,170 @@
+// The samples' scene loader (samples/common/scene.cpp) on malformed files: each one must be
+// refused with a message that names the file, the JSON Pointer of the bad value and the
+// reason, and nothing may escape as anything but pfs::Error (no bare nlohmann exception, no
+// crash on deep nesting). Also: every shipped scene loads, and the edges of float range load
+// exactly. No GL is needed: parse_scene only reads text.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "scene.h"
+#include "util.h"
+
+namespace {
+
+// The smallest valid scene; cases splice their bad value into a copy of it.
+const std::string kGrid = R"("grid": {"size": [4, 4, 4], "cell_size": 0.1})";
+const std::string kValid = "{" + kGrid + R"(, "max_particles": 1000})";
+
+std::string with(const std::string& members) { return "{" + kGrid + R"(, "max_particles": 1000, )" + members + "}"; }
+
+std::string repeat(const std::string& s, size_t n) {
+    std::string r;
+    while (n--) r += s;
+    return r;
+}
+
+std::string nested_arrays(size_t depth) { return std::string(depth, '[') + "1" + std::string(depth, ']'); }
+
+struct BadScene {
+    const char* name;
+    std::string text;
+    std::string pointer;  // JSON Pointer the message must carry
+    std::string reason;   // and a piece of the reason
+};
+
+std::vector<BadScene> bad_scenes() {
+    return {
+        {"not_an_object", "[1, 2]", "(top level)", "must be an object, found an array of 2"},
+        {"syntax_error_in_vector", R"({"grid": {"size": [4, 4, x]}})", "/grid/size/2", "invalid JSON"},
+        {"trailing_garbage", kValid + " x", "(top level)", "invalid JSON"},
+        {"unterminated", R"({"grid": {"size": [4, 4)", "/grid/size/2", "invalid JSON"},
+        {"beyond_double_cell_size", R"({"grid": {"size": [4, 4, 4], "cell_size": 1e400}})", "/grid/cell_size",
+         "beyond double range"},
+        {"beyond_double_long_integer", with(R"("seed": 1)" + std::string(400, '0')), "/seed", "beyond double range"},
+        {"beyond_double_in_velocity",
+         with(R"("fill": [{"lo": [0, 0, 0], "hi": [0.1, 0.1, 0.1], "velocity": [0, 0, -1e999]}])"),
+         "/fill/0/velocity/2", "beyond double range"},
+        {"beyond_float_velocity",
+         with(R"("fill": [{"lo": [0, 0, 0], "hi": [0.1, 0.1, 0.1], "velocity": [0, 0, 1e39]}])"),
+         "/fill/0/velocity/2", "beyond float range"},
+        {"beyond_float_gravity", with(R"("params": {"gravity": [0, 1e300, 0]})"), "/params/gravity/1",
+         "beyond float range"},
+        {"beyond_float_origin", R"({"grid": {"size": [4, 4, 4], "cell_size": 0.1, "origin": [-1e39, 0, 0]}})",
+         "/grid/origin/0", "beyond float range"},
+        {"beyond_float_camera", with(R"("camera": {"eye": [1, 2, 3], "target": [0, 0, 0], "fov": 4e38})"),
+         "/camera/fov", "beyond float range"},
+        {"underflows_float", R"({"grid": {"size": [4, 4, 4], "cell_size": 1e-50}})", "/grid/cell_size",
+         "too small for a float"},
+        {"deeply_nested_vector", with(R"("fill": [{"lo": )" + nested_arrays(200000) + "}]"),
+         // 32 levels open (the document, /fill, /fill/0, lo and 28 more); the 33rd is refused
+         "/fill/0/lo" + repeat("/0", 29),
+         "nested deeper than"},
+        {"nested_vector_within_depth", R"({"grid": {"size": [4, 4, 4], "cell_size": 0.1, "origin": [[[[1]]]]}})",
+         "/grid/origin", "must be an array of 3 numbers, found an array of 1 element(s)"},
+        {"vector_too_short", with(R"("params": {"gravity": [0, -9.81]})"), "/params/gravity",
+         "must be an array of 3 numbers, found an array of 2"},
+        {"vector_element_string", with(R"("camera": {"eye": [1, "2", 3], "target": [0, 0, 0]})"), "/camera/eye/1",
+         "must be a number, found string"},
+        {"unknown_key", with(R"("params": {"flipratio": 0.5})"), "/params/flipratio", "is not a known key"},
+        {"unknown_key_escaped", with(R"("a/b~c": 1)"), "/a~1b~0c", "is not a known key"},
+        {"missing_required", R"({"grid": {"size": [4, 4, 4]}, "max_particles": 1})", "/grid/cell_size",
+         "is required but missing"},
+        {"integer_as_string", "{" + kGrid + R"(, "max_particles": "1000"})", "/max_particles",
+         "must be an integer, found string"},
+        {"integer_fraction", with(R"("frames": 2.5)"), "/frames", "must be an integer, found 2.5"},
+        {"integer_huge", "{" + kGrid + R"(, "max_particles": 1e30})", "/max_particles", "must be in [1, 268435456]"},
+        {"grid_size_out_of_range", R"({"grid": {"size": [4, 1, 4], "cell_size": 0.1}, "max_particles": 1})",
+         "/grid/size/1", "must be in [2, 1024], found 1"},
+        {"grid_size_not_array", R"({"grid": {"size": {"x": 4}, "cell_size": 0.1}, "max_particles": 1})", "/grid/size",
+         "found an object of 1 member(s)"},
+        {"negative_cell_size", R"({"grid": {"size": [4, 4, 4], "cell_size": -0.1}, "max_particles": 1})",
+         "/grid/cell_size", "must be in (0, 1e+06], found -0.1"},
+        {"particles_per_cell", with(R"("particles_per_cell": 9)"), "/particles_per_cell", "must be 1, 8, 27 or 64"},
+        {"fill_box_inverted", with(R"("fill": [{"lo": [0, 0.2, 0], "hi": [0.1, 0.1, 0.1]}])"), "/fill/0/hi/1",
+         "must be greater than lo[1]"},
+        {"fill_not_array", with(R"("fill": {"lo": [0, 0, 0]})"), "/fill", "must be an array of boxes"},
+        {"fill_box_not_object", with(R"("fill": [[0, 0, 0]])"), "/fill/0", "must be an object"},
+        {"capacity", "{" + kGrid + R"(, "max_particles": 10, "fill": [{"lo": [0, 0, 0], "hi": [0.4, 0.4, 0.4]}]})",
+         "/max_particles", "the fill boxes need about 512"},
+        {"solver_name", with(R"("params": {"pressure_solver": "gauss"})"), "/params/pressure_solver", "gauss"},
+        {"solver_not_string", with(R"("params": {"pressure_solver": 2})"), "/params/pressure_solver",
+         "must be a string"},
+        {"name_not_string", with(R"("name": ["a"])"), "/name", "must be a string, found an array of 1"},
+        {"camera_degenerate", with(R"("camera": {"eye": [1, 1, 1], "target": [1, 1, 1]})"), "/camera/target",
+         "coincides with /camera/eye"},
+        {"frame_dt_zero", with(R"("frame_dt": 0)"), "/frame_dt", "must be in (0, 1]"},
+    };
+}
+
+// gtest prints a case by its name, not its bytes.
+void PrintTo(const BadScene& c, std::ostream* os) { *os << c.name; }
+
+class MalformedScene : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(MalformedScene, IsRefusedWithFilePathAndReason) {
+    const BadScene& c = GetParam();
+    const std::string file = std::string("malformed/") + c.name + ".json";
+    try {
+        pfs::parse_scene(c.text, file);
+        ADD_FAILURE() << "accepted";
+    } catch (const pfs::Error& e) {
+        const std::string msg = e.what();
+        EXPECT_EQ(msg.rfind(file + ": ", 0), 0u) << "does not start with the file name: " << msg;
+        EXPECT_NE(msg.find(": " + c.pointer + ": "), std::string::npos) << "no JSON path " << c.pointer << ": " << msg;
+        EXPECT_NE(msg.find(c.reason), std::string::npos) << "no reason '" << c.reason << "': " << msg;
+        // The value is never re-serialised into the message (a nested one could be huge).
+        EXPECT_LT(msg.size(), 400u) << msg;
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "escaped as a bare " << typeid(e).name() << ": " << e.what();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, MalformedScene, ::testing::ValuesIn(bad_scenes()),
+                         [](const ::testing::TestParamInfo<BadScene>& i) { return std::string(i.param.name); });
+
+TEST(SceneLoader, EveryShippedSceneLoads) {
+    size_t n = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(PF_TEST_SCENES_DIR)) {
+        if (entry.path().extension() != ".json") continue;
+        ++n;
+        EXPECT_NO_THROW({
+            const pfs::Scene s = pfs::load_scene(entry.path().string());
+            EXPECT_FALSE(s.name.empty());
+            EXPECT_FALSE(s.boxes.empty()) << entry.path();
+        }) << entry.path();
+    }
+    EXPECT_GE(n, 1u) << "no scenes in " << PF_TEST_SCENES_DIR;
+}
+
+TEST(SceneLoader, EdgesOfFloatRangeLoadExactly) {
+    // The largest float and a subnormal are representable: they load as themselves.
+    const pfs::Scene s = pfs::parse_scene(
+        R"({"grid": {"size": [4, 4, 4], "cell_size": 0.1, "origin": [3.4028234663852886e38, -3.4028234663852886e38, 1e-40]},
+            "max_particles": 1})",
+        "edges.json");
+    EXPECT_EQ(s.origin[0], std::numeric_limits<float>::max());
+    EXPECT_EQ(s.origin[1], -std::numeric_limits<float>::max());
+    EXPECT_EQ(s.origin[2], 1e-40f);
+    EXPECT_GT(s.origin[2], 0.0f);
+}
+
+TEST(SceneLoader, CommentsAndUnderscoreKeysAreAllowed) {
+    const pfs::Scene s = pfs::parse_scene("// a comment\n" + with(R"("_note": [[[1]]], "frames": 7)"), "c.json");
+    EXPECT_EQ(s.frames, 7u);
+}
+
+TEST(SceneLoader, MissingFileIsNamed) {
+    try {
+        pfs::load_scene("/nonexistent/dir/scene.json");
+        ADD_FAILURE() << "accepted";
+    } catch (const pfs::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/scene.json: cannot open"), std::string::npos) << e.what();
+    }
+}
+
+} // namespace
