@@ -81,6 +81,16 @@ _PROTOTYPES = {
     "pf_render_ssf": (t.c_enum, [_sim, _P(t.Camera), _P(t.RenderTarget), _P(t.SsfParams)]),
     "pf_render_particles": (t.c_enum, [_sim, _P(t.Camera), _P(t.RenderTarget), _P(t.ParticleParams)]),
     "pf_push": (t.c_enum, [_sim, _f3, ctypes.c_float, _f3]),
+    "pf_set_features": (t.c_enum, [_sim, ctypes.c_uint32]),
+    "pf_get_features": (t.c_enum, [_sim, _P(ctypes.c_uint32)]),
+    "pf_default_force_field": (t.ForceField, []),
+    "pf_add_force_field": (t.c_enum, [_sim, _P(t.ForceField), _P(ctypes.c_uint32)]),
+    "pf_set_force_field": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.ForceField)]),
+    "pf_remove_force_field": (t.c_enum, [_sim, ctypes.c_uint32]),
+    "pf_default_obstacle": (t.Obstacle, []),
+    "pf_add_obstacle": (t.c_enum, [_sim, _P(t.Obstacle), _P(ctypes.c_uint32)]),
+    "pf_set_obstacle": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.Obstacle)]),
+    "pf_remove_obstacle": (t.c_enum, [_sim, ctypes.c_uint32]),
 }
 
 for _name, (_res, _args) in _PROTOTYPES.items():

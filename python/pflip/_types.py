@@ -92,6 +92,30 @@ class Flag(enum.IntFlag):
     SPEED_CLAMPED = 1 << 2
     SUBSTEPS_CLAMPED = 1 << 3
     VOLUME_LOST = 1 << 4
+    ENERGY_GAINED = 1 << 5
+
+
+class Feature(enum.IntFlag):
+    """PF_FEATURE_*: effects a simulation may run (SimDesc.features, Simulation.features)."""
+    FORCE_FIELDS = 1 << 0
+    OBSTACLES = 1 << 1
+    ALL = FORCE_FIELDS | OBSTACLES
+
+
+class ForceFieldType(enum.IntEnum):
+    DIRECTIONAL = 0
+    POINT = 1
+    VORTEX = 2
+
+
+class ObstacleShape(enum.IntEnum):
+    BOX = 0
+    SPHERE = 1
+    CAPSULE = 2
+
+
+MAX_FORCE_FIELDS = 16
+MAX_OBSTACLES = 16
 
 
 class DepthConvention(enum.IntEnum):
@@ -183,6 +207,7 @@ class SimParams(_Struct):
         ("volume_correction", ctypes.c_float),
         ("p2g", c_enum),
         ("volume_loss_limit", ctypes.c_float),
+        ("energy_gain_limit", ctypes.c_float),
     ]
 
 
@@ -208,6 +233,7 @@ class SimDesc(_Struct):
         ("params", SimParams),
         ("gl_get_proc_address", GetProcAddressFn),
         ("logger", Logger),
+        ("features", ctypes.c_uint32),
     ]
 
 
@@ -240,6 +266,8 @@ class Stats(_Struct):
         ("particle_volume_drift", ctypes.c_float),
         ("solver_iterations", ctypes.c_uint32),
         ("solver_residual", ctypes.c_float),
+        ("potential_energy", ctypes.c_float),
+        ("energy_drift", ctypes.c_float),
     ]
 
 
@@ -326,6 +354,44 @@ class ParticleParams(_Struct):
     ]
 
 
+class ForceField(_Struct):
+    """pf_force_field (PF_FEATURE_FORCE_FIELDS). Start from ForceField.default(): DIRECTIONAL with
+    zero acceleration, radius 1 m. pf.h documents what each field means for each type."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_force_field()."""
+        return _lib().pf_default_force_field()
+
+    _fields_ = [
+        ("type", c_enum),
+        ("position", ctypes.c_float * 3),
+        ("vector", ctypes.c_float * 3),
+        ("strength", ctypes.c_float),
+        ("radius", ctypes.c_float),
+        ("drag", ctypes.c_float),
+    ]
+
+
+class Obstacle(_Struct):
+    """pf_obstacle (PF_FEATURE_OBSTACLES). Start from Obstacle.default(): an axis-aligned box of
+    half extents 0.1 m at the origin (radius 0.1 m). rotation is a quaternion (x, y, z, w)."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_obstacle()."""
+        return _lib().pf_default_obstacle()
+
+    _fields_ = [
+        ("shape", c_enum),
+        ("position", ctypes.c_float * 3),
+        ("rotation", ctypes.c_float * 4),
+        ("half_extents", ctypes.c_float * 3),
+        ("radius", ctypes.c_float),
+        ("half_height", ctypes.c_float),
+    ]
+
+
 # C name of each mirrored struct, for the layout test.
 C_NAMES = {
     Logger: "pf_logger",
@@ -338,6 +404,8 @@ C_NAMES = {
     RenderTarget: "pf_render_target",
     SsfParams: "pf_ssf_params",
     ParticleParams: "pf_particle_params",
+    ForceField: "pf_force_field",
+    Obstacle: "pf_obstacle",
 }
 
 # Enums mirrored above with the C prefix of their values, for the layout test (values checked too).
@@ -346,5 +414,7 @@ C_ENUMS = {
     Transfer: "PF_TRANSFER_", Advection: "PF_ADVECTION_", Quality: "PF_QUALITY_", Pass: "PF_PASS_",
     RenderPass: "PF_RENDER_PASS_", Flag: "PF_FLAG_", DepthConvention: "PF_DEPTH_",
     SsfFilter: "PF_SSF_FILTER_", SsfPath: "PF_SSF_PATH_", ParticleColor: "PF_PARTICLE_COLOR_",
+    Feature: "PF_FEATURE_", ForceFieldType: "PF_FORCE_FIELD_", ObstacleShape: "PF_OBSTACLE_",
 }
-C_CONSTANTS = {"PF_PASS_COUNT": PASS_COUNT, "PF_RENDER_PASS_COUNT": RENDER_PASS_COUNT}
+C_CONSTANTS = {"PF_PASS_COUNT": PASS_COUNT, "PF_RENDER_PASS_COUNT": RENDER_PASS_COUNT,
+               "PF_MAX_FORCE_FIELDS": MAX_FORCE_FIELDS, "PF_MAX_OBSTACLES": MAX_OBSTACLES}

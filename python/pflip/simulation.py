@@ -43,6 +43,48 @@ def _points(v, what):
     return a
 
 
+_ENUM_FIELDS = {"type": t.ForceFieldType, "shape": t.ObstacleShape}
+
+
+def _u32(value, function, what):
+    """value as a uint32 for a C argument; out of range raises as the library would (ctypes would
+    otherwise wrap it silently)."""
+    v = int(value)
+    if not 0 <= v <= 0xFFFFFFFF:
+        raise PflipError(function, t.Result.ERROR_INVALID_ARGUMENT, f"{what} {value!r} is not a uint32")
+    return ctypes.c_uint32(v)
+
+
+def _effect_struct(cls, base, fields, function):
+    """A copy of base (a cls; None: cls.default()) with the keyword fields set. Array fields take
+    sequences of the right length (ValueError otherwise); type / shape take their enum, an int or
+    the enumerator's name ("sphere"). Values are checked by the library, not here."""
+    if base is None:
+        s = cls.default()
+    elif isinstance(base, cls):
+        s = cls.from_buffer_copy(base)
+    else:
+        raise TypeError(f"{function}: expected a {cls.__name__}, got {type(base).__name__}")
+    ctypes_of = dict(cls._fields_)
+    for name, value in fields.items():
+        if name not in ctypes_of:
+            raise TypeError(f"{function}: {cls.__name__} has no field {name!r}")
+        ctype = ctypes_of[name]
+        if issubclass(ctype, ctypes.Array):
+            a = np.asarray(value, dtype=np.float32).reshape(-1)
+            if a.shape != (ctype._length_,):
+                raise ValueError(f"{name}: expected {ctype._length_} numbers, got shape {np.shape(value)}")
+            value = ctype(*a.tolist())
+        elif name in _ENUM_FIELDS and isinstance(value, str):
+            try:
+                value = _ENUM_FIELDS[name][value.upper()]
+            except KeyError:
+                names = ", ".join(m.name.lower() for m in _ENUM_FIELDS[name])
+                raise ValueError(f"{name}: unknown {value!r} (one of {names})") from None
+        setattr(s, name, value)
+    return s
+
+
 class Simulation:
     """A pflip simulation in the GL context current now (pf_create).
 
@@ -72,6 +114,8 @@ class Simulation:
         self._log_fn = t.LogFn(self._on_log)
         d.gl_get_proc_address = get_proc_address
         d.logger = t.Logger(self._log_fn, None)
+        self._force_fields = {}  # id -> ForceField, as added / last set (the C API has no getter)
+        self._obstacles = {}     # id -> Obstacle
         handle = ctypes.c_void_p()
         self._check("pf_create", lib.pf_create(ctypes.byref(d), ctypes.byref(handle)))
         self._handle = handle
@@ -215,6 +259,90 @@ class Simulation:
         out = t.GlBuffers()
         self._call("pf_get_gl_buffers", ctypes.byref(out))
         return out
+
+    # ---- effects (force fields, obstacles) -----------------------------------------------------
+    @property
+    def features(self):
+        """pf_get_features: the Feature bits on now."""
+        out = ctypes.c_uint32()
+        self._call("pf_get_features", ctypes.byref(out))
+        return t.Feature(out.value)
+
+    @features.setter
+    def features(self, value):
+        """pf_set_features: turn effects on or off (a set of Feature bits). Particles and every other
+        state are kept; unknown bits raise PflipError(ERROR_INVALID_ARGUMENT) and change nothing."""
+        self.set_features(value)
+
+    def set_features(self, features):
+        """pf_set_features (the features property's setter)."""
+        self._call("pf_set_features", _u32(features, "pf_set_features", "features"))
+
+    @property
+    def force_fields(self):
+        """{id: ForceField} of the fields added and not removed, as last added or set (copies)."""
+        return {i: t.ForceField.from_buffer_copy(f) for i, f in self._force_fields.items()}
+
+    def add_force_field(self, field=None, **fields):
+        """pf_add_force_field: field (a ForceField; default ForceField.default()) with the keyword
+        fields set, e.g. add_force_field(vector=(2, 0, 0)) for a wind of 2 m/s^2 along +x or
+        add_force_field(type="point", position=c, strength=6, radius=0.5). Returns its id. Bad values
+        raise PflipError(ERROR_INVALID_ARGUMENT), a full set (MAX_FORCE_FIELDS) ERROR_CAPACITY; on
+        any error nothing changes. Fields act while Feature.FORCE_FIELDS is on."""
+        f = _effect_struct(t.ForceField, field, fields, "pf_add_force_field")
+        out = ctypes.c_uint32()
+        self._call("pf_add_force_field", ctypes.byref(f), ctypes.byref(out))
+        self._force_fields[out.value] = f
+        return out.value
+
+    def set_force_field(self, field_id, field=None, **fields):
+        """pf_set_force_field: replace field field_id by field (default: the field as it is now) with
+        the keyword fields set, e.g. set_force_field(i, strength=3). Validated as in add_force_field;
+        an unknown id raises PflipError(ERROR_INVALID_ARGUMENT)."""
+        fid = _u32(field_id, "pf_set_force_field", "id")
+        base = self._force_fields.get(fid.value) if field is None else field
+        f = _effect_struct(t.ForceField, base, fields, "pf_set_force_field")
+        self._call("pf_set_force_field", fid, ctypes.byref(f))
+        self._force_fields[fid.value] = f
+
+    def remove_force_field(self, field_id):
+        """pf_remove_force_field; an unknown id raises PflipError(ERROR_INVALID_ARGUMENT). Ids are
+        not reused."""
+        fid = _u32(field_id, "pf_remove_force_field", "id")
+        self._call("pf_remove_force_field", fid)
+        self._force_fields.pop(fid.value, None)
+
+    @property
+    def obstacles(self):
+        """{id: Obstacle} of the obstacles added and not removed, as last added or set (copies)."""
+        return {i: t.Obstacle.from_buffer_copy(o) for i, o in self._obstacles.items()}
+
+    def add_obstacle(self, obstacle=None, **fields):
+        """pf_add_obstacle: obstacle (an Obstacle; default Obstacle.default()) with the keyword fields
+        set, e.g. add_obstacle(shape="sphere", position=(0.4, 0.3, 0.4), radius=0.1). Returns its id.
+        Bad values raise PflipError(ERROR_INVALID_ARGUMENT), a full set (MAX_OBSTACLES)
+        ERROR_CAPACITY; on any error nothing changes. Obstacles act while Feature.OBSTACLES is on."""
+        o = _effect_struct(t.Obstacle, obstacle, fields, "pf_add_obstacle")
+        out = ctypes.c_uint32()
+        self._call("pf_add_obstacle", ctypes.byref(o), ctypes.byref(out))
+        self._obstacles[out.value] = o
+        return out.value
+
+    def set_obstacle(self, obstacle_id, obstacle=None, **fields):
+        """pf_set_obstacle: replace (move, resize) obstacle obstacle_id; obstacle defaults to the
+        obstacle as it is now, e.g. set_obstacle(i, position=p). Validated as in add_obstacle."""
+        oid = _u32(obstacle_id, "pf_set_obstacle", "id")
+        base = self._obstacles.get(oid.value) if obstacle is None else obstacle
+        o = _effect_struct(t.Obstacle, base, fields, "pf_set_obstacle")
+        self._call("pf_set_obstacle", oid, ctypes.byref(o))
+        self._obstacles[oid.value] = o
+
+    def remove_obstacle(self, obstacle_id):
+        """pf_remove_obstacle; an unknown id raises PflipError(ERROR_INVALID_ARGUMENT). Ids are not
+        reused."""
+        oid = _u32(obstacle_id, "pf_remove_obstacle", "id")
+        self._call("pf_remove_obstacle", oid)
+        self._obstacles.pop(oid.value, None)
 
     # ---- rendering ------------------------------------------------------------------------------
     def render_ssf(self, camera, target, params=None):

@@ -33,6 +33,12 @@ def header_text():
     pytest.fail(f"pf/pf.h not found in {include_dirs()}")
 
 
+def members(enum):
+    """name -> member of every enumerator, aliases included (iterating an IntFlag skips multi-bit
+    members such as Feature.ALL)."""
+    return dict(enum.__members__)
+
+
 def c_program():
     lines = ["#include <pf/pf.h>", "#include <stdio.h>", "#include <stddef.h>", "int main(void) {"]
     for cls, c_name in t.C_NAMES.items():
@@ -41,8 +47,8 @@ def c_program():
             lines.append(f'  printf("field {c_name}.{field} %zu %zu\\n", offsetof({c_name}, {field}), '
                          f"sizeof((({c_name}*)0)->{field}));")
     for enum, prefix in t.C_ENUMS.items():
-        for member in enum:
-            lines.append(f'  printf("value {prefix}{member.name} %lld\\n", (long long)({prefix}{member.name}));')
+        for name in members(enum):
+            lines.append(f'  printf("value {prefix}{name} %lld\\n", (long long)({prefix}{name}));')
     for name in t.C_CONSTANTS:
         lines.append(f'  printf("value {name} %lld\\n", (long long)({name}));')
     lines += ['  printf("size enum %zu\\n", sizeof(pf_result));', "  return 0;", "}"]
@@ -80,8 +86,8 @@ def test_struct_matches_c(c_layout, cls):
 def test_enum_values_match_c(c_layout):
     assert ctypes.sizeof(t.c_enum) == c_layout[("size", "enum")][0]
     for enum, prefix in t.C_ENUMS.items():
-        for member in enum:
-            assert c_layout[("value", prefix + member.name)][0] == member.value, prefix + member.name
+        for name, member in members(enum).items():
+            assert c_layout[("value", prefix + name)][0] == member.value, prefix + name
     for name, value in t.C_CONSTANTS.items():
         assert c_layout[("value", name)][0] == value, name
 
@@ -90,9 +96,17 @@ def test_every_enumerator_of_the_header_is_mirrored():
     # Enumerators are lines "PF_NAME = value" in pf.h; COUNT and FORCE32 are sizes, not values.
     names = set(re.findall(r"^\s*(PF_[A-Z0-9_]+)\s*=", header_text(), re.M))
     assert len(names) > 50, "the enumerator pattern no longer matches pf.h"
-    mirrored = {prefix + m.name for enum, prefix in t.C_ENUMS.items() for m in enum} | set(t.C_CONSTANTS)
+    mirrored = {prefix + name for enum, prefix in t.C_ENUMS.items() for name in members(enum)} | set(t.C_CONSTANTS)
     missing = sorted(n for n in names - mirrored if not n.endswith(("_FORCE32", "_COUNT")))
     assert not missing, f"pf.h enumerators missing from pflip/_types.py: {missing}"
+
+
+def test_every_numeric_define_of_the_header_is_mirrored():
+    # Capacities such as PF_MAX_FORCE_FIELDS are "#define PF_NAME number" lines.
+    defines = set(re.findall(r"^#define\s+(PF_[A-Z0-9_]+)\s+\d+\s*$", header_text(), re.M))
+    assert {"PF_MAX_FORCE_FIELDS", "PF_MAX_OBSTACLES"} <= defines, "the define pattern no longer matches pf.h"
+    missing = sorted(defines - set(t.C_CONSTANTS))
+    assert not missing, f"pf.h constants missing from pflip/_types.py C_CONSTANTS: {missing}"
 
 
 def test_every_struct_of_the_header_is_mirrored():
