@@ -180,7 +180,7 @@ enum {
 
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
 typedef struct pf_sim_desc {
-    uint32_t grid_size[3];        /**< cells per axis, each 2..1024; default 32^3 */
+    uint32_t grid_size[3];        /**< cells per axis, each 1..1024; default 32^3 */
     float cell_size;              /**< cell edge in metres, 1e-5..1e5; default 0.05 */
     float origin[3];              /**< world position of the grid's minimum corner; the whole domain must lie
                                        within 2^16 cells of the world origin (float positions); default 0 */

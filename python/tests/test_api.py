@@ -47,7 +47,7 @@ def test_invalid_params_change_nothing(sim):
 
 def test_create_error_names_the_field(gl):
     with pytest.raises(PflipError) as e:
-        pflip.Simulation(grid_size=(1, 16, 16))
+        pflip.Simulation(grid_size=(0, 16, 16))
     assert e.value.code == Result.ERROR_INVALID_ARGUMENT and "grid_size" in e.value.message
 
 

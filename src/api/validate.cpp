@@ -83,8 +83,8 @@ pf_result validate_desc(const pf_sim_desc& d, const Log& log) {
     if (!d.gl_get_proc_address) return bad("desc.gl_get_proc_address is required (the engine's GL loader)");
     uint64_t cells = 1;
     for (int a = 0; a < 3; ++a) {
-        if (d.grid_size[a] < 2 || d.grid_size[a] > 1024)
-            return bad("desc.grid_size[" + std::to_string(a) + "] must be in [2, 1024], got " + std::to_string(d.grid_size[a]));
+        if (d.grid_size[a] < 1 || d.grid_size[a] > 1024)
+            return bad("desc.grid_size[" + std::to_string(a) + "] must be in [1, 1024], got " + std::to_string(d.grid_size[a]));
         cells *= d.grid_size[a];
     }
     if (cells > (uint64_t(1) << 26)) return bad("desc.grid_size has " + std::to_string(cells) + " cells; at most 2^26 are supported");

@@ -130,7 +130,7 @@ bool params_valid(const pf_sim_params& r) {  // r resolved
 
 bool desc_valid(const pf_sim_desc& d) {
     for (int a = 0; a < 3; ++a)
-        if (d.grid_size[a] < 2 || d.grid_size[a] > 1024) return false;
+        if (d.grid_size[a] < 1 || d.grid_size[a] > 1024) return false;
     if (uint64_t(d.grid_size[0]) * d.grid_size[1] * d.grid_size[2] > (uint64_t(1) << 26)) return false;
     const uint32_t ppc = d.fill_particles_per_cell;
     if (!(d.cell_size >= 1e-5f && d.cell_size <= 1e5f) || !finite3(d.origin)) return false;

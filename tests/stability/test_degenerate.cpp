@@ -1,7 +1,7 @@
 // Case 8 (docs/stability.md): degenerate inputs. No particles at all, a single particle, a
-// sheet one cell thick, the narrowest grid (2 x N x 2: a grid needs two cells per axis, see
-// pf_sim_desc.grid_size), and cell sizes from 1 mm to 10 m, which must behave alike in
-// dimensionless units (lengths in cells, times in sqrt(dx / g)).
+// sheet one cell thick, the narrowest grids (1 x N x 1, N x M x 1, a single cell), and cell
+// sizes from 1 mm to 10 m, which must behave alike in dimensionless units (lengths in cells,
+// times in sqrt(dx / g)).
 #include <cmath>
 
 #include "stability/stability.h"
@@ -62,14 +62,15 @@ TEST_P(Degenerate, SheetOneCellThick) {
     expect_usable(sim.get(), d, "after the sheet");
 }
 
-// The narrowest grid: a 2 x 64 x 2 shaft, half full of liquid, and a dam break in a 2-cell-wide
-// slot (16 x 8 x 2). Both stay sound; the shaft stays at rest.
+// The narrowest grids: a 1 x 64 x 1 shaft, half full of liquid, a dam break in a one-cell-wide
+// slot (16 x 8 x 1), and a single cell holding a few particles. All stay sound; the shaft and
+// the cell stay at rest.
 TEST_P(Degenerate, NarrowestGrids) {
     {
-        const pf_sim_desc d = desc(2, 64, 2, 0.1f);
+        const pf_sim_desc d = desc(1, 64, 1, 0.1f);
         SimPtr sim = create(d);
         ASSERT_TRUE(sim);
-        const float lo[3] = {0, 0, 0}, hi[3] = {0.2f, 3.2f, 0.2f};
+        const float lo[3] = {0, 0, 0}, hi[3] = {0.1f, 3.2f, 0.1f};
         ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
         const size_t n = settled_stats(sim.get()).particle_count;
         ASSERT_NO_FATAL_FAILURE(run(sim.get(), 1.0f / 60.0f, 120));
@@ -78,10 +79,10 @@ TEST_P(Degenerate, NarrowestGrids) {
         EXPECT_LT(s.max_speed, 0.05 * std::sqrt(9.81 * d.cell_size));
     }
     {
-        const pf_sim_desc d = desc(16, 8, 2, 0.1f);
+        const pf_sim_desc d = desc(16, 8, 1, 0.1f);
         SimPtr sim = create(d);
         ASSERT_TRUE(sim);
-        const float lo[3] = {0, 0, 0}, hi[3] = {0.6f, 0.6f, 0.2f};
+        const float lo[3] = {0, 0, 0}, hi[3] = {0.6f, 0.6f, 0.1f};
         ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
         const size_t n = settled_stats(sim.get()).particle_count;
         const Soundness start = check(sim.get(), d, n, "slot start");
@@ -89,6 +90,17 @@ TEST_P(Degenerate, NarrowestGrids) {
         const Soundness end = check(sim.get(), d, n, "slot");
         EXPECT_LT(end.energy.total(), start.energy.total());
         expect_usable(sim.get(), d, "after the slot");
+    }
+    {
+        const pf_sim_desc d = desc(1, 1, 1, 0.1f);
+        SimPtr sim = create(d);
+        ASSERT_TRUE(sim);
+        const float lo[3] = {0, 0, 0}, hi[3] = {0.1f, 0.05f, 0.1f};
+        ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+        const size_t n = settled_stats(sim.get()).particle_count;
+        ASSERT_NO_FATAL_FAILURE(run(sim.get(), 1.0f / 60.0f, 60));
+        const Soundness s = check(sim.get(), d, n, "one cell");
+        EXPECT_LT(s.max_speed, 0.05 * std::sqrt(9.81 * d.cell_size));
     }
 }
 

@@ -57,6 +57,18 @@ TEST_P(Ladder, ClosedFullBoxStaysAtRest) {
     EXPECT_LT(max_speed_of(read_all(sim.get())), 1e-3 * std::sqrt(9.81 * d.cell_size));
 }
 
+// A one-cell-wide shaft (1 x 16 x 1), half full, with every solver: at rest, nothing moves.
+TEST_P(Ladder, OneCellWideShaftStaysAtRest) {
+    const pf_sim_desc d = ladder_desc(1, 16, 1);
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.1f, 0.8f, 0.1f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    for (int f = 0; f < 30; ++f) ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+    expect_sound(sim.get(), d, 8 * 8, "shaft");
+    EXPECT_LT(max_speed_of(read_all(sim.get())), 1e-3 * std::sqrt(9.81 * d.cell_size));
+}
+
 // Liquid in the (-,-,-) corner and, mirrored, in the (+,-,+) corner with gravity into each.
 TEST_P(Ladder, TwoMirroredCornersAgree) {
     pf_sim_desc d = ladder_desc(6, 6, 6);
