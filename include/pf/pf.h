@@ -175,7 +175,12 @@ enum {
                                             (one grid pass per substep after gravity) */
     PF_FEATURE_OBSTACLES = 1u << 1,    /**< pf_add_obstacle: static boxes, spheres and capsules (solid
                                             cells, free-slip faces, particles pushed out after advection) */
-    PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES /**< every known feature bit */
+    PF_FEATURE_EMITTERS = 1u << 2,     /**< pf_add_emitter: boxes, spheres and discs adding particles at a rate,
+                                            on the GPU (two passes per step; the live count is kept on the GPU) */
+    PF_FEATURE_SINKS = 1u << 3,        /**< pf_add_sink: boxes and spheres removing the particles inside them,
+                                            compacted on the GPU (three passes per step) */
+    PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES | PF_FEATURE_EMITTERS |
+                     PF_FEATURE_SINKS /**< every known feature bit */
 };
 
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
@@ -243,15 +248,19 @@ enum {
     PF_FLAG_VOLUME_LOST = 1u << 4,     /**< particle_volume fell more than params.volume_loss_limit below the
                                             particles' rest volume (count / fill_particles_per_cell cells): the
                                             liquid has compressed that much */
-    PF_FLAG_ENERGY_GAINED = 1u << 5    /**< kinetic + potential energy rose more than params.energy_gain_limit
+    PF_FLAG_ENERGY_GAINED = 1u << 5,   /**< kinetic + potential energy rose more than params.energy_gain_limit
                                             above its reference (pf_stats.energy_drift) with no input: the
                                             step is numerically unsound (e.g. an unconverged pressure solve) */
+    PF_FLAG_EMITTERS_FULL = 1u << 6    /**< emitters wanted more particles than max_particles leaves room for:
+                                            emission stopped at capacity (PF_FEATURE_EMITTERS) */
 };
 /* Each flag is logged once (a warning) when it is raised, and again only after pf_clear_flags. */
 
 /** Measurements. GPU figures lag a few frames (read without stalling). */
 typedef struct pf_stats {
-    uint32_t particle_count;          /**< live particles */
+    uint32_t particle_count;          /**< live particles; with PF_FEATURE_EMITTERS or PF_FEATURE_SINKS on,
+                                           where the GPU decides the count, those at the end of step
+                                           metrics_step (read back a few steps late) */
     uint32_t max_particles;           /**< capacity */
     uint64_t steps;                   /**< pf_step calls so far */
     uint32_t substeps;                /**< substeps taken by the last pf_step */
@@ -316,8 +325,14 @@ typedef struct pf_pass_stats {
 typedef struct pf_gl_buffers {
     uint32_t positions;           /**< GL buffer: vec4 per particle, xyz = world position, w = 0 */
     uint32_t velocities;          /**< GL buffer: vec4 per particle, xyz = velocity in m/s, w = 0 */
-    uint32_t count;               /**< live particles (the first count entries) */
+    uint32_t count;               /**< live particles (the first count entries); with PF_FEATURE_EMITTERS or
+                                       PF_FEATURE_SINKS on, an upper bound: the GPU decides the live count,
+                                       draw with draw_indirect instead */
     uint32_t stride;              /**< bytes between particles: 16 */
+    uint32_t draw_indirect;       /**< GL buffer holding, at offset 0, a DrawArraysIndirectCommand
+                                       {live count, 1, 0, 0} (glDrawArraysIndirect of the particles as
+                                       points) and, at offset 16, {4, live count, 0, 0} (a 4-vertex strip
+                                       instanced once per particle); kept current on the GPU */
 } pf_gl_buffers;
 
 /** Library version, PF_VERSION of the build. */
@@ -341,7 +356,8 @@ PF_API pf_result pf_create(const pf_sim_desc* desc, pf_sim** out);
 PF_API void pf_destroy(pf_sim* sim);
 
 /** Append n particles; xyz is 3n floats (world positions inside the domain), vel 3n floats or NULL
- *  (zero). All or nothing: on any error nothing is added. */
+ *  (zero). All or nothing: on any error nothing is added. With PF_FEATURE_EMITTERS or
+ *  PF_FEATURE_SINKS on (the GPU decides the live count) this and pf_fill_box wait for the GPU. */
 PF_API pf_result pf_add_particles(pf_sim* sim, const float* xyz, const float* vel, uint32_t n);
 /** Fill the box [lo, hi] (clipped to the domain) with jittered particles, fill_particles_per_cell per
  *  cell volume, all with velocity vel (NULL: zero). All or nothing. */
@@ -360,6 +376,9 @@ PF_API pf_result pf_set_params(pf_sim* sim, const pf_sim_params* params);
 /** Copy particles [first, first+count) to host memory (3 floats each; either pointer may be NULL).
  *  Waits for the GPU: meant for tests, export and gameplay queries, not every frame. */
 PF_API pf_result pf_read_particles(pf_sim* sim, uint32_t first, uint32_t count, float* xyz, float* vel);
+/** The live particle count, exact. With PF_FEATURE_EMITTERS or PF_FEATURE_SINKS on it waits for the
+ *  GPU (pf_stats.particle_count gives it a few steps late without waiting). */
+PF_API pf_result pf_get_particle_count(pf_sim* sim, uint32_t* out);
 /** The GL buffers holding particles; valid until pf_destroy. Read them, do not resize or delete. */
 PF_API pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out);
 
@@ -386,6 +405,10 @@ PF_API pf_result pf_get_features(const pf_sim* sim, uint32_t* out);
 #define PF_MAX_FORCE_FIELDS 16
 /** Most obstacles one simulation holds. */
 #define PF_MAX_OBSTACLES 16
+/** Most emitters one simulation holds. */
+#define PF_MAX_EMITTERS 16
+/** Most sinks one simulation holds. */
+#define PF_MAX_SINKS 16
 
 /** Kinds of force field (PF_FEATURE_FORCE_FIELDS). Each adds an acceleration to the liquid's
  *  grid velocity every substep, after gravity. */
@@ -462,6 +485,88 @@ PF_API pf_result pf_add_obstacle(pf_sim* sim, const pf_obstacle* obstacle, uint3
 PF_API pf_result pf_set_obstacle(pf_sim* sim, uint32_t id, const pf_obstacle* obstacle);
 /** Removes obstacle `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
 PF_API pf_result pf_remove_obstacle(pf_sim* sim, uint32_t id);
+
+/** Shapes of emitters (PF_FEATURE_EMITTERS). */
+typedef enum pf_emitter_shape {
+    PF_EMITTER_BOX = 0,           /**< new particles anywhere in the box (half_extents along the local axes) */
+    PF_EMITTER_SPHERE = 1,        /**< anywhere in the ball of `radius` */
+    PF_EMITTER_DISC = 2,          /**< a nozzle: on the disc of `radius` facing local +y, spread along `velocity`
+                                       over the distance it covers in the frame, so a jet leaves it unbroken */
+    PF_EMITTER_SHAPE_COUNT = 3,
+    PF_EMITTER_SHAPE_FORCE32 = 0x7fffffff
+} pf_emitter_shape;
+
+/** Units of pf_emitter.rate. */
+typedef enum pf_rate_unit {
+    PF_RATE_PARTICLES_PER_SECOND = 0, /**< particles per second */
+    PF_RATE_VOLUME_PER_SECOND = 1,    /**< m^3 of liquid per second at rest density (fill_particles_per_cell
+                                           particles per cell_size^3) */
+    PF_RATE_UNIT_COUNT = 2,
+    PF_RATE_UNIT_FORCE32 = 0x7fffffff
+} pf_rate_unit;
+
+/** One emitter: each pf_step adds rate * frame_dt particles (fractions carry over to later
+ *  steps) at random points of its shape, moving at `velocity`. The new particles are written on
+ *  the GPU after the live ones, without any readback; when max_particles is reached emission
+ *  stops there and PF_FLAG_EMITTERS_FULL is raised. Start from pf_default_emitter(). */
+typedef struct pf_emitter {
+    pf_emitter_shape shape;
+    float position[3];            /**< centre, world m; the whole shape must lie inside the domain */
+    float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
+                                       (0, 0, 0, 0) means the identity */
+    float half_extents[3];        /**< BOX: half sizes in m, each > 0 */
+    float radius;                 /**< SPHERE, DISC: radius in m, > 0 */
+    float velocity[3];            /**< of the new particles, m/s; |velocity| <= desc.max_speed */
+    float rate;                   /**< >= 0 (0 pauses the emitter), in rate_unit */
+    pf_rate_unit rate_unit;
+} pf_emitter;
+
+/** Default emitter: a sphere of radius 0.1 m at the origin emitting nothing (rate 0) at rest. */
+PF_API pf_emitter pf_default_emitter(void);
+/** Adds an emitter; *out_id (may be NULL) names it for pf_set_emitter / pf_remove_emitter.
+ *  PF_ERROR_INVALID_ARGUMENT for a NULL emitter, an unknown shape or rate unit, a non-finite value,
+ *  a size <= 0, a shape reaching outside the domain, a negative rate or a velocity above
+ *  desc.max_speed; PF_ERROR_CAPACITY when PF_MAX_EMITTERS are present. Each error is logged; on any
+ *  error nothing changes. */
+PF_API pf_result pf_add_emitter(pf_sim* sim, const pf_emitter* emitter, uint32_t* out_id);
+/** Replaces emitter `id` (its carried-over fraction of a particle is kept); validated as in
+ *  pf_add_emitter, nothing changes on error. */
+PF_API pf_result pf_set_emitter(pf_sim* sim, uint32_t id, const pf_emitter* emitter);
+/** Removes emitter `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
+PF_API pf_result pf_remove_emitter(pf_sim* sim, uint32_t id);
+
+/** Shapes of sinks (PF_FEATURE_SINKS). */
+typedef enum pf_sink_shape {
+    PF_SINK_BOX = 0,              /**< half_extents along the local axes */
+    PF_SINK_SPHERE = 1,           /**< radius */
+    PF_SINK_SHAPE_COUNT = 2,
+    PF_SINK_SHAPE_FORCE32 = 0x7fffffff
+} pf_sink_shape;
+
+/** One sink (a drain): at the end of every pf_step the particles inside it are removed and the
+ *  survivors compacted on the GPU (the order of the survivors changes; none is lost or
+ *  duplicated). It may reach outside the domain (a drain cut by the floor). Start from
+ *  pf_default_sink(). */
+typedef struct pf_sink {
+    pf_sink_shape shape;
+    float position[3];            /**< centre, world m; the shape must overlap the domain */
+    float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
+                                       (0, 0, 0, 0) means the identity */
+    float half_extents[3];        /**< BOX: half sizes in m, each > 0 */
+    float radius;                 /**< SPHERE: radius in m, > 0 */
+} pf_sink;
+
+/** Default sink: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m). */
+PF_API pf_sink pf_default_sink(void);
+/** Adds a sink; *out_id (may be NULL) names it for pf_set_sink / pf_remove_sink.
+ *  PF_ERROR_INVALID_ARGUMENT for a NULL sink, an unknown shape, a non-finite value, a size <= 0 or
+ *  a shape that misses the domain; PF_ERROR_CAPACITY when PF_MAX_SINKS are present. Each error is
+ *  logged; on any error nothing changes. */
+PF_API pf_result pf_add_sink(pf_sim* sim, const pf_sink* sink, uint32_t* out_id);
+/** Replaces sink `id`; validated as in pf_add_sink, nothing changes on error. */
+PF_API pf_result pf_set_sink(pf_sim* sim, uint32_t id, const pf_sink* sink);
+/** Removes sink `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
+PF_API pf_result pf_remove_sink(pf_sim* sim, uint32_t id);
 
 /* ---- rendering into the engine's frame ----------------------------------------------------- */
 

@@ -91,6 +91,15 @@ _PROTOTYPES = {
     "pf_add_obstacle": (t.c_enum, [_sim, _P(t.Obstacle), _P(ctypes.c_uint32)]),
     "pf_set_obstacle": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.Obstacle)]),
     "pf_remove_obstacle": (t.c_enum, [_sim, ctypes.c_uint32]),
+    "pf_default_emitter": (t.Emitter, []),
+    "pf_add_emitter": (t.c_enum, [_sim, _P(t.Emitter), _P(ctypes.c_uint32)]),
+    "pf_set_emitter": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.Emitter)]),
+    "pf_remove_emitter": (t.c_enum, [_sim, ctypes.c_uint32]),
+    "pf_default_sink": (t.Sink, []),
+    "pf_add_sink": (t.c_enum, [_sim, _P(t.Sink), _P(ctypes.c_uint32)]),
+    "pf_set_sink": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.Sink)]),
+    "pf_remove_sink": (t.c_enum, [_sim, ctypes.c_uint32]),
+    "pf_get_particle_count": (t.c_enum, [_sim, _P(ctypes.c_uint32)]),
 }
 
 for _name, (_res, _args) in _PROTOTYPES.items():

@@ -93,13 +93,16 @@ class Flag(enum.IntFlag):
     SUBSTEPS_CLAMPED = 1 << 3
     VOLUME_LOST = 1 << 4
     ENERGY_GAINED = 1 << 5
+    EMITTERS_FULL = 1 << 6
 
 
 class Feature(enum.IntFlag):
     """PF_FEATURE_*: effects a simulation may run (SimDesc.features, Simulation.features)."""
     FORCE_FIELDS = 1 << 0
     OBSTACLES = 1 << 1
-    ALL = FORCE_FIELDS | OBSTACLES
+    EMITTERS = 1 << 2
+    SINKS = 1 << 3
+    ALL = FORCE_FIELDS | OBSTACLES | EMITTERS | SINKS
 
 
 class ForceFieldType(enum.IntEnum):
@@ -114,8 +117,26 @@ class ObstacleShape(enum.IntEnum):
     CAPSULE = 2
 
 
+class EmitterShape(enum.IntEnum):
+    BOX = 0
+    SPHERE = 1
+    DISC = 2
+
+
+class RateUnit(enum.IntEnum):
+    PARTICLES_PER_SECOND = 0
+    VOLUME_PER_SECOND = 1
+
+
+class SinkShape(enum.IntEnum):
+    BOX = 0
+    SPHERE = 1
+
+
 MAX_FORCE_FIELDS = 16
 MAX_OBSTACLES = 16
+MAX_EMITTERS = 16
+MAX_SINKS = 16
 
 
 class DepthConvention(enum.IntEnum):
@@ -288,6 +309,7 @@ class GlBuffers(_Struct):
         ("velocities", ctypes.c_uint32),
         ("count", ctypes.c_uint32),
         ("stride", ctypes.c_uint32),
+        ("draw_indirect", ctypes.c_uint32),
     ]
 
 
@@ -392,6 +414,45 @@ class Obstacle(_Struct):
     ]
 
 
+class Emitter(_Struct):
+    """pf_emitter (PF_FEATURE_EMITTERS). Start from Emitter.default(): a sphere of radius 0.1 m at
+    the origin emitting nothing (rate 0). rate is in rate_unit (particles or m^3 per second)."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_emitter()."""
+        return _lib().pf_default_emitter()
+
+    _fields_ = [
+        ("shape", c_enum),
+        ("position", ctypes.c_float * 3),
+        ("rotation", ctypes.c_float * 4),
+        ("half_extents", ctypes.c_float * 3),
+        ("radius", ctypes.c_float),
+        ("velocity", ctypes.c_float * 3),
+        ("rate", ctypes.c_float),
+        ("rate_unit", c_enum),
+    ]
+
+
+class Sink(_Struct):
+    """pf_sink (PF_FEATURE_SINKS). Start from Sink.default(): an axis-aligned box of half extents
+    0.1 m at the origin. Particles inside are removed at the end of every step."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_sink()."""
+        return _lib().pf_default_sink()
+
+    _fields_ = [
+        ("shape", c_enum),
+        ("position", ctypes.c_float * 3),
+        ("rotation", ctypes.c_float * 4),
+        ("half_extents", ctypes.c_float * 3),
+        ("radius", ctypes.c_float),
+    ]
+
+
 # C name of each mirrored struct, for the layout test.
 C_NAMES = {
     Logger: "pf_logger",
@@ -406,6 +467,8 @@ C_NAMES = {
     ParticleParams: "pf_particle_params",
     ForceField: "pf_force_field",
     Obstacle: "pf_obstacle",
+    Emitter: "pf_emitter",
+    Sink: "pf_sink",
 }
 
 # Enums mirrored above with the C prefix of their values, for the layout test (values checked too).
@@ -415,6 +478,8 @@ C_ENUMS = {
     RenderPass: "PF_RENDER_PASS_", Flag: "PF_FLAG_", DepthConvention: "PF_DEPTH_",
     SsfFilter: "PF_SSF_FILTER_", SsfPath: "PF_SSF_PATH_", ParticleColor: "PF_PARTICLE_COLOR_",
     Feature: "PF_FEATURE_", ForceFieldType: "PF_FORCE_FIELD_", ObstacleShape: "PF_OBSTACLE_",
+    EmitterShape: "PF_EMITTER_", RateUnit: "PF_RATE_", SinkShape: "PF_SINK_",
 }
 C_CONSTANTS = {"PF_PASS_COUNT": PASS_COUNT, "PF_RENDER_PASS_COUNT": RENDER_PASS_COUNT,
-               "PF_MAX_FORCE_FIELDS": MAX_FORCE_FIELDS, "PF_MAX_OBSTACLES": MAX_OBSTACLES}
+               "PF_MAX_FORCE_FIELDS": MAX_FORCE_FIELDS, "PF_MAX_OBSTACLES": MAX_OBSTACLES,
+               "PF_MAX_EMITTERS": MAX_EMITTERS, "PF_MAX_SINKS": MAX_SINKS}

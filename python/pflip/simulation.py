@@ -43,7 +43,13 @@ def _points(v, what):
     return a
 
 
-_ENUM_FIELDS = {"type": t.ForceFieldType, "shape": t.ObstacleShape}
+# Enum fields of each effect struct, which also take the enumerator's name ("sphere").
+_ENUM_FIELDS = {
+    t.ForceField: {"type": t.ForceFieldType},
+    t.Obstacle: {"shape": t.ObstacleShape},
+    t.Emitter: {"shape": t.EmitterShape, "rate_unit": t.RateUnit},
+    t.Sink: {"shape": t.SinkShape},
+}
 
 
 def _u32(value, function, what):
@@ -75,11 +81,11 @@ def _effect_struct(cls, base, fields, function):
             if a.shape != (ctype._length_,):
                 raise ValueError(f"{name}: expected {ctype._length_} numbers, got shape {np.shape(value)}")
             value = ctype(*a.tolist())
-        elif name in _ENUM_FIELDS and isinstance(value, str):
+        elif name in _ENUM_FIELDS[cls] and isinstance(value, str):
             try:
-                value = _ENUM_FIELDS[name][value.upper()]
+                value = _ENUM_FIELDS[cls][name][value.upper()]
             except KeyError:
-                names = ", ".join(m.name.lower() for m in _ENUM_FIELDS[name])
+                names = ", ".join(m.name.lower() for m in _ENUM_FIELDS[cls][name])
                 raise ValueError(f"{name}: unknown {value!r} (one of {names})") from None
         setattr(s, name, value)
     return s
@@ -116,6 +122,8 @@ class Simulation:
         d.logger = t.Logger(self._log_fn, None)
         self._force_fields = {}  # id -> ForceField, as added / last set (the C API has no getter)
         self._obstacles = {}     # id -> Obstacle
+        self._emitters = {}      # id -> Emitter
+        self._sinks = {}         # id -> Sink
         handle = ctypes.c_void_p()
         self._check("pf_create", lib.pf_create(ctypes.byref(d), ctypes.byref(handle)))
         self._handle = handle
@@ -203,7 +211,11 @@ class Simulation:
 
     @property
     def particle_count(self):
-        return self.stats().particle_count
+        """pf_get_particle_count: the exact live count (waits for the GPU while emitters or sinks
+        are on)."""
+        out = ctypes.c_uint32()
+        self._call("pf_get_particle_count", ctypes.byref(out))
+        return out.value
 
     def push(self, center, radius, dv):
         """pf_push: add velocity dv to the particles within radius of center (smooth fall-off)."""
@@ -343,6 +355,65 @@ class Simulation:
         oid = _u32(obstacle_id, "pf_remove_obstacle", "id")
         self._call("pf_remove_obstacle", oid)
         self._obstacles.pop(oid.value, None)
+
+    # Emitters and sinks share one implementation: (struct, C noun, host dict) per kind.
+    def _add_object(self, kind, cls, base, fields, store):
+        s = _effect_struct(cls, base, fields, f"pf_add_{kind}")
+        out = ctypes.c_uint32()
+        self._call(f"pf_add_{kind}", ctypes.byref(s), ctypes.byref(out))
+        store[out.value] = s
+        return out.value
+
+    def _set_object(self, kind, cls, object_id, base, fields, store):
+        oid = _u32(object_id, f"pf_set_{kind}", "id")
+        s = _effect_struct(cls, store.get(oid.value) if base is None else base, fields, f"pf_set_{kind}")
+        self._call(f"pf_set_{kind}", oid, ctypes.byref(s))
+        store[oid.value] = s
+
+    def _remove_object(self, kind, object_id, store):
+        oid = _u32(object_id, f"pf_remove_{kind}", "id")
+        self._call(f"pf_remove_{kind}", oid)
+        store.pop(oid.value, None)
+
+    @property
+    def emitters(self):
+        """{id: Emitter} of the emitters added and not removed, as last added or set (copies)."""
+        return {i: t.Emitter.from_buffer_copy(e) for i, e in self._emitters.items()}
+
+    def add_emitter(self, emitter=None, **fields):
+        """pf_add_emitter: emitter (an Emitter; default Emitter.default()) with the keyword fields set,
+        e.g. add_emitter(shape="disc", position=p, radius=0.05, velocity=(0, -2, 0), rate=0.001,
+        rate_unit="volume_per_second"). Returns its id. Bad values raise
+        PflipError(ERROR_INVALID_ARGUMENT), a full set ERROR_CAPACITY; on any error nothing changes.
+        Emitters act while Feature.EMITTERS is on."""
+        return self._add_object("emitter", t.Emitter, emitter, fields, self._emitters)
+
+    def set_emitter(self, emitter_id, emitter=None, **fields):
+        """pf_set_emitter: replace emitter emitter_id (default: as it is now) with the keyword fields set."""
+        self._set_object("emitter", t.Emitter, emitter_id, emitter, fields, self._emitters)
+
+    def remove_emitter(self, emitter_id):
+        """pf_remove_emitter; an unknown id raises PflipError(ERROR_INVALID_ARGUMENT)."""
+        self._remove_object("emitter", emitter_id, self._emitters)
+
+    @property
+    def sinks(self):
+        """{id: Sink} of the sinks added and not removed, as last added or set (copies)."""
+        return {i: t.Sink.from_buffer_copy(k) for i, k in self._sinks.items()}
+
+    def add_sink(self, sink=None, **fields):
+        """pf_add_sink: sink (a Sink; default Sink.default()) with the keyword fields set, e.g.
+        add_sink(position=(0.5, 0.0, 0.5), half_extents=(0.1, 0.05, 0.1)). Returns its id. Sinks
+        act while Feature.SINKS is on."""
+        return self._add_object("sink", t.Sink, sink, fields, self._sinks)
+
+    def set_sink(self, sink_id, sink=None, **fields):
+        """pf_set_sink: replace sink sink_id (default: as it is now) with the keyword fields set."""
+        self._set_object("sink", t.Sink, sink_id, sink, fields, self._sinks)
+
+    def remove_sink(self, sink_id):
+        """pf_remove_sink; an unknown id raises PflipError(ERROR_INVALID_ARGUMENT)."""
+        self._remove_object("sink", sink_id, self._sinks)
 
     # ---- rendering ------------------------------------------------------------------------------
     def render_ssf(self, camera, target, params=None):

@@ -1,5 +1,5 @@
-"""Effects through the Python client (pf_set_features, force fields, obstacles): what pf.h promises,
-measured, not recorded numbers.
+"""Effects through the Python client (pf_set_features, force fields, obstacles, emitters, sinks): what
+pf.h promises, measured, not recorded numbers.
 
 Turning effects on and off keeps every particle; a directional field accelerates a free blob at
 its acceleration; liquid poured on a sphere obstacle never ends inside it (and, as a control, does
@@ -245,14 +245,43 @@ def test_bad_obstacles_raise_and_change_nothing(sims):
     assert inside(xyz).sum() == 0
 
 
+# ---- emitters and sinks ----------------------------------------------------------------------------
+
+def test_emitter_adds_its_rate_and_a_drain_takes_every_particle(sims):
+    sim = sims(Feature.EMITTERS | Feature.SINKS)
+    eid = sim.add_emitter(shape="disc", position=(0.4, 0.6, 0.4), radius=0.05, velocity=(0.0, -1.0, 0.0),
+                          rate=600.0)  # 10 particles a frame
+    for frame in range(1, 31):
+        sim.step(DT)
+        if frame == 1:
+            xyz, vel = sim.read_particles()
+            assert len(xyz) == 10 and (vel[:, 1] < -1.0).all()  # leaving the nozzle, falling
+        if frame % 10 == 0:
+            assert sim.particle_count == 10 * frame
+    assert np.isfinite(sim.read_particles()[0]).all()
+    sim.remove_emitter(eid)
+    sim.add_sink(position=(0.4, 0.0, 0.4), half_extents=(0.4, 0.1, 0.4))  # the whole floor drains
+    for _ in range(120):
+        sim.step(DT)
+    assert sim.particle_count == 0
+    assert len(sim.read_particles()[0]) == 0
+    with pytest.raises(PflipError) as e:
+        sim.add_emitter(position=(0.4, 0.79, 0.4), radius=0.05, rate=1.0)  # pokes out of the top
+    assert e.value.code == Result.ERROR_INVALID_ARGUMENT and "outside the domain" in str(e.value)
+
+
 # ---- capacity --------------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("kind", ["force_field", "obstacle"])
+@pytest.mark.parametrize("kind", ["force_field", "obstacle", "emitter", "sink"])
 def test_capacity_gives_error_capacity_and_refused_adds_take_no_place(sims, kind):
     sim = sims(0)  # effects off: objects may still be added (and no program is built)
-    add, remove = getattr(sim, f"add_{kind}"), getattr(sim, f"remove_{kind}")
+    # The default emitter sits at the world origin, partly outside this domain: place it inside.
+    valid = dict(position=(0.4, 0.4, 0.4)) if kind == "emitter" else {}
+    add_valid, remove = getattr(sim, f"add_{kind}"), getattr(sim, f"remove_{kind}")
+    add = lambda **kw: add_valid(**{**valid, **kw})  # noqa: E731
     listing = lambda: getattr(sim, f"{kind}s")  # noqa: E731
-    most = pflip.MAX_FORCE_FIELDS if kind == "force_field" else pflip.MAX_OBSTACLES
+    most = {"force_field": pflip.MAX_FORCE_FIELDS, "obstacle": pflip.MAX_OBSTACLES,
+            "emitter": pflip.MAX_EMITTERS, "sink": pflip.MAX_SINKS}[kind]
     bad = dict(drag=-1.0) if kind == "force_field" else dict(radius=-1.0, shape="sphere")
     ids = []
     for i in range(most):

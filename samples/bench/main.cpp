@@ -12,6 +12,7 @@
 
 #include "egl_context.h"
 #include "scene.h"
+#include "scene_effects.h"
 #include "util.h"
 
 #include <nlohmann/json.hpp>
@@ -42,6 +43,7 @@ struct Options {
     int p2g = -1;               // -1: the scene's (pf_p2g otherwise)
     uint32_t max_substeps = 0; // 0: the scene's
     float frame_dt = 0;        // 0: the scene's
+    int64_t features = -1;     // -1: the scene's PF_FEATURE_* bits
     std::string json_path, csv_path;
     bool verbose = false;
     std::string command_line;
@@ -67,6 +69,9 @@ void print_usage(std::FILE* f) {
                  "  --p2g fixed|float        particle-to-grid scheme: fixed-point or float atomics\n"
                  "  --max-substeps N         override the scenes' max_substeps (1 = one substep per step)\n"
                  "  --frame-dt S             override the scenes' frame_dt (seconds per pf_step)\n"
+                 "  --features LIST          effects to run, overriding the scenes' (comma-separated\n"
+                 "                           force_fields, obstacles, emitters, sinks; or all, none);\n"
+                 "                           the scenes' objects are added either way\n"
                  "  --json PATH              write results as JSON\n"
                  "  --csv PATH               write results as CSV (one row per scene and metric)\n"
                  "  --verbose                pflip's info messages and EGL details\n"
@@ -108,6 +113,8 @@ Options parse_args(int argc, char** argv) {
             o.max_substeps = pfs::parse_u32(args.value(), "--max-substeps", 1, 64);
         } else if (a == "--frame-dt") {
             o.frame_dt = pfs::parse_float(args.value(), "--frame-dt", 1e-6f, 1.0f);
+        } else if (a == "--features") {
+            o.features = int64_t(pfs::parse_feature_list(args.value(), "--features"));
         } else if (a == "--json") {
             o.json_path = args.value();
         } else if (a == "--csv") {
@@ -189,6 +196,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     if (opt.separation >= 0) desc.params.separation = uint32_t(opt.separation);
     if (opt.p2g >= 0) desc.params.p2g = pf_p2g(opt.p2g);
     if (opt.max_substeps) desc.params.max_substeps = opt.max_substeps;
+    if (opt.features >= 0) desc.features = uint32_t(opt.features);
     r.params = desc.params;
     r.max_particles = desc.max_particles;
     r.ppc = desc.fill_particles_per_cell;
@@ -213,6 +221,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     r.create_ms = pfs::now_ms() - t0;
     t0 = pfs::now_ms();
     pfs::fill_scene(sim.get(), r.scene);
+    pfs::add_scene_effects(sim.get(), r.scene);
     glFinish();
     r.fill_ms = pfs::now_ms() - t0;
 

@@ -1,9 +1,7 @@
 #include "scene.h"
 
-#include "json_read.h"
-#include "util.h"
-
-#include <nlohmann/json.hpp>
+#include "scene_effects.h"
+#include "scene_parser.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,109 +11,6 @@
 #include <sstream>
 
 namespace pfs {
-
-using json = nlohmann::json;
-
-namespace {
-
-// Every check names the value by its JSON Pointer ("/fill/0/lo/2") and never prints a value
-// that is not a scalar: an array or object is described by its type and size only, since a
-// nested one could be arbitrarily large.
-struct Parser {
-    std::string file;
-
-    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
-        throw Error(file + ": " + pointer_text(where) + ": " + what);
-    }
-
-    static std::string join(const std::string& path, const std::string& key) { return pointer_join(path, key); }
-    static std::string join(const std::string& path, size_t index) { return pointer_join(path, std::to_string(index)); }
-
-    // What a value is, for "found ...": a number as written, anything else by its type.
-    static std::string describe(const json& j) {
-        if (j.is_number()) return j.dump();  // a scalar: short, no recursion
-        if (j.is_array()) return "an array of " + std::to_string(j.size()) + " element(s)";
-        if (j.is_object()) return "an object of " + std::to_string(j.size()) + " member(s)";
-        return j.type_name();
-    }
-
-    void check_keys(const json& obj, const std::string& path, std::initializer_list<const char*> known) const {
-        for (auto it = obj.begin(); it != obj.end(); ++it) {
-            const std::string& k = it.key();
-            if (!k.empty() && k[0] == '_') continue;
-            bool ok = false;
-            for (const char* n : known) ok = ok || k == n;
-            if (!ok) {
-                std::string list;
-                for (const char* n : known) list += std::string(list.empty() ? "" : ", ") + n;
-                fail(join(path, k), "is not a known key (known here: " + list +
-                                        "; prefix a key with '_' to make it a comment)");
-            }
-        }
-    }
-
-    const json& object(const json& j, const std::string& path) const {
-        if (!j.is_object()) fail(path, "must be an object, found " + describe(j));
-        return j;
-    }
-
-    // read_json already refused numbers beyond double range, so every number here is finite.
-    double number(const json& j, const std::string& path, double lo, double hi, bool lo_open = false) const {
-        if (!j.is_number()) fail(path, "must be a number, found " + describe(j));
-        const double v = j.get<double>();
-        if (!std::isfinite(v) || v < lo || v > hi || (lo_open && v == lo)) {
-            std::ostringstream s;
-            s << "must be in " << (lo_open ? "(" : "[") << lo << ", " << hi << "], found " << describe(j);
-            fail(path, s.str());
-        }
-        return v;
-    }
-
-    // A float field: the value must survive the conversion. Beyond float range it would load
-    // as +-Inf (which the library refuses later, far from the file); a non-zero value that
-    // rounds to 0 would silently change meaning (a cell size of 1e-50 becomes 0).
-    float real(const json& j, const std::string& path,
-               double lo = -std::numeric_limits<float>::max(),
-               double hi = std::numeric_limits<float>::max(), bool lo_open = false) const {
-        if (j.is_number()) {
-            const double v = j.get<double>();
-            if (std::fabs(v) > double(std::numeric_limits<float>::max()))
-                fail(path, "is beyond float range (magnitude at most 3.40282e+38), found " + describe(j));
-            if (v != 0.0 && static_cast<float>(v) == 0.0f)
-                fail(path, "is too small for a float (it would round to 0), found " + describe(j));
-        }
-        return static_cast<float>(number(j, path, lo, hi, lo_open));
-    }
-
-    uint32_t u32(const json& j, const std::string& path, uint32_t lo, uint32_t hi) const {
-        if (!j.is_number_integer() && !(j.is_number_float() && std::floor(j.get<double>()) == j.get<double>()))
-            fail(path, "must be an integer, found " + describe(j));
-        const double v = j.get<double>();
-        if (v < lo || v > hi)
-            fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], found " + describe(j));
-        return static_cast<uint32_t>(v);
-    }
-
-    vec3f vec3(const json& j, const std::string& path) const {
-        if (!j.is_array() || j.size() != 3) fail(path, "must be an array of 3 numbers, found " + describe(j));
-        vec3f v{};
-        for (size_t i = 0; i < 3; ++i) v[i] = real(j[i], join(path, i));
-        return v;
-    }
-
-    const json& required(const json& obj, const std::string& path, const char* key) const {
-        auto it = obj.find(key);
-        if (it == obj.end()) fail(join(path, key), "is required but missing");
-        return *it;
-    }
-
-    std::string string(const json& j, const std::string& path) const {
-        if (!j.is_string()) fail(path, "must be a string, found " + describe(j));
-        return j.get<std::string>();
-    }
-};
-
-} // namespace
 
 vec3f Scene::domain_max() const {
     vec3f m{};
@@ -164,7 +59,8 @@ Scene parse_scene(const std::string& text, const std::string& path) {
     p.object(root, "");
     p.check_keys(root, "", {"name", "description", "grid", "max_particles", "particles_per_cell",
                             "fill_jitter", "seed", "max_speed", "density", "fill", "params", "frame_dt",
-                            "frames", "camera"});
+                            "frames", "camera", "preset", "features", "force_fields", "obstacles", "emitters",
+                            "sinks"});
 
     Scene s;
     s.path = path;
@@ -232,6 +128,10 @@ Scene parse_scene(const std::string& text, const std::string& path) {
             s.boxes.push_back(box);
         }
     }
+
+    // effects and the preset (which the explicit params below then override)
+    parse_scene_effects(root, path, s);
+    if (s.has_preset) apply_preset(s.preset, s.params);
 
     // params
     if (auto it = root.find("params"); it != root.end()) {
@@ -309,6 +209,7 @@ pf_sim_desc make_sim_desc(const Scene& s, pf_gl_get_proc_address_fn get_proc, pf
     if (s.has_max_speed) d.max_speed = s.max_speed;
     if (s.has_density) d.density = s.density;
     d.params = s.params;
+    d.features = s.features;
     d.gl_get_proc_address = get_proc;
     d.logger = logger;
     return d;
@@ -333,6 +234,7 @@ pf_sim* create_scene_sim(const Scene& s, pf_gl_get_proc_address_fn get_proc, pf_
     check(pf_create(&d, &sim), (s.path + ": pf_create").c_str());
     try {
         fill_scene(sim, s);
+        add_scene_effects(sim, s);
     } catch (...) {
         pf_destroy(sim);
         throw;

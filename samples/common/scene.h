@@ -18,7 +18,23 @@
 //   "frame_dt": 0.016666667,                   seconds per pf_step (optional, 1/60)
 //   "frames": 120,                             demo length (optional)
 //   "camera": { "eye": [x,y,z], "target": [x,y,z], "fov": 45 }  optional, degrees (vertical)
+//   "preset": "balanced",                      optional quality preset (fast, balanced, accurate),
+//                                              applied before "params" (keeps the scene's gravity
+//                                              and max_substeps)
+//   "features": ["obstacles", "emitters"],     effects the scene needs (force_fields, obstacles,
+//                                              emitters, sinks); only these are built and run
+//   "force_fields": [ { "type": "point", "position": [..], "vector": [..], "strength": 5,
+//                       "radius": 0.5, "drag": 0 } ],               pf_force_field (needs the feature)
+//   "obstacles": [ { "shape": "sphere", "position": [..], "rotation": [x,y,z,w],
+//                    "half_extents": [..], "radius": 0.1, "half_height": 0 } ],  pf_obstacle
+//   "emitters": [ { "shape": "disc", "position": [..], "rotation": [..], "half_extents": [..],
+//                   "radius": 0.05, "velocity": [..], "rate": 0.002,
+//                   "rate_unit": "volume_per_second" } ],          pf_emitter
+//   "sinks": [ { "shape": "box", "position": [..], "rotation": [..], "half_extents": [..],
+//                "radius": 0.1 } ]                                  pf_sink
 // }
+// Effect objects start from pf_default_*() and take the keys given; the library validates them
+// when the scene is created, and an error names the object's JSON Pointer ("/emitters/1").
 //
 // Keys beginning with '_' are ignored (use them for comments); any other unknown key is an
 // error, so typos do not go unnoticed.
@@ -60,6 +76,13 @@ struct Scene {
     uint32_t frames = 120;
     bool has_camera = false;
     SceneCamera camera;
+    bool has_preset = false;
+    pf_quality preset = PF_QUALITY_FAST;
+    uint32_t features = 0;           // PF_FEATURE_* bits named by "features"
+    std::vector<pf_force_field> force_fields;
+    std::vector<pf_obstacle> obstacles;
+    std::vector<pf_emitter> emitters;
+    std::vector<pf_sink> sinks;
 
     /// World-space bounds of the grid.
     vec3f domain_min() const { return origin; }
@@ -87,7 +110,11 @@ pf_sim_desc make_sim_desc(const Scene& scene, pf_gl_get_proc_address_fn get_proc
 /// the box.
 void fill_scene(pf_sim* sim, const Scene& scene);
 
-/// pf_create + fill_scene; throws on failure (and destroys the half-made sim).
+/// Adds the scene's force fields, obstacles, emitters and sinks to sim. Throws pfs::Error naming
+/// the object's JSON Pointer and the library's reason on failure.
+void add_scene_effects(pf_sim* sim, const Scene& scene);
+
+/// pf_create + fill_scene + add_scene_effects; throws on failure (and destroys the half-made sim).
 pf_sim* create_scene_sim(const Scene& scene, pf_gl_get_proc_address_fn get_proc, pf_logger logger);
 
 } // namespace pfs

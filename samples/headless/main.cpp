@@ -301,6 +301,7 @@ int run(int argc, char** argv) {
     const double create_ms = pfs::now_ms() - t0;
     t0 = pfs::now_ms();
     pfs::fill_scene(sim.get(), scene);
+    pfs::add_scene_effects(sim.get(), scene);
     glFinish();
     const double fill_ms = pfs::now_ms() - t0;
 

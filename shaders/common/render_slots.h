@@ -31,6 +31,9 @@
 
 /* storage block of the compute splats: the simulation's particle positions */
 #define PF_SSBO_PARTICLE_POS 0
+/* and the simulation's live-count record (common/slots.h PF_COUNT_*): the dispatch covers every
+ * particle slot in use, the record says how many are live (emitters and sinks decide on the GPU) */
+#define PF_SSBO_PARTICLE_COUNT 1
 /* invocations per workgroup of the compute splats (one particle each) */
 #define PF_SPLAT_WORKGROUP 64
 /* thickness fixed point: 2^16 per metre (15 um steps, 65 km range) */

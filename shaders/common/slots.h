@@ -53,6 +53,14 @@
  * face accumulators 4, cell types 6) */
 #define PF_SLOT_FORCE_FIELDS 3
 #define PF_SLOT_OBSTACLES 3
+#define PF_SLOT_EMITTERS 3
+#define PF_SLOT_SINKS 3
+/* the live-count record (PF_COUNT_* words below) of emitters and sinks, on the cell-count slot
+ * none of their kernels uses, and the sinks' compaction lists and counters */
+#define PF_SLOT_PARTICLE_COUNT 5
+#define PF_SLOT_SINK_HOLES 2
+#define PF_SLOT_SINK_MOVERS 4
+#define PF_SLOT_SINK_STATE 7
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
@@ -72,6 +80,18 @@
 
 /* explicit uniform location of the effects' kernels: how many objects of the effect's list are live */
 #define PF_LOC_EFFECT_COUNT 0
+/* explicit uniform locations of the emit kernels (emitters use PF_LOC_EFFECT_COUNT too) */
+#define PF_LOC_EMIT_TOTAL 1     /* particles this step's emitters ask for */
+#define PF_LOC_EMIT_SEED 2      /* desc.seed: shifts each emitter's point sequence */
+#define PF_LOC_EMIT_CAPACITY 3  /* max_particles */
+
+/* The live-count record (8 words), kept on the GPU: two DrawArraysIndirectCommand records, so
+ * engines and the renderer draw exactly the live particles without reading the count back.
+ * [0..3] {live, 1, 0, 0}: points; [4..7] {4, live, 0, 0}: a 4-vertex strip per particle. */
+#define PF_COUNT_LIVE 0
+#define PF_COUNT_STRIP_RECORD 4  /* first word of the strip record */
+#define PF_COUNT_INSTANCES 5
+#define PF_COUNT_WORDS 8
 
 /* uniform block with the per-step constants (common/sim.glsl, src/sim/sim_uniforms.h) */
 #define PF_UBO_SIM 0
@@ -96,11 +116,13 @@
 #define PF_STATUS_FLUID_CELLS 9        /* FLUID cells (uint) */
 #define PF_STATUS_PARTICLE_VOLUME 10   /* dx^3 sum over cells of min(count / rest count, 1), m^3 */
 #define PF_STATUS_POTENTIAL_ENERGY 11  /* m sum -g . (x - origin) over the particles, J */
-#define PF_STATUS_WORDS 12
+#define PF_STATUS_PARTICLE_COUNT 12    /* live particles at the step's end (uint) */
+#define PF_STATUS_WORDS 13
 
 /* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */
 #define PF_GPU_FLAG_P2G_OVERFLOW 1u
 #define PF_GPU_FLAG_NONFINITE 2u
 #define PF_GPU_FLAG_SPEED_CLAMPED 4u
+#define PF_GPU_FLAG_EMITTERS_FULL 64u
 
 #endif

@@ -4,6 +4,7 @@
 // image in fixed point (PF_SPLAT_DEPTH 0) or keeps the nearest eye depth with an atomic
 // minimum on its float bits (PF_SPLAT_DEPTH 1; positive floats order like their bits).
 // Compute instead of raster because fragment work is slow on compute-heavy GPUs (H100).
+#include "common/slots.h"
 #include "common/ssf_sphere.glsl"
 
 layout(local_size_x = PF_SPLAT_WORKGROUP) in;
@@ -13,7 +14,8 @@ layout(binding = PF_IMG_SPLAT_DEPTH, r32ui) uniform coherent uimage2D io_bits;
 #else
 layout(binding = PF_IMG_SPLAT_THICKNESS, r32ui) uniform coherent uimage2D io_bits;
 #endif
-layout(location = PF_LOC_SPLAT_COUNT) uniform uint u_count;
+layout(std430, binding = PF_SSBO_PARTICLE_COUNT) readonly buffer Count { uint count_record[]; };
+layout(location = PF_LOC_SPLAT_COUNT) uniform uint u_count;  // slots covered by the dispatch
 
 // Own-texture pixel of an eye-space point (may lie outside the texture).
 vec2 eye_to_pixel(vec3 p) {
@@ -24,7 +26,7 @@ vec2 eye_to_pixel(vec3 p) {
 
 void main() {
     uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * uint(PF_SPLAT_WORKGROUP);
-    if (i >= u_count) return;
+    if (i >= min(u_count, count_record[PF_COUNT_LIVE])) return;
     vec3 center;
     if (!sphere_visible(pos[i].xyz, center)) return;
     float half_size;

@@ -49,4 +49,5 @@ void main() {
     status[PF_STATUS_FLUID_CELLS] = cells;
     status[PF_STATUS_PARTICLE_VOLUME] = floatBitsToUint(cell_volume * total.z);
     status[PF_STATUS_POTENTIAL_ENERGY] = floatBitsToUint(particle_mass * s_height[0]);
+    status[PF_STATUS_PARTICLE_COUNT] = sim.particle_count;
 }

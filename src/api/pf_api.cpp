@@ -131,9 +131,10 @@ pf_result pf_add_particles(pf_sim* sim, const float* xyz, const float* vel, uint
     return guarded(s.log(), "pf_add_particles", [&] {
         if (n == 0) return PF_OK;
         if (!xyz) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_particles: xyz must not be NULL");
-        if (uint64_t(s.particle_count()) + n > s.desc().max_particles) {
+        const uint32_t live = s.live_count();
+        if (uint64_t(live) + n > s.desc().max_particles) {
             return s.log().error(PF_ERROR_CAPACITY, "pf_add_particles: " + std::to_string(n) + " particles do not fit (" +
-                                                        std::to_string(s.particle_count()) + " of " +
+                                                        std::to_string(live) + " of " +
                                                         std::to_string(s.desc().max_particles) + " in use)");
         }
         if (pf_result r = pf::validate_particles(s.desc(), xyz, vel, n, s.log()); r != PF_OK) return r;
@@ -258,6 +259,79 @@ pf_result pf_remove_obstacle(pf_sim* sim, uint32_t id) {
     return guarded(s.log(), "pf_remove_obstacle", [&] { return s.remove_obstacle(id); });
 }
 
+pf_emitter pf_default_emitter(void) {
+    pf_emitter e{};
+    e.shape = PF_EMITTER_SPHERE;
+    e.rotation[3] = 1.0f;
+    e.half_extents[0] = e.half_extents[1] = e.half_extents[2] = 0.1f;
+    e.radius = 0.1f;
+    e.rate_unit = PF_RATE_PARTICLES_PER_SECOND;
+    return e;
+}
+
+pf_sink pf_default_sink(void) {
+    pf_sink k{};
+    k.shape = PF_SINK_BOX;
+    k.rotation[3] = 1.0f;
+    k.half_extents[0] = k.half_extents[1] = k.half_extents[2] = 0.1f;
+    k.radius = 0.1f;
+    return k;
+}
+
+pf_result pf_add_emitter(pf_sim* sim, const pf_emitter* emitter, uint32_t* out_id) {
+    PF_CHECK_SIM(sim, "pf_add_emitter");
+    pf::Simulation& s = *sim->impl;
+    if (!emitter) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_emitter: emitter must not be NULL");
+    if (pf_result r = pf::validate_emitter(*emitter, s.desc(), s.log(), "pf_add_emitter"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_add_emitter", [&] { return s.add_emitter(*emitter, out_id); });
+}
+
+pf_result pf_set_emitter(pf_sim* sim, uint32_t id, const pf_emitter* emitter) {
+    PF_CHECK_SIM(sim, "pf_set_emitter");
+    pf::Simulation& s = *sim->impl;
+    if (!emitter) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_emitter: emitter must not be NULL");
+    if (pf_result r = pf::validate_emitter(*emitter, s.desc(), s.log(), "pf_set_emitter"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_set_emitter", [&] { return s.set_emitter(id, *emitter); });
+}
+
+pf_result pf_remove_emitter(pf_sim* sim, uint32_t id) {
+    PF_CHECK_SIM(sim, "pf_remove_emitter");
+    pf::Simulation& s = *sim->impl;
+    return guarded(s.log(), "pf_remove_emitter", [&] { return s.remove_emitter(id); });
+}
+
+pf_result pf_add_sink(pf_sim* sim, const pf_sink* sink, uint32_t* out_id) {
+    PF_CHECK_SIM(sim, "pf_add_sink");
+    pf::Simulation& s = *sim->impl;
+    if (!sink) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_sink: sink must not be NULL");
+    if (pf_result r = pf::validate_sink(*sink, s.desc(), s.log(), "pf_add_sink"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_add_sink", [&] { return s.add_sink(*sink, out_id); });
+}
+
+pf_result pf_set_sink(pf_sim* sim, uint32_t id, const pf_sink* sink) {
+    PF_CHECK_SIM(sim, "pf_set_sink");
+    pf::Simulation& s = *sim->impl;
+    if (!sink) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_sink: sink must not be NULL");
+    if (pf_result r = pf::validate_sink(*sink, s.desc(), s.log(), "pf_set_sink"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_set_sink", [&] { return s.set_sink(id, *sink); });
+}
+
+pf_result pf_remove_sink(pf_sim* sim, uint32_t id) {
+    PF_CHECK_SIM(sim, "pf_remove_sink");
+    pf::Simulation& s = *sim->impl;
+    return guarded(s.log(), "pf_remove_sink", [&] { return s.remove_sink(id); });
+}
+
+pf_result pf_get_particle_count(pf_sim* sim, uint32_t* out) {
+    PF_CHECK_SIM(sim, "pf_get_particle_count");
+    pf::Simulation& s = *sim->impl;
+    if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_particle_count: out must not be NULL");
+    return guarded(s.log(), "pf_get_particle_count", [&] {
+        *out = s.live_count();
+        return PF_OK;
+    });
+}
+
 pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out) {
     PF_CHECK_SIM(sim, "pf_get_params");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_params: out must not be NULL");
@@ -279,10 +353,11 @@ pf_result pf_set_params(pf_sim* sim, const pf_sim_params* params) {
 pf_result pf_read_particles(pf_sim* sim, uint32_t first, uint32_t count, float* xyz, float* vel) {
     PF_CHECK_SIM(sim, "pf_read_particles");
     pf::Simulation& s = *sim->impl;
-    if (uint64_t(first) + count > s.particle_count()) {
+    const uint32_t live = s.live_count();
+    if (uint64_t(first) + count > live) {
         return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_read_particles: range [" + std::to_string(first) + ", " +
                                                             std::to_string(uint64_t(first) + count) + ") exceeds the " +
-                                                            std::to_string(s.particle_count()) + " live particles");
+                                                            std::to_string(live) + " live particles");
     }
     if (count == 0 || (!xyz && !vel)) return PF_OK;
     return guarded(s.log(), "pf_read_particles", [&] { return s.read_particles(first, count, xyz, vel); });

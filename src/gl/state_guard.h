@@ -28,11 +28,11 @@ private:
     };
     static constexpr GLenum kGeneric[] = {GL_SHADER_STORAGE_BUFFER, GL_UNIFORM_BUFFER,
                                           GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER,
-                                          GL_DISPATCH_INDIRECT_BUFFER};
+                                          GL_DISPATCH_INDIRECT_BUFFER, GL_DRAW_INDIRECT_BUFFER};
     static constexpr GLenum kGenericBinding[] = {
         GL_SHADER_STORAGE_BUFFER_BINDING, GL_UNIFORM_BUFFER_BINDING, GL_COPY_READ_BUFFER_BINDING,
-        GL_COPY_WRITE_BUFFER_BINDING, GL_DISPATCH_INDIRECT_BUFFER_BINDING};
-    static constexpr int kGenericCount = 5;
+        GL_COPY_WRITE_BUFFER_BINDING, GL_DISPATCH_INDIRECT_BUFFER_BINDING, GL_DRAW_INDIRECT_BUFFER_BINDING};
+    static constexpr int kGenericCount = 6;
 
     void save_indexed(GLenum binding, GLenum start, GLenum size, GLuint index, Indexed& out);
     void restore_indexed(GLenum target, GLuint index, const Indexed& s);

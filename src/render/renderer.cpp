@@ -126,7 +126,11 @@ void Renderer::bind_texture(GLuint unit, GLenum target, GLuint texture, bool lin
     gl_.BindSampler(unit, linear ? linear_.id() : nearest_.id());
 }
 
-void Renderer::draw_spheres() { gl_.DrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(sim_.particle_count())); }
+void Renderer::draw_spheres() {
+    // One strip per live particle, as many as the GPU's count record says (no readback).
+    gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, sim_.count_record().id());
+    gl_.DrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(uintptr_t(PF_COUNT_STRIP_RECORD) * 4));
+}
 
 void Renderer::draw_fullscreen() { gl_.DrawArrays(GL_TRIANGLES, 0, 3); }
 
@@ -284,6 +288,7 @@ void Renderer::pass_splat_thickness(GLuint clear, GLuint splat, int w, int h) {
     pf_gl_buffers b{};
     sim_.gl_buffers(b);
     gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_POS, b.positions);
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_COUNT, b.draw_indirect);
     bind_texture(PF_TEX_SCENE_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_depth), false);
     dispatch_particles(splat);
 }

@@ -121,11 +121,12 @@ bool PassRunner::writes_indirect_records(gl::ProgramId id) {
     }
 }
 
-void PassRunner::copy(const gl::Buffer& src, const gl::Buffer& dst, size_t bytes) {
+void PassRunner::copy(const gl::Buffer& src, size_t src_offset, const gl::Buffer& dst, size_t dst_offset, size_t bytes) {
     gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // copies read what shaders wrote
     gl_.BindBuffer(GL_COPY_READ_BUFFER, src.id());
     gl_.BindBuffer(GL_COPY_WRITE_BUFFER, dst.id());
-    gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, 0, GLsizeiptr(bytes));
+    gl_.CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, GLintptr(src_offset), GLintptr(dst_offset),
+                          GLsizeiptr(bytes));
 }
 
 void PassRunner::set_uniforms(GLuint program, size_t pid, const Uniforms& uniforms) {

@@ -54,7 +54,8 @@ public:
     // Closes the open timing pair (end of a step).
     void end_step();
     // Copies `bytes` from src to dst on the GPU, after everything earlier passes wrote.
-    void copy(const gl::Buffer& src, const gl::Buffer& dst, size_t bytes);
+    void copy(const gl::Buffer& src, const gl::Buffer& dst, size_t bytes) { copy(src, 0, dst, 0, bytes); }
+    void copy(const gl::Buffer& src, size_t src_offset, const gl::Buffer& dst, size_t dst_offset, size_t bytes);
     // Runs one pass (the program must have been prepared). Timed and counted inside a step
     // (begin_step .. end_step), neither outside one (creation, pf_push, pf_clear_particles).
     void run(const Pass& pass);

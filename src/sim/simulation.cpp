@@ -17,6 +17,7 @@ namespace pf {
 static_assert(PF_GPU_FLAG_P2G_OVERFLOW == PF_FLAG_P2G_OVERFLOW, "flag bits shared with GLSL");
 static_assert(PF_GPU_FLAG_NONFINITE == PF_FLAG_NONFINITE, "flag bits shared with GLSL");
 static_assert(PF_GPU_FLAG_SPEED_CLAMPED == PF_FLAG_SPEED_CLAMPED, "flag bits shared with GLSL");
+static_assert(PF_GPU_FLAG_EMITTERS_FULL == PF_FLAG_EMITTERS_FULL, "flag bits shared with GLSL");
 
 namespace {
 using gl::ProgramId;
@@ -39,7 +40,7 @@ using gl::hex;
 }  // namespace
 
 Simulation::Simulation(const pf_sim_desc& desc) : desc_(desc), log_(desc.logger) {
-    for (uint32_t i = 0; i < kEffectCount; ++i) effects_[i] = make_effect(1u << i);
+    for (uint32_t i = 0; i < kEffectCount; ++i) effects_[i] = make_effect(1u << i, desc);
     requested_features_ = desc.features;
     desc_.features = 0;  // init() turns them on
 }
@@ -118,6 +119,7 @@ pf_result Simulation::init() {
     pressure_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
     rhs_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
     uniforms_ = gl::Buffer(gl_, sizeof(SimUniforms), GL_DYNAMIC_DRAW);
+    count_record_ = gl::Buffer(gl_, PF_COUNT_WORDS * 4, GL_DYNAMIC_COPY);
     status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY);
     for (auto& b : readback_) b = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_STREAM_READ);
     runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM);
@@ -155,7 +157,28 @@ pf_result Simulation::init() {
     // before it is read.
     fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
     fill(status_, PF_STATUS_WORDS, 0u, stat_.clear);
+    const uint32_t record[PF_COUNT_WORDS] = {0, 1, 0, 0, 4, 0, 0, 0};
+    count_record_.upload(0, sizeof(record), record);
     return PF_OK;
+}
+
+void Simulation::write_count_record(uint32_t live) {
+    count_record_.upload(PF_COUNT_LIVE * 4, 4, &live);
+    count_record_.upload(PF_COUNT_INSTANCES * 4, 4, &live);
+}
+
+void Simulation::copy_count_to_uniforms() {
+    runner_->copy(count_record_, PF_COUNT_LIVE * 4, uniforms_, offsetof(SimUniforms, particle_count), 4);
+}
+
+uint32_t Simulation::live_count() const {
+    if (!gpu_count_) return particle_count_;
+    gl::StateGuard guard(gl_, gl_state_);
+    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    uint32_t live = 0;
+    count_record_.download(PF_COUNT_LIVE * 4, 4, &live);
+    particle_count_ = live;  // everything queued has run: the bound is exact again
+    return live;
 }
 
 pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out) {
@@ -253,6 +276,7 @@ void Simulation::upload_uniforms(float dt) {
     u.rest_particles = float(desc_.fill_particles_per_cell);
     u.volume_correction = desc_.params.volume_correction;
     uniforms_.upload(0, sizeof(SimUniforms), &u);
+    if (gpu_count_) copy_count_to_uniforms();  // the kernels compare with the GPU's live count
 }
 
 void Simulation::run_substep() {
@@ -342,7 +366,8 @@ void Simulation::run_g2p_and_advect() {
 uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     poll_status();
     if (clamped) *clamped = false;
-    if (particle_count_ == 0) return 1;  // nothing moves: one substep keeps the grid state current
+    // Nothing moves: one substep keeps the grid state current (emitters add particles first).
+    if (particle_count_ == 0 && !(desc_.features & PF_FEATURE_EMITTERS)) return 1;
     float v_max = gpu_max_speed_;
     if (added_at_step_ > status_step_) v_max = std::max(v_max, added_speed_);
     const float* g = desc_.params.gravity;
@@ -351,6 +376,9 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     if (desc_.features & PF_FEATURE_FORCE_FIELDS) {
         accel += force_fields().max_acceleration();
         wind = force_fields().max_wind_speed();
+    }
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        if (desc_.features & (1u << i)) v_max = std::max(v_max, effects_[i]->added_speed());
     }
     const float v_est = std::max(v_max + accel * frame_dt, wind);
     const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
@@ -377,8 +405,10 @@ pf_result Simulation::step(float frame_dt) {
                   "the per-step status words are contiguous");
     status_.upload(PF_STATUS_MAX_SPEED * 4, sizeof(zeros), zeros);
     upload_uniforms(frame_dt / float(substeps));
-    begin_effects_step();
+    begin_effects_step(frame_dt);
+    run_count_stage(EffectStage::before_substeps);
     for (uint32_t s = 0; s < substeps; ++s) run_substep();
+    run_count_stage(EffectStage::after_substeps);
     run_metrics();
     runner_->end_step();
 
@@ -393,7 +423,7 @@ pf_result Simulation::step(float frame_dt) {
     status_.upload(PF_STATUS_FLAGS * 4, 4, &no_flags);
     fence_step_[slot] = steps_;
     fence_solver_[slot] = desc_.params.pressure_solver;
-    fence_particles_[slot] = particle_count_;
+    fence_added_[slot] = added_total_;
 
     // Engines may read the particle buffers as vertex data, SSBOs or by copying.
     gl_.MemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
@@ -409,7 +439,7 @@ void Simulation::run_one_step_for_test(float dt, Passes&& passes) {
     ++steps_;
     runner_->begin_step(steps_, 1);
     upload_uniforms(dt);
-    begin_effects_step();
+    begin_effects_step(dt);
     passes();
     runner_->end_step();
     gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
@@ -454,6 +484,12 @@ void Simulation::poll_status() const {
             gl::StateGuard guard(gl_, gl_state_);
             readback_[s].download(0, sizeof(words), words);
         }
+        // The GPU's live count then, plus what was added since, bounds today's count (sinks
+        // only lower it).
+        if (gpu_count_) {
+            const uint64_t bound = uint64_t(words[PF_STATUS_PARTICLE_COUNT]) + (added_total_ - fence_added_[s]);
+            if (bound < particle_count_) particle_count_ = uint32_t(bound);
+        }
         if (fence_step_[s] > flags_cleared_at_step_) raise_flags(words[PF_STATUS_FLAGS]);
         // A fixed-point sum overflowed in a step run at today's range: widen it for the steps to
         // come (the overflowing step's result is flagged; integer sums stay deterministic).
@@ -481,9 +517,11 @@ void Simulation::poll_status() const {
             std::memcpy(&m.particle_volume, &words[PF_STATUS_PARTICLE_VOLUME], sizeof(float));
             float height_energy = 0.0f;
             std::memcpy(&height_energy, &words[PF_STATUS_POTENTIAL_ENERGY], sizeof(float));
-            m.potential_energy = float(double(height_energy) - double(fence_particles_[s]) * lowest_potential_per_particle());
+            const uint32_t live = words[PF_STATUS_PARTICLE_COUNT];
+            m.potential_energy = float(double(height_energy) - double(live) * lowest_potential_per_particle());
             m.fluid_cells = words[PF_STATUS_FLUID_CELLS];
             metrics_ = m;
+            readback_count_ = live;
             // The drifts' reference: the first step measured since the particles last changed.
             if (!metrics_first_set_ && fence_step_[s] >= metrics_epoch_step_) {
                 metrics_first_ = m;
@@ -493,7 +531,7 @@ void Simulation::poll_status() const {
             // cell counts at most its rest count, so only compression lowers the ratio, and
             // unlike the drift it needs no earlier measurement (a 1 s frame compresses a dam
             // break before the first one).
-            const double rest = double(fence_particles_[s]) / desc_.fill_particles_per_cell * std::pow(double(desc_.cell_size), 3);
+            const double rest = double(live) / desc_.fill_particles_per_cell * std::pow(double(desc_.cell_size), 3);
             if (fence_step_[s] > flags_cleared_at_step_ && rest > 0.0 &&
                 double(m.particle_volume) / rest - 1.0 < -double(desc_.params.volume_loss_limit))
                 raise_flags(PF_FLAG_VOLUME_LOST);
@@ -507,7 +545,7 @@ void Simulation::poll_status() const {
                 energy_first_set_ = true;
             }
             if (energy_first_set_ && fence_step_[s] > flags_cleared_at_step_) {
-                const double floor = double(fence_particles_[s]) * particle_mass() * 9.81 * desc_.cell_size;
+                const double floor = double(live) * particle_mass() * 9.81 * desc_.cell_size;
                 const double scale = std::max(energy_first_, floor);
                 if (double(m.kinetic_energy) + m.potential_energy - energy_first_ > double(desc_.params.energy_gain_limit) * scale)
                     raise_flags(PF_FLAG_ENERGY_GAINED);
@@ -518,6 +556,7 @@ void Simulation::poll_status() const {
 
 pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t n) {
     if (n == 0) return PF_OK;
+    live_count();  // while the GPU keeps the count: wait for it, the new particles go right after
     std::vector<float> pos4(size_t(n) * 4, 0.0f), vel4(size_t(n) * 4, 0.0f);
     float fastest = 0.0f;
     for (uint32_t i = 0; i < n; ++i) {
@@ -535,6 +574,11 @@ pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t
         zero_affine(particle_count_, n);  // APIC: a new particle starts as plain PIC (C = 0)
     }
     particle_count_ += n;
+    added_total_ += n;
+    {
+        gl::StateGuard guard(gl_, gl_state_);
+        write_count_record(particle_count_);
+    }
     restart_volume_reference();
     hydrostatic_start_pending_ = true;  // the new particles' cells hold p = 0
     added_speed_ = (added_at_step_ > status_step_) ? std::max(added_speed_, fastest) : fastest;
@@ -570,6 +614,7 @@ double Simulation::lowest_potential_per_particle() const {
 }
 
 pf_result Simulation::fill_box(const float lo[3], const float hi[3], const float vel[3]) {
+    live_count();  // the capacity check needs the exact count
     FillLattice lattice{desc_, lo, hi};
     const uint64_t n = lattice.count();
     if (n == 0) return log_.error(PF_ERROR_INVALID_ARGUMENT, "pf_fill_box: the box is empty or does not overlap the domain");
@@ -616,6 +661,8 @@ void Simulation::raise_flags(uint32_t bits) const {
         {PF_FLAG_VOLUME_LOST, "the liquid lost more than params.volume_loss_limit of its rest volume to compression "
                               "(pf_stats.particle_volume); consider a converged pressure solver, volume "
                               "correction or smaller frame times (PF_FLAG_VOLUME_LOST)"},
+        {PF_FLAG_EMITTERS_FULL, "the emitters wanted more particles than desc.max_particles leaves room for: "
+                                "emission stopped at the capacity (PF_FLAG_EMITTERS_FULL)"},
     };
     for (const Text& t : kTexts)
         if (fresh & t.bit) log_.warning(std::string("pf_step: ") + t.text);
@@ -633,6 +680,7 @@ pf_result Simulation::clear_particles() {
     gl::StateGuard guard(gl_, gl_state_);
     restart_volume_reference();
     particle_count_ = 0;  // freed slots' APIC affine vectors are zeroed when add_particles reuses them
+    write_count_record(0);
     fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
     added_speed_ = 0.0f;
     gpu_max_speed_ = 0.0f;
@@ -689,27 +737,61 @@ pf_result Simulation::set_features(uint32_t features, const char* fn) {
         }
         effects_ready_ |= bit;
     }
+    const bool gpu_count = (features & kGpuCountFeatures) != 0;
+    // The count record is current in both modes; leaving GPU mode makes the host count exact.
+    if (gpu_count_ && !gpu_count) live_count();
+    gpu_count_ = gpu_count;
     desc_.features = features;
     return PF_OK;
 }
 
-void Simulation::begin_effects_step() {
-    bool work = false;
+void Simulation::begin_effects_step(float frame_dt) {
+    bool work = false, changes = false;
+    uint64_t added = 0;
+    const FrameInfo frame{frame_dt, steps_, std::pow(double(desc_.cell_size), 3) / desc_.fill_particles_per_cell};
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (!(desc_.features & (1u << i))) continue;
+        effects_[i]->begin_frame(frame);
         effects_[i]->begin_step();
         work = work || effects_[i]->does_work();
+        changes = changes || effects_[i]->changes_particles();
+        added += effects_[i]->particles_added();
     }
     if (work) restart_energy_reference();  // energy put in by an effect is not a numerical gain
+    if (changes) {
+        // The drifts compare like with like: a new reference once the particles changed. The
+        // energy reference stays (removing particles only lowers the energy).
+        metrics_first_set_ = false;
+        metrics_epoch_step_ = steps_ + 1;
+    }
+    if (added > 0) {
+        // Passes cover the slots emitters may fill; the GPU decides how many they do.
+        particle_count_ = uint32_t(std::min<uint64_t>(uint64_t(particle_count_) + added, desc_.max_particles));
+        added_total_ += added;
+        const float fastest = (desc_.features & PF_FEATURE_EMITTERS) ? emitters().added_speed() : 0.0f;
+        added_speed_ = (added_at_step_ > status_step_) ? std::max(added_speed_, fastest) : fastest;
+        added_at_step_ = steps_;
+    }
+}
+
+EffectBuffers Simulation::effect_buffers() const {
+    const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
+    return EffectBuffers{pos_,          vel_,    face_accum_,         face_vel_,       cell_type_,       count_record_,
+                         status_,       apic ? &affine_ : nullptr, particle_count_, uint64_t(cells_), uint64_t(faces_)};
 }
 
 void Simulation::run_effects(EffectStage stage) {
     if (desc_.features == 0) return;
-    const EffectBuffers buffers{pos_,           vel_,          face_accum_, face_vel_, cell_type_, particle_count_,
-                                uint64_t(cells_), uint64_t(faces_)};
+    const EffectBuffers buffers = effect_buffers();
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (desc_.features & (1u << i)) effects_[i]->run(stage, *runner_, buffers);
     }
+}
+
+void Simulation::run_count_stage(EffectStage stage) {
+    if (!gpu_count_) return;
+    run_effects(stage);
+    copy_count_to_uniforms();
 }
 
 namespace {
@@ -764,6 +846,28 @@ pf_result Simulation::remove_obstacle(uint32_t id) {
     return remove_from(obstacles().list(), id, log_, "pf_remove_obstacle");
 }
 
+pf_result Simulation::add_emitter(const pf_emitter& emitter, uint32_t* out_id) {
+    return add_to(emitters().list(), EmittersEffect::Emitter{emitter, 0.0}, out_id, log_, "pf_add_emitter", "emitters");
+}
+pf_result Simulation::set_emitter(uint32_t id, const pf_emitter& emitter) {
+    if (!emitters().set(id, emitter))
+        return log_.error(PF_ERROR_INVALID_ARGUMENT, "pf_set_emitter: no object has id " + std::to_string(id));
+    return PF_OK;
+}
+pf_result Simulation::remove_emitter(uint32_t id) { return remove_from(emitters().list(), id, log_, "pf_remove_emitter"); }
+pf_result Simulation::add_sink(const pf_sink& sink, uint32_t* out_id) {
+    sinks().changed();
+    return add_to(sinks().list(), sink, out_id, log_, "pf_add_sink", "sinks");
+}
+pf_result Simulation::set_sink(uint32_t id, const pf_sink& sink) {
+    sinks().changed();
+    return set_in(sinks().list(), id, sink, log_, "pf_set_sink");
+}
+pf_result Simulation::remove_sink(uint32_t id) {
+    sinks().changed();
+    return remove_from(sinks().list(), id, log_, "pf_remove_sink");
+}
+
 pf_result Simulation::read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const {
     std::vector<float> tmp(size_t(count) * 4);
     gl::StateGuard guard(gl_, gl_state_);
@@ -784,6 +888,7 @@ void Simulation::gl_buffers(pf_gl_buffers& out) const {
     out.velocities = vel_.id();
     out.count = particle_count_;
     out.stride = 16;
+    out.draw_indirect = count_record_.id();
 }
 
 void Simulation::stats(pf_stats& out) const {
@@ -791,7 +896,7 @@ void Simulation::stats(pf_stats& out) const {
     poll_status();
     runner_->poll_timers();
     out = pf_stats{};
-    out.particle_count = particle_count_;
+    out.particle_count = gpu_count_ ? readback_count_ : particle_count_;
     out.max_particles = desc_.max_particles;
     out.steps = steps_;
     out.substeps = last_substeps_;

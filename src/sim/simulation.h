@@ -12,8 +12,10 @@
 #include "gl/program.h"
 #include "gl/state_guard.h"
 #include "pf/pf.h"
+#include "sim/effects/emitters/emitters.h"
 #include "sim/effects/force_fields/force_fields.h"
 #include "sim/effects/obstacles/obstacles.h"
+#include "sim/effects/sinks/sinks.h"
 #include "sim/effects/registry.h"
 #include "sim/pass_runner.h"
 #include "sim/sim_uniforms.h"
@@ -50,6 +52,12 @@ public:
     pf_result add_obstacle(const pf_obstacle& obstacle, uint32_t* out_id);
     pf_result set_obstacle(uint32_t id, const pf_obstacle& obstacle);
     pf_result remove_obstacle(uint32_t id);
+    pf_result add_emitter(const pf_emitter& emitter, uint32_t* out_id);
+    pf_result set_emitter(uint32_t id, const pf_emitter& emitter);
+    pf_result remove_emitter(uint32_t id);
+    pf_result add_sink(const pf_sink& sink, uint32_t* out_id);
+    pf_result set_sink(uint32_t id, const pf_sink& sink);
+    pf_result remove_sink(uint32_t id);
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
     void gl_buffers(pf_gl_buffers& out) const;
     void stats(pf_stats& out) const;
@@ -62,7 +70,15 @@ public:
     const pf_sim_params& params() const { return desc_.params; }
     const Log& log() const { return log_; }
     const gl::Api& api() const { return gl_; }
+    // Particle slots in use: the live count, or while the GPU keeps the count (emitters or sinks
+    // on) an upper bound of it. Never waits.
     uint32_t particle_count() const { return particle_count_; }
+    // The exact live count; waits for the GPU while it keeps the count.
+    uint32_t live_count() const;
+    // True while emitters or sinks are on: the GPU decides the live count (design.md §9.3).
+    bool gpu_count() const { return gpu_count_; }
+    // The live-count record (PF_COUNT_* words of common/slots.h: two indirect-draw records).
+    const gl::Buffer& count_record() const { return count_record_; }
     // Substeps pf_step(frame_dt) would take now (CFL estimate, design.md §5).
     uint32_t substeps_for(float frame_dt, bool* clamped = nullptr) const;
 
@@ -106,10 +122,21 @@ private:
     // Every effect that is on, its passes of `stage` (lowest feature bit first).
     void run_effects(EffectStage stage);
     // Start of a step: effects that are on upload what changed.
-    void begin_effects_step();
+    void begin_effects_step(float frame_dt);
     ForceFieldsEffect& force_fields() { return static_cast<ForceFieldsEffect&>(*effects_[0]); }
     const ForceFieldsEffect& force_fields() const { return static_cast<const ForceFieldsEffect&>(*effects_[0]); }
     ObstaclesEffect& obstacles() { return static_cast<ObstaclesEffect&>(*effects_[1]); }
+    EmittersEffect& emitters() { return static_cast<EmittersEffect&>(*effects_[2]); }
+    SinksEffect& sinks() { return static_cast<SinksEffect&>(*effects_[3]); }
+    // The effects' buffers and sizes for this substep.
+    EffectBuffers effect_buffers() const;
+    // Runs the once-per-step stage `stage` (emitters, sinks), then hands the GPU's live count to
+    // the kernels' uniform block.
+    void run_count_stage(EffectStage stage);
+    // Writes a host-known live count into the count record.
+    void write_count_record(uint32_t live);
+    // Copies the GPU's live count into the uniform block (sim.particle_count of the kernels).
+    void copy_count_to_uniforms();
     void run_g2p_and_advect();
     const gl::Buffer& grid_buffer(GridBuffer which) const;
     void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat);
@@ -145,7 +172,13 @@ private:
     // particles
     gl::Buffer pos_, vel_;
     gl::Buffer affine_;  // APIC: 3 vec4 per particle slot (c_x, c_y, c_z); allocated on first use
-    uint32_t particle_count_ = 0;
+    // The live count; while gpu_count_, an upper bound of it (the GPU's count record holds the
+    // exact one): raised by what emitters may add, lowered by readbacks of the GPU's count.
+    mutable uint32_t particle_count_ = 0;
+    gl::Buffer count_record_;     // PF_COUNT_WORDS: kept current in both modes (indirect draws)
+    bool gpu_count_ = false;
+    uint64_t added_total_ = 0;    // particles added so far (pf_add_particles, emitters' requests)
+    mutable uint32_t readback_count_ = 0;  // live count of the newest readback
     // grid
     int32_t cells_ = 0;
     std::array<int32_t, 3> face_counts_{};
@@ -172,7 +205,7 @@ private:
     mutable uint32_t recent_later_iterations_ = 0;  // ...and in one later (active-set) round...
     mutable pf_pressure_solver recent_solver_ = PF_PRESSURE_SOLVER_COUNT;  // ...of this solver
     pf_pressure_solver fence_solver_[kReadbackSlots] = {};  // the solver of each readback's step
-    uint32_t fence_particles_[kReadbackSlots] = {};         // and its particle count
+    uint64_t fence_added_[kReadbackSlots] = {};             // and added_total_ then
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
     mutable uint32_t p2g_range_shift_ = 0;             // fixed-point scale 2^(20 - shift)...
     mutable uint64_t p2g_range_changed_at_step_ = 0;   // ...in use from the step after this one

@@ -36,7 +36,7 @@ std::vector<std::string> names(const std::vector<Entry>& list) {
     return out;
 }
 
-// A small tank with one obstacle and one force field, both present whatever is on.
+// A small tank with one obstacle, force field, emitter and sink, present whatever is on.
 SimPtr make_scene(Effects& t, uint32_t features) {
     pf_sim_desc d = test_desc(16, 16, 16, 0.05f);
     d.features = features;
@@ -55,6 +55,15 @@ SimPtr make_scene(Effects& t, uint32_t features) {
     pf_force_field f = pf_default_force_field();
     f.vector[0] = 1.0f;
     EXPECT_EQ(pf_add_force_field(sim.get(), &f, nullptr), PF_OK);
+    pf_emitter e = pf_default_emitter();
+    e.position[0] = 0.2f, e.position[1] = 0.6f, e.position[2] = 0.2f;
+    e.radius = 0.05f;
+    e.rate = 600.0f;  // 10 particles a frame at 60 Hz
+    EXPECT_EQ(pf_add_emitter(sim.get(), &e, nullptr), PF_OK);
+    pf_sink k = pf_default_sink();
+    k.position[0] = 0.05f, k.position[1] = 0.05f, k.position[2] = 0.05f;
+    k.half_extents[0] = k.half_extents[1] = k.half_extents[2] = 0.05f;
+    EXPECT_EQ(pf_add_sink(sim.get(), &k, nullptr), PF_OK);
     return sim;
 }
 
@@ -81,7 +90,8 @@ TEST_F(Effects, EachEffectAddsOnlyItsOwnPasses) {
     ASSERT_EQ(pf_step(off.get(), 1.0f / 60.0f), PF_OK);
     const std::vector<Entry> core = pass_list(off.get());
     for (const Case& c : {Case{PF_FEATURE_FORCE_FIELDS, {"force_fields"}},
-                          Case{PF_FEATURE_OBSTACLES, {"obstacles", "obstacle_push"}}}) {
+                          Case{PF_FEATURE_OBSTACLES, {"obstacles", "obstacle_push"}},
+                          Case{PF_FEATURE_EMITTERS, {"emit"}}, Case{PF_FEATURE_SINKS, {"sinks"}}}) {
         SimPtr sim = make_scene(*this, 0);
         ASSERT_TRUE(sim);
         ASSERT_EQ(pf_set_features(sim.get(), c.feature), PF_OK) << last_log();

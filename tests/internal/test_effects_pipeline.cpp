@@ -14,6 +14,9 @@ class EffectsPipeline : public GpuTest {};
 const gl::ProgramId kForceFieldPrograms[] = {gl::ProgramId::force_fields};
 const gl::ProgramId kObstaclePrograms[] = {gl::ProgramId::obstacle_cells, gl::ProgramId::obstacle_faces,
                                            gl::ProgramId::obstacle_push};
+const gl::ProgramId kEmitterPrograms[] = {gl::ProgramId::emit, gl::ProgramId::emit_apic, gl::ProgramId::emit_commit};
+const gl::ProgramId kSinkPrograms[] = {gl::ProgramId::sink_mark, gl::ProgramId::sink_lists, gl::ProgramId::sink_move,
+                                       gl::ProgramId::sink_move_apic};
 
 template <size_t N>
 size_t built(const PassRunner& r, const gl::ProgramId (&ids)[N]) {
@@ -33,6 +36,8 @@ TEST_F(EffectsPipeline, OffEffectsBuildNothingAndTurningOneOnBuildsOnlyItsProgra
     const uint32_t core = r.programs_built();
     EXPECT_EQ(built(r, kForceFieldPrograms), 0u);
     EXPECT_EQ(built(r, kObstaclePrograms), 0u);
+    EXPECT_EQ(built(r, kEmitterPrograms), 0u);
+    EXPECT_EQ(built(r, kSinkPrograms), 0u);
     // Objects of an effect that is off are kept on the host only.
     pf_obstacle o = pf_default_obstacle();
     o.position[0] = o.position[1] = o.position[2] = 0.4f;
@@ -47,10 +52,19 @@ TEST_F(EffectsPipeline, OffEffectsBuildNothingAndTurningOneOnBuildsOnlyItsProgra
     ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_OBSTACLES), PF_OK);
     EXPECT_EQ(r.programs_built(), core + std::size(kForceFieldPrograms) + std::size(kObstaclePrograms));
     EXPECT_EQ(built(r, kObstaclePrograms), std::size(kObstaclePrograms));
+    EXPECT_EQ(built(r, kEmitterPrograms) + built(r, kSinkPrograms), 0u);
+    ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_EMITTERS), PF_OK);
+    EXPECT_EQ(built(r, kEmitterPrograms), std::size(kEmitterPrograms));
+    EXPECT_EQ(built(r, kSinkPrograms), 0u);
+    ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_SINKS), PF_OK);
+    EXPECT_EQ(built(r, kSinkPrograms), std::size(kSinkPrograms));
+    const size_t all = core + std::size(kForceFieldPrograms) + std::size(kObstaclePrograms) +
+                       std::size(kEmitterPrograms) + std::size(kSinkPrograms);
+    EXPECT_EQ(r.programs_built(), all);
     // Off and on again: nothing is rebuilt.
     ASSERT_EQ(pf_set_features(handle.get(), 0), PF_OK);
     ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_ALL), PF_OK);
-    EXPECT_EQ(r.programs_built(), core + std::size(kForceFieldPrograms) + std::size(kObstaclePrograms));
+    EXPECT_EQ(r.programs_built(), all);
     ASSERT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);
     EXPECT_EQ(r.binding_errors(), 0u) << last_log();
 }
@@ -69,6 +83,14 @@ TEST_F(EffectsPipeline, EveryEffectPassBindsEverySlotItsProgramUses) {
     f.position[0] = 0.5f, f.position[1] = 0.3f, f.position[2] = 0.4f;
     f.strength = 5.0f;
     ASSERT_EQ(pf_add_force_field(handle.get(), &f, nullptr), PF_OK);
+    pf_emitter e = pf_default_emitter();
+    e.position[0] = 0.3f, e.position[1] = 0.4f, e.position[2] = 0.2f;
+    e.radius = 0.05f;
+    e.rate = 600.0f;  // 10 particles a frame
+    ASSERT_EQ(pf_add_emitter(handle.get(), &e, nullptr), PF_OK);
+    pf_sink k = pf_default_sink();
+    k.position[0] = 0.05f, k.position[1] = 0.05f, k.position[2] = 0.05f;
+    ASSERT_EQ(pf_add_sink(handle.get(), &k, nullptr), PF_OK);
     const float lo[3] = {0, 0, 0}, hi[3] = {0.5f, 0.5f, 0.8f};
     ASSERT_EQ(pf_fill_box(handle.get(), lo, hi, nullptr), PF_OK);
     // The effect passes bind the same buffers whatever the scheme; six configurations take
@@ -84,6 +106,17 @@ TEST_F(EffectsPipeline, EveryEffectPassBindsEverySlotItsProgramUses) {
         ASSERT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);
     }
     EXPECT_EQ(handle->impl->runner().binding_errors(), 0u) << last_log();
+    // Both the emitters and the sinks ran in every configuration.
+    uint32_t n = 0;
+    ASSERT_EQ(pf_get_pass_count(handle.get(), &n), PF_OK);
+    std::vector<std::string> ran;
+    for (uint32_t i = 0; i < n; ++i) {
+        pf_pass_stats s{};
+        ASSERT_EQ(pf_get_pass_stats(handle.get(), i, &s), PF_OK);
+        if (s.dispatches > 0) ran.push_back(s.name);
+    }
+    EXPECT_NE(std::find(ran.begin(), ran.end(), "emit"), ran.end());
+    EXPECT_NE(std::find(ran.begin(), ran.end(), "sinks"), ran.end());
 }
 
 }  // namespace

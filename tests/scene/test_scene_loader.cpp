@@ -98,6 +98,26 @@ std::vector<BadScene> bad_scenes() {
         {"camera_degenerate", with(R"("camera": {"eye": [1, 1, 1], "target": [1, 1, 1]})"), "/camera/target",
          "coincides with /camera/eye"},
         {"frame_dt_zero", with(R"("frame_dt": 0)"), "/frame_dt", "must be in (0, 1]"},
+        // effects
+        {"features_not_array", with(R"("features": "obstacles")"), "/features", "must be an array of feature names"},
+        {"feature_unknown", with(R"("features": ["obstacles", "foam"])"), "/features/1", "unknown \"foam\""},
+        {"objects_without_their_feature", with(R"("obstacles": [{"shape": "sphere"}])"), "/obstacles",
+         "is not listed in /features"},
+        {"obstacle_shape_unknown", with(R"("features": ["obstacles"], "obstacles": [{"shape": "cone"}])"),
+         "/obstacles/0/shape", "unknown \"cone\" (one of box, sphere, capsule)"},
+        {"emitter_rotation_short", with(R"("features": ["emitters"], "emitters": [{"rotation": [0, 0, 1]}])"),
+         "/emitters/0/rotation", "must be an array of 4 numbers"},
+        {"emitter_rate_unit", with(R"("features": ["emitters"], "emitters": [{"rate_unit": "litres"}])"),
+         "/emitters/0/rate_unit", "unknown \"litres\""},
+        {"emitter_unknown_key", with(R"("features": ["emitters"], "emitters": [{"speed": 1}])"), "/emitters/0/speed",
+         "is not a known key"},
+        {"sink_beyond_float", with(R"("features": ["sinks"], "sinks": [{"radius": 1e39}])"), "/sinks/0/radius",
+         "beyond float range"},
+        {"force_field_not_object", with(R"("features": ["force_fields"], "force_fields": [3])"), "/force_fields/0",
+         "must be an object"},
+        {"effect_list_not_array", with(R"("features": ["sinks"], "sinks": {"shape": "box"})"), "/sinks",
+         "must be an array of objects"},
+        {"preset_unknown", with(R"("preset": "ultra")"), "/preset", "ultra"},
     };
 }
 
@@ -135,10 +155,37 @@ TEST(SceneLoader, EveryShippedSceneLoads) {
         EXPECT_NO_THROW({
             const pfs::Scene s = pfs::load_scene(entry.path().string());
             EXPECT_FALSE(s.name.empty());
-            EXPECT_FALSE(s.boxes.empty()) << entry.path();
+            EXPECT_TRUE(!s.boxes.empty() || !s.emitters.empty()) << entry.path() << ": no liquid and no emitter";
         }) << entry.path();
     }
     EXPECT_GE(n, 1u) << "no scenes in " << PF_TEST_SCENES_DIR;
+}
+
+// The combined effects scene names every effect and carries one object of each, read into the
+// pf_* structs with defaults where the file is silent; the preset applies before "params".
+TEST(SceneLoader, EffectsSceneCarriesEveryEffectsObjects) {
+    const pfs::Scene s = pfs::load_scene(std::string(PF_TEST_SCENES_DIR) + "/fountain_pool.json");
+    EXPECT_EQ(s.features, uint32_t(PF_FEATURE_ALL));
+    ASSERT_EQ(s.force_fields.size(), 1u);
+    ASSERT_EQ(s.obstacles.size(), 1u);
+    ASSERT_EQ(s.emitters.size(), 1u);
+    ASSERT_EQ(s.sinks.size(), 1u);
+    EXPECT_EQ(s.force_fields[0].type, PF_FORCE_FIELD_DIRECTIONAL);
+    EXPECT_FLOAT_EQ(s.force_fields[0].drag, 0.3f);
+    EXPECT_EQ(s.obstacles[0].shape, PF_OBSTACLE_BOX);
+    EXPECT_FLOAT_EQ(s.obstacles[0].half_extents[1], 0.1f);
+    EXPECT_EQ(s.emitters[0].shape, PF_EMITTER_DISC);
+    EXPECT_EQ(s.emitters[0].rate_unit, PF_RATE_VOLUME_PER_SECOND);
+    EXPECT_FLOAT_EQ(s.emitters[0].velocity[1], 3.2f);
+    EXPECT_FLOAT_EQ(s.emitters[0].rotation[3], 1.0f);  // pf_default_emitter's identity
+    EXPECT_EQ(s.sinks[0].shape, PF_SINK_BOX);
+    EXPECT_TRUE(s.has_preset);
+    EXPECT_EQ(s.preset, PF_QUALITY_FAST);
+    const pfs::Scene b = pfs::parse_scene(
+        R"({"grid": {"size": [4, 4, 4], "cell_size": 0.1}, "max_particles": 10, "preset": "balanced",
+            "params": {"pressure_tolerance": 0.01}})", "preset.json");
+    EXPECT_EQ(b.params.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
+    EXPECT_FLOAT_EQ(b.params.pressure_tolerance, 0.01f);
 }
 
 TEST(SceneLoader, EdgesOfFloatRangeLoadExactly) {

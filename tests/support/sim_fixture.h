@@ -102,13 +102,19 @@ inline std::vector<double> words_as_floats(const std::vector<uint32_t>& words) {
     return out;
 }
 
+// Exact live count (waits for the GPU while emitters or sinks are on).
+inline uint32_t live_count(pf_sim* sim) {
+    uint32_t n = 0;
+    EXPECT_EQ(pf_get_particle_count(sim, &n), PF_OK);
+    return n;
+}
+
 inline ParticleState read_all(pf_sim* sim) {
-    pf_stats st{};
-    pf_get_stats(sim, &st);
+    const uint32_t n = live_count(sim);
     ParticleState p;
-    p.pos.resize(size_t(st.particle_count) * 3);
-    p.vel.resize(size_t(st.particle_count) * 3);
-    EXPECT_EQ(pf_read_particles(sim, 0, st.particle_count, p.pos.data(), p.vel.data()), PF_OK);
+    p.pos.resize(size_t(n) * 3);
+    p.vel.resize(size_t(n) * 3);
+    EXPECT_EQ(pf_read_particles(sim, 0, n, p.pos.data(), p.vel.data()), PF_OK);
     return p;
 }
 

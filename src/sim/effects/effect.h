@@ -4,7 +4,9 @@
 // owns its programs, buffers and statistics entries, and makes them only when its feature is
 // first turned on (init), so an effect that is off costs nothing: no program is built, no pass
 // dispatched, no statistics entry listed. Adding an effect: a class here, a feature bit in
-// pf.h, one case in make_effect (registry.cpp), and its passes at the stages it needs.
+// pf.h, one case in make_effect (registry.cpp), and its passes at the stages it needs. Effects
+// that add or remove particles (emitters, sinks) make the simulation keep its live count on
+// the GPU (docs/design.md §9.3).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -24,15 +26,29 @@ struct EffectBuffers {
     const gl::Buffer& face_accum;  // P2G sums (momentum, weight) per face
     const gl::Buffer& face_vel;    // face velocities
     const gl::Buffer& cell_type;   // AIR / FLUID / SOLID per cell
-    uint32_t particles = 0;
+    const gl::Buffer& count_record;  // the live-count record (PF_COUNT_* in common/slots.h)
+    const gl::Buffer& status;      // the step's status words (flags)
+    const gl::Buffer* affine;      // APIC affine vectors while params.transfer is APIC, else nullptr
+    uint32_t particles = 0;        // particle slots passes cover (an upper bound of the live count
+                                   // while the GPU keeps it: kernels compare with sim.particle_count)
     uint64_t cells = 0, faces = 0;
 };
 
-// The points of a substep (docs/design.md §4) where effects add passes, in substep order.
+// What an effect learns at the start of each pf_step.
+struct FrameInfo {
+    float frame_dt = 0.0f;          // s
+    uint64_t step = 0;              // pf_step number (1 for the first)
+    double particle_volume = 0.0;   // m^3 of liquid one particle stands for at rest density
+};
+
+// The points of a step (docs/design.md §4) where effects add passes, in step order: the
+// substep stages repeat every substep, the others run once per step.
 enum class EffectStage : uint8_t {
+    before_substeps,    // once per step, before the first substep (emitters add particles)
     after_grid_forces,  // face velocities hold u_old + gravity (force fields)
     after_classify,     // cells are FLUID / AIR (obstacles mark SOLID and set their faces)
     after_advect,       // particles have moved (obstacles push them out)
+    after_substeps,     // once per step, after the last substep (sinks remove particles)
 };
 
 class Effect {
@@ -48,9 +64,18 @@ public:
     virtual void begin_step() = 0;
     // Records its passes of one substep at `stage` (nothing at stages it does not use).
     virtual void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) = 0;
+    // Start of a step, before begin_step: the frame's length (emitters turn rates into counts).
+    virtual void begin_frame(const FrameInfo&) {}
     // True while it does work on the liquid (adds energy): PF_FLAG_ENERGY_GAINED then takes its
     // reference after the last such step instead of before it.
     virtual bool does_work() const { return false; }
+    // Particles this step's passes may append after the live ones (the host raises its upper
+    // bound of the live count by it); only effects that keep the count on the GPU add any.
+    virtual uint32_t particles_added() const { return 0; }
+    // True while its passes may change which particles exist (the volume reference restarts).
+    virtual bool changes_particles() const { return false; }
+    // Fastest speed (m/s) it gives particles this step: the CFL estimate includes it.
+    virtual float added_speed() const { return 0.0f; }
 };
 
 }  // namespace pf

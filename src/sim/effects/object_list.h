@@ -35,6 +35,8 @@ public:
         return false;
     }
     const std::vector<T>& items() const { return items_; }
+    // The objects for in-place updates of state the host keeps with them (ids unchanged).
+    std::vector<T>& items_mutable() { return items_; }
     uint32_t size() const { return uint32_t(items_.size()); }
 
 private:

@@ -1,15 +1,19 @@
 // The one place that maps PF_FEATURE_* bits to effect classes.
 #include "sim/effects/registry.h"
 
+#include "sim/effects/emitters/emitters.h"
 #include "sim/effects/force_fields/force_fields.h"
 #include "sim/effects/obstacles/obstacles.h"
+#include "sim/effects/sinks/sinks.h"
 
 namespace pf {
 
-std::unique_ptr<Effect> make_effect(uint32_t feature) {
+std::unique_ptr<Effect> make_effect(uint32_t feature, const pf_sim_desc& desc) {
     switch (feature) {
         case PF_FEATURE_FORCE_FIELDS: return std::make_unique<ForceFieldsEffect>();
         case PF_FEATURE_OBSTACLES: return std::make_unique<ObstaclesEffect>();
+        case PF_FEATURE_EMITTERS: return std::make_unique<EmittersEffect>(desc.max_particles, desc.seed);
+        case PF_FEATURE_SINKS: return std::make_unique<SinksEffect>(desc.max_particles);
         default: return nullptr;
     }
 }

@@ -1,0 +1,206 @@
+// The effects part of a scene file: "features", "preset" and the object lists (force fields,
+// obstacles, emitters, sinks), parsed into pf_* structs that start from pf_default_*(), and
+// added to a simulation with the object's JSON Pointer in every error.
+#include "scene_effects.h"
+
+#include "scene_parser.h"
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pfs {
+
+namespace {
+
+// name -> value for one enum field.
+template <typename E>
+using Names = std::vector<std::pair<const char*, E>>;
+
+template <typename E>
+E enum_value(const Parser& p, const json& j, const std::string& path, const Names<E>& names) {
+    const std::string name = p.string(j, path);
+    std::string list;
+    for (const auto& [n, v] : names) {
+        if (name == n) return v;
+        list += std::string(list.empty() ? "" : ", ") + n;
+    }
+    p.fail(path, "unknown \"" + name + "\" (one of " + list + ")");
+}
+
+void copy3(const vec3f& v, float out[3]) {
+    for (int a = 0; a < 3; ++a) out[a] = v[a];
+}
+
+void quaternion(const Parser& p, const json& j, const std::string& path, float out[4]) {
+    if (!j.is_array() || j.size() != 4) p.fail(path, "must be an array of 4 numbers (x, y, z, w), found " + Parser::describe(j));
+    for (size_t i = 0; i < 4; ++i) out[i] = p.real(j[i], Parser::join(path, i));
+}
+
+// Reads the members an object may have, each by key; unknown keys are refused.
+struct ObjectReader {
+    const Parser& p;
+    const json& obj;
+    std::string path;
+    const json* find(const char* key) const {
+        auto it = obj.find(key);
+        return it == obj.end() ? nullptr : &*it;
+    }
+    std::string at(const char* key) const { return Parser::join(path, key); }
+    void vec3(const char* key, float out[3]) const {
+        if (const json* j = find(key)) copy3(p.vec3(*j, at(key)), out);
+    }
+    void real(const char* key, float& out) const {
+        if (const json* j = find(key)) out = p.real(*j, at(key));
+    }
+    void rotation(float out[4]) const {
+        if (const json* j = find("rotation")) quaternion(p, *j, at("rotation"), out);
+    }
+};
+
+const Names<pf_force_field_type> kFieldTypes = {
+    {"directional", PF_FORCE_FIELD_DIRECTIONAL}, {"point", PF_FORCE_FIELD_POINT}, {"vortex", PF_FORCE_FIELD_VORTEX}};
+const Names<pf_obstacle_shape> kObstacleShapes = {
+    {"box", PF_OBSTACLE_BOX}, {"sphere", PF_OBSTACLE_SPHERE}, {"capsule", PF_OBSTACLE_CAPSULE}};
+const Names<pf_emitter_shape> kEmitterShapes = {
+    {"box", PF_EMITTER_BOX}, {"sphere", PF_EMITTER_SPHERE}, {"disc", PF_EMITTER_DISC}};
+const Names<pf_rate_unit> kRateUnits = {
+    {"particles_per_second", PF_RATE_PARTICLES_PER_SECOND}, {"volume_per_second", PF_RATE_VOLUME_PER_SECOND}};
+const Names<pf_sink_shape> kSinkShapes = {{"box", PF_SINK_BOX}, {"sphere", PF_SINK_SPHERE}};
+const Names<uint32_t> kFeatures = {{"force_fields", PF_FEATURE_FORCE_FIELDS},
+                                   {"obstacles", PF_FEATURE_OBSTACLES},
+                                   {"emitters", PF_FEATURE_EMITTERS},
+                                   {"sinks", PF_FEATURE_SINKS}};
+
+pf_force_field read_field(const ObjectReader& r) {
+    r.p.check_keys(r.obj, r.path, {"type", "position", "vector", "strength", "radius", "drag"});
+    pf_force_field f = pf_default_force_field();
+    if (const json* j = r.find("type")) f.type = enum_value(r.p, *j, r.at("type"), kFieldTypes);
+    r.vec3("position", f.position);
+    r.vec3("vector", f.vector);
+    r.real("strength", f.strength);
+    r.real("radius", f.radius);
+    r.real("drag", f.drag);
+    return f;
+}
+
+pf_obstacle read_obstacle(const ObjectReader& r) {
+    r.p.check_keys(r.obj, r.path, {"shape", "position", "rotation", "half_extents", "radius", "half_height"});
+    pf_obstacle o = pf_default_obstacle();
+    if (const json* j = r.find("shape")) o.shape = enum_value(r.p, *j, r.at("shape"), kObstacleShapes);
+    r.vec3("position", o.position);
+    r.rotation(o.rotation);
+    r.vec3("half_extents", o.half_extents);
+    r.real("radius", o.radius);
+    r.real("half_height", o.half_height);
+    return o;
+}
+
+pf_emitter read_emitter(const ObjectReader& r) {
+    r.p.check_keys(r.obj, r.path, {"shape", "position", "rotation", "half_extents", "radius", "velocity", "rate", "rate_unit"});
+    pf_emitter e = pf_default_emitter();
+    if (const json* j = r.find("shape")) e.shape = enum_value(r.p, *j, r.at("shape"), kEmitterShapes);
+    r.vec3("position", e.position);
+    r.rotation(e.rotation);
+    r.vec3("half_extents", e.half_extents);
+    r.real("radius", e.radius);
+    r.vec3("velocity", e.velocity);
+    r.real("rate", e.rate);
+    if (const json* j = r.find("rate_unit")) e.rate_unit = enum_value(r.p, *j, r.at("rate_unit"), kRateUnits);
+    return e;
+}
+
+pf_sink read_sink(const ObjectReader& r) {
+    r.p.check_keys(r.obj, r.path, {"shape", "position", "rotation", "half_extents", "radius"});
+    pf_sink k = pf_default_sink();
+    if (const json* j = r.find("shape")) k.shape = enum_value(r.p, *j, r.at("shape"), kSinkShapes);
+    r.vec3("position", k.position);
+    r.rotation(k.rotation);
+    r.vec3("half_extents", k.half_extents);
+    r.real("radius", k.radius);
+    return k;
+}
+
+// Parses the list `key` (if present) with `read`; the scene must name `feature`.
+template <typename T, typename Read>
+void read_list(const Parser& p, const json& root, const char* key, uint32_t feature, const Scene& s,
+               std::vector<T>& out, Read read) {
+    auto it = root.find(key);
+    if (it == root.end()) return;
+    const std::string path = Parser::join("", key);
+    if (!it->is_array()) p.fail(path, "must be an array of objects, found " + Parser::describe(*it));
+    if (!(s.features & feature)) p.fail(path, std::string("has objects but \"") + key + "\" is not listed in /features");
+    for (size_t i = 0; i < it->size(); ++i) {
+        const std::string at = Parser::join(path, i);
+        out.push_back(read(ObjectReader{p, p.object((*it)[i], at), at}));
+    }
+}
+
+// Adds every object of a list; on failure names the object (the library logged its reason).
+template <typename T, typename Add>
+void add_list(pf_sim* sim, const Scene& s, const char* key, const std::vector<T>& list, Add add) {
+    for (size_t i = 0; i < list.size(); ++i) {
+        const pf_result r = add(sim, &list[i], nullptr);
+        if (r != PF_OK) {
+            throw Error(s.path + ": " + Parser::join(Parser::join("", key), i) + ": refused by the library: " +
+                        pf_result_string(r) + " (the log says why)");
+        }
+    }
+}
+
+} // namespace
+
+void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
+    const Parser p{path};
+    if (auto it = root.find("preset"); it != root.end()) {
+        try {
+            s.preset = parse_preset(p.string(*it, "/preset"), "value");
+        } catch (const Error& e) {
+            p.fail("/preset", e.what());
+        }
+        s.has_preset = true;
+    }
+    if (auto it = root.find("features"); it != root.end()) {
+        if (!it->is_array()) p.fail("/features", "must be an array of feature names, found " + Parser::describe(*it));
+        for (size_t i = 0; i < it->size(); ++i) s.features |= enum_value(p, (*it)[i], Parser::join("/features", i), kFeatures);
+    }
+    read_list(p, root, "force_fields", PF_FEATURE_FORCE_FIELDS, s, s.force_fields, read_field);
+    read_list(p, root, "obstacles", PF_FEATURE_OBSTACLES, s, s.obstacles, read_obstacle);
+    read_list(p, root, "emitters", PF_FEATURE_EMITTERS, s, s.emitters, read_emitter);
+    read_list(p, root, "sinks", PF_FEATURE_SINKS, s, s.sinks, read_sink);
+}
+
+uint32_t parse_feature_list(const std::string& list, const char* what) {
+    uint32_t bits = 0;
+    size_t start = 0;
+    while (start <= list.size()) {
+        const size_t comma = std::min(list.find(',', start), list.size());
+        const std::string name = list.substr(start, comma - start);
+        start = comma + 1;
+        if (name.empty() || name == "none") continue;
+        if (name == "all") {
+            bits |= PF_FEATURE_ALL;
+            continue;
+        }
+        bool known = false;
+        for (const auto& [n, v] : kFeatures) {
+            if (name == n) bits |= v, known = true;
+        }
+        if (!known) {
+            throw Error(std::string(what) + ": unknown feature '" + name +
+                        "' (force_fields, obstacles, emitters, sinks, all, none)");
+        }
+    }
+    return bits;
+}
+
+void add_scene_effects(pf_sim* sim, const Scene& s) {
+    add_list(sim, s, "force_fields", s.force_fields, pf_add_force_field);
+    add_list(sim, s, "obstacles", s.obstacles, pf_add_obstacle);
+    add_list(sim, s, "emitters", s.emitters, pf_add_emitter);
+    add_list(sim, s, "sinks", s.sinks, pf_add_sink);
+}
+
+} // namespace pfs

@@ -1,0 +1,38 @@
+// Sinks (PF_FEATURE_SINKS): boxes and spheres that remove the particles inside them, up to
+// PF_MAX_SINKS. Once per step after the last substep, three passes compact the particles on the
+// GPU (pass list entry "sinks", PF_PASS_ADVECT group): sink_mark counts the particles inside,
+// sink_lists lists the holes below the new count and the survivors above it, sink_move moves
+// each such survivor into a hole and writes the new live count. The host never reads the
+// count back in the step (docs/design.md §9.4).
+#pragma once
+#include "sim/effects/effect.h"
+#include "sim/effects/object_list.h"
+
+namespace pf {
+
+class SinksEffect final : public Effect {
+public:
+    using List = ObjectList<pf_sink, PF_MAX_SINKS>;
+    explicit SinksEffect(uint32_t capacity) : capacity_(capacity) {}
+    uint32_t feature() const override { return PF_FEATURE_SINKS; }
+    pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
+    void begin_step() override;
+    void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;
+    bool changes_particles() const override { return uploaded_ > 0; }
+
+    // The host list; call changed() after editing it.
+    List& list() { return list_; }
+    void changed() { dirty_ = true; }
+
+private:
+    uint32_t capacity_;
+    List list_;
+    bool dirty_ = true;
+    gl::Buffer records_;          // PF_MAX_SINKS records (effects/sinks/sink_records.h)
+    gl::Buffer state_;            // the compaction counters (PF_SINK_* words)
+    gl::Buffer holes_, movers_;   // slot lists, one uint per particle slot
+    StatId stat_ = 0;
+    uint32_t uploaded_ = 0;       // records live on the GPU
+};
+
+}  // namespace pf
