@@ -110,11 +110,18 @@ pf_sim_desc make_sim_desc(const Scene& scene, pf_gl_get_proc_address_fn get_proc
 /// the box.
 void fill_scene(pf_sim* sim, const Scene& scene);
 
+/// The ids the library gave the scene's objects, in file order.
+struct SceneEffectIds {
+    std::vector<uint32_t> force_fields, obstacles, emitters, sinks;
+};
+
 /// Adds the scene's force fields, obstacles, emitters and sinks to sim. Throws pfs::Error naming
 /// the object's JSON Pointer and the library's reason on failure.
-void add_scene_effects(pf_sim* sim, const Scene& scene);
+SceneEffectIds add_scene_effects(pf_sim* sim, const Scene& scene);
 
-/// pf_create + fill_scene + add_scene_effects; throws on failure (and destroys the half-made sim).
-pf_sim* create_scene_sim(const Scene& scene, pf_gl_get_proc_address_fn get_proc, pf_logger logger);
+/// pf_create + fill_scene + add_scene_effects (ids into *ids when given); throws on failure (and
+/// destroys the half-made sim).
+pf_sim* create_scene_sim(const Scene& scene, pf_gl_get_proc_address_fn get_proc, pf_logger logger,
+                         SceneEffectIds* ids = nullptr);
 
 } // namespace pfs

@@ -138,11 +138,15 @@ void read_list(const Parser& p, const json& root, const char* key, uint32_t feat
     }
 }
 
-// Adds every object of a list; on failure names the object (the library logged its reason).
+// Adds every object of a list, their ids into `ids`; on failure names the object (the library
+// logged its reason).
 template <typename T, typename Add>
-void add_list(pf_sim* sim, const Scene& s, const char* key, const std::vector<T>& list, Add add) {
+void add_list(pf_sim* sim, const Scene& s, const char* key, const std::vector<T>& list, Add add,
+              std::vector<uint32_t>& ids) {
     for (size_t i = 0; i < list.size(); ++i) {
-        const pf_result r = add(sim, &list[i], nullptr);
+        uint32_t id = 0;
+        const pf_result r = add(sim, &list[i], &id);
+        ids.push_back(id);
         if (r != PF_OK) {
             throw Error(s.path + ": " + Parser::join(Parser::join("", key), i) + ": refused by the library: " +
                         pf_result_string(r) + " (the log says why)");
@@ -196,11 +200,13 @@ uint32_t parse_feature_list(const std::string& list, const char* what) {
     return bits;
 }
 
-void add_scene_effects(pf_sim* sim, const Scene& s) {
-    add_list(sim, s, "force_fields", s.force_fields, pf_add_force_field);
-    add_list(sim, s, "obstacles", s.obstacles, pf_add_obstacle);
-    add_list(sim, s, "emitters", s.emitters, pf_add_emitter);
-    add_list(sim, s, "sinks", s.sinks, pf_add_sink);
+SceneEffectIds add_scene_effects(pf_sim* sim, const Scene& s) {
+    SceneEffectIds ids;
+    add_list(sim, s, "force_fields", s.force_fields, pf_add_force_field, ids.force_fields);
+    add_list(sim, s, "obstacles", s.obstacles, pf_add_obstacle, ids.obstacles);
+    add_list(sim, s, "emitters", s.emitters, pf_add_emitter, ids.emitters);
+    add_list(sim, s, "sinks", s.sinks, pf_add_sink, ids.sinks);
+    return ids;
 }
 
 } // namespace pfs

@@ -347,6 +347,7 @@ private:
     bool ui_accuracy_knobs(pf_sim_params& p);
     bool ui_other_params(pf_sim_params& p);
     void apply_params(const pf_sim_params& p);
+    void ui_effects();
     void ui_rendering();
     void ui_stats();
     void ui_history();
@@ -360,6 +361,8 @@ private:
     GLFWwindow* window_;
     LogCapture log_; // before sim_: the sim logs into it until destroyed
     pfs::Scene scene_;
+    pfs::SceneEffectIds effect_ids_;    // the library's ids of scene_'s objects
+    std::string effects_error_;         // why the last effects edit was refused
     std::string scene_path_;
     std::vector<std::string> scene_files_;
     SimPtr sim_;
@@ -412,7 +415,8 @@ void Viewer::load_scene(const std::string& path) {
     sim_.reset();
     scene_ = std::move(s);
     scene_path_ = path;
-    sim_.reset(pfs::create_scene_sim(scene_, glfw_get_proc, log_.logger()));
+    sim_.reset(pfs::create_scene_sim(scene_, glfw_get_proc, log_.logger(), &effect_ids_));
+    effects_error_.clear();
     pfs::check(pf_get_params(sim_.get(), &params_), "pf_get_params");
     preset_ = 0;
     params_error_.clear();
@@ -667,6 +671,7 @@ void Viewer::ui(int fb_w, int fb_h) {
     if (!last_error_.empty()) error_text(last_error_);
     ui_scene();
     ui_simulation();
+    ui_effects();
     ui_rendering();
     ImGui::PopItemWidth();
     ImGui::End();
@@ -816,6 +821,53 @@ bool Viewer::ui_other_params(pf_sim_params& p) {
         changed = true;
     }
     return changed;
+}
+
+// Effects: each PF_FEATURE_* toggled live (pf_set_features builds an effect the first time it is
+// turned on and dispatches nothing for it while off: the pass table shows it), the scene's
+// obstacles moved and its emitters' rates changed between steps. A refused edit shows the
+// library's logged reason and changes nothing.
+void Viewer::ui_effects() {
+    if (!ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    uint32_t features = 0;
+    pfs::check(pf_get_features(sim_.get(), &features), "pf_get_features");
+    struct Toggle {
+        const char* label;
+        uint32_t bit;
+        size_t objects;
+    };
+    const Toggle toggles[] = {{"force fields", PF_FEATURE_FORCE_FIELDS, scene_.force_fields.size()},
+                              {"obstacles", PF_FEATURE_OBSTACLES, scene_.obstacles.size()},
+                              {"emitters", PF_FEATURE_EMITTERS, scene_.emitters.size()},
+                              {"sinks", PF_FEATURE_SINKS, scene_.sinks.size()}};
+    auto report = [&](const char* call, pf_result r) { effects_error_ = r == PF_OK ? std::string() : log_.explain(call, r); };
+    for (const Toggle& t : toggles) {
+        bool on = (features & t.bit) != 0;
+        const std::string label = std::string(t.label) + " (" + std::to_string(t.objects) + ")";
+        if (ImGui::Checkbox(label.c_str(), &on)) {
+            log_.clear();
+            report("pf_set_features", pf_set_features(sim_.get(), on ? (features | t.bit) : (features & ~t.bit)));
+        }
+    }
+    for (size_t i = 0; i < scene_.obstacles.size() && i < effect_ids_.obstacles.size(); ++i) {
+        pf_obstacle& o = scene_.obstacles[i];
+        const std::string label = "obstacle " + std::to_string(i) + " position";
+        if (ImGui::DragFloat3(label.c_str(), o.position, 0.005f, -1e4f, 1e4f, "%.3f")) {
+            log_.clear();
+            report("pf_set_obstacle", pf_set_obstacle(sim_.get(), effect_ids_.obstacles[i], &o));
+        }
+    }
+    for (size_t i = 0; i < scene_.emitters.size() && i < effect_ids_.emitters.size(); ++i) {
+        pf_emitter& e = scene_.emitters[i];
+        const std::string label = "emitter " + std::to_string(i) +
+                                  (e.rate_unit == PF_RATE_VOLUME_PER_SECOND ? " rate (m^3/s)" : " rate (1/s)");
+        const float most = e.rate_unit == PF_RATE_VOLUME_PER_SECOND ? 0.1f : 1e5f;
+        if (ImGui::SliderFloat(label.c_str(), &e.rate, 0.0f, most, "%.4g", ImGuiSliderFlags_Logarithmic)) {
+            log_.clear();
+            report("pf_set_emitter", pf_set_emitter(sim_.get(), effect_ids_.emitters[i], &e));
+        }
+    }
+    if (!effects_error_.empty()) error_text(effects_error_);
 }
 
 // Every change goes through pf_set_params; a refused one leaves the library's parameters as
