@@ -6,7 +6,10 @@
 //    parameters too); a successful one changes exactly what it says (added particles appear
 //    at the end as given, set_params reads back resolved, clear empties);
 //  - the particle count always equals the model's, and stepping keeps every particle finite
-//    and inside the domain.
+//    and inside the domain;
+//  - effect objects (force fields, obstacles, emitters, sinks) and features: a hostile field is
+//    refused, a plausible object accepted up to each list's capacity, ids kept by the model
+//    accepted by set/remove and unknown ones refused, and none of it touches particles.
 // Run under ASan/UBSan too (scripts/test.sh), where "no crash" includes "no sanitizer report".
 //
 //   pf_api_fuzz [--seed S] [--seconds T] [--calls N] [--verbose]
@@ -209,6 +212,7 @@ struct Sim {
     pf_sim_desc desc{};     // as created, max_speed resolved
     pf_sim_params params{}; // resolved, as the library must report them
     uint32_t count = 0;     // the model's particle count
+    std::vector<uint32_t> ids[4];  // live object ids: force fields, obstacles, emitters, sinks
 
     double lo(int a) const { return desc.origin[a]; }
     double hi(int a) const { return desc.origin[a] + double(desc.cell_size) * desc.grid_size[a]; }
@@ -254,7 +258,7 @@ public:
     void one_call() {
         if (sims_.empty() || g_.chance(0.01)) return create();
         Sim& s = sims_[g_.below(uint32_t(sims_.size()))];
-        switch (g_.below(16)) {
+        switch (g_.below(17)) {
         case 0: case 1: case 2: return add(s);
         case 3: case 4: return fill(s);
         case 5: case 6: case 7: return step(s);
@@ -265,6 +269,7 @@ public:
         case 12: return queries(s);
         case 13: return g_.chance(0.2) ? clear(s) : add(s);
         case 14: return null_sim();
+        case 15: return effects(s);
         default: return g_.chance(0.15) ? destroy(s) : step(s);
         }
     }
@@ -538,6 +543,162 @@ private:
         CHECK(pf_get_gl_buffers(s.sim, &b) == PF_OK && b.count == s.count && b.stride == 16, "gl buffers");
         CHECK(pf_get_stats(s.sim, nullptr) == PF_ERROR_INVALID_ARGUMENT, "NULL stats out");
         CHECK(pf_clear_flags(s.sim) == PF_OK, "clear flags");
+    }
+
+    // Effect objects: random ones (sometimes with one hostile field) added, replaced or removed,
+    // and features toggled. Emitters and sinks stay off (the count model predicts neither
+    // emission nor drains), so these calls never change particles or parameters; a hostile
+    // field must be refused with PF_ERROR_INVALID_ARGUMENT, a plausible object accepted (or
+    // PF_ERROR_CAPACITY when the list is full), and ids the model holds accepted by set/remove.
+    void effects(Sim& s) {
+        const uint32_t kind = g_.below(5);
+        if (kind == 4) return features(s);
+        static const char* const kKinds[] = {"force_field", "obstacle", "emitter", "sink"};
+        static const uint32_t kCapacity[] = {PF_MAX_FORCE_FIELDS, PF_MAX_OBSTACLES, PF_MAX_EMITTERS, PF_MAX_SINKS};
+        const Snapshot before = s.snapshot();
+        std::vector<uint32_t>& ids = s.ids[kind];
+        const bool hostile = g_.chance(0.3);
+        const uint32_t op = g_.below(3);  // add, set, remove
+        const bool known = !ids.empty() && g_.chance(0.8);
+        const uint32_t id = known ? ids[g_.below(uint32_t(ids.size()))] : 1000000u + g_.below(10);
+        pf_result r = PF_OK;
+        if (op == 2) {
+            trace("pf_remove_%s %u", kKinds[kind], id);
+            r = kind == 0 ? pf_remove_force_field(s.sim, id) : kind == 1 ? pf_remove_obstacle(s.sim, id)
+                : kind == 2 ? pf_remove_emitter(s.sim, id) : pf_remove_sink(s.sim, id);
+            CHECK(r == (known ? PF_OK : PF_ERROR_INVALID_ARGUMENT), "remove %s %u -> %s", kKinds[kind], id, pf_result_string(r));
+            if (known) ids.erase(std::find(ids.begin(), ids.end(), id));
+        } else {
+            uint32_t out = 0;
+            trace("pf_%s_%s%s", op == 0 ? "add" : "set", kKinds[kind], hostile ? " (hostile)" : "");
+            if (kind == 0) {
+                const pf_force_field f = random_field(s, hostile);
+                r = op == 0 ? pf_add_force_field(s.sim, &f, &out) : pf_set_force_field(s.sim, id, &f);
+            } else if (kind == 1) {
+                const pf_obstacle o = random_obstacle(s, hostile);
+                r = op == 0 ? pf_add_obstacle(s.sim, &o, &out) : pf_set_obstacle(s.sim, id, &o);
+            } else if (kind == 2) {
+                const pf_emitter e = random_emitter(s, hostile);
+                r = op == 0 ? pf_add_emitter(s.sim, &e, &out) : pf_set_emitter(s.sim, id, &e);
+            } else {
+                const pf_sink k = random_sink(s, hostile);
+                r = op == 0 ? pf_add_sink(s.sim, &k, &out) : pf_set_sink(s.sim, id, &k);
+            }
+            const pf_result expected = hostile ? PF_ERROR_INVALID_ARGUMENT
+                                       : op == 0 ? (ids.size() >= kCapacity[kind] ? PF_ERROR_CAPACITY : PF_OK)
+                                                 : (known ? PF_OK : PF_ERROR_INVALID_ARGUMENT);
+            CHECK(r == expected, "%s %s -> %s, model says %s", op == 0 ? "add" : "set", kKinds[kind], pf_result_string(r),
+                  pf_result_string(expected));
+            if (op == 0 && r == PF_OK) {
+                CHECK(std::find(ids.begin(), ids.end(), out) == ids.end(), "id %u given twice", out);
+                ids.push_back(out);
+            }
+        }
+        CHECK(s.snapshot() == before, "an effects call changed particles or parameters");
+    }
+
+    // Features the count model can follow (force fields, obstacles), or unknown bits.
+    void features(Sim& s) {
+        const bool unknown = g_.chance(0.1);
+        const uint32_t f = unknown ? (1u << (4 + g_.below(28))) : g_.below(4);
+        uint32_t was = 0;
+        CHECK(pf_get_features(s.sim, &was) == PF_OK, "get features");
+        trace("pf_set_features %#x", f);
+        const Snapshot before = s.snapshot();
+        const pf_result r = pf_set_features(s.sim, f);
+        CHECK(r == (unknown ? PF_ERROR_INVALID_ARGUMENT : PF_OK), "set_features %#x -> %s", f, pf_result_string(r));
+        uint32_t now = 0;
+        CHECK(pf_get_features(s.sim, &now) == PF_OK && now == (unknown ? was : f), "features %#x after setting %#x", now, f);
+        CHECK(s.snapshot() == before, "pf_set_features changed particles or parameters");
+    }
+
+    // A point well inside the domain, and a size that keeps a turned shape around it inside.
+    void inner(const Sim& s, float p[3], double& size) {
+        double extent = 1e30;
+        for (int a = 0; a < 3; ++a) extent = std::min(extent, s.hi(a) - s.lo(a));
+        for (int a = 0; a < 3; ++a) p[a] = float(s.lo(a) + (s.hi(a) - s.lo(a)) * g_.uniform(0.4, 0.6));
+        size = extent * g_.uniform(0.02, 0.1);
+    }
+    void rotation(float q[4]) {
+        for (int i = 0; i < 4; ++i) q[i] = float(g_.uniform(-1, 1));
+    }
+    // One hostile value in `slot`: NaN, infinity or a huge number.
+    float poison() { return g_.chance(0.5) ? kNaN : (g_.chance(0.5) ? kInf : -kInf); }
+
+    pf_force_field random_field(const Sim& s, bool hostile) {
+        pf_force_field f = pf_default_force_field();
+        double size = 0;
+        inner(s, f.position, size);
+        g_.enumeration(f.type, PF_FORCE_FIELD_TYPE_COUNT);
+        if (raw(f.type) >= PF_FORCE_FIELD_TYPE_COUNT && !hostile) set_raw(f.type, 0);
+        for (float& v : f.vector) v = float(g_.uniform(-5, 5));
+        f.vector[1] = 1.0f;  // a vortex needs a non-zero axis
+        f.strength = float(g_.uniform(-5, 5));
+        f.radius = float(size * 4);
+        f.drag = float(g_.uniform(0, 2));
+        if (hostile) {
+            switch (g_.below(3)) {
+                case 0: set_raw(f.type, 3 + int32_t(g_.below(5))); break;
+                case 1: f.position[g_.below(3)] = poison(); break;
+                default: f.drag = -1.0f, set_raw(f.type, PF_FORCE_FIELD_DIRECTIONAL); break;
+            }
+        }
+        return f;
+    }
+    pf_obstacle random_obstacle(const Sim& s, bool hostile) {
+        pf_obstacle o = pf_default_obstacle();
+        double size = 0;
+        inner(s, o.position, size);
+        rotation(o.rotation);
+        set_raw(o.shape, int32_t(g_.below(PF_OBSTACLE_SHAPE_COUNT)));
+        for (float& h : o.half_extents) h = float(size);
+        o.radius = float(size), o.half_height = float(size);
+        if (hostile) {
+            switch (g_.below(3)) {
+                case 0: set_raw(o.shape, -1 - int32_t(g_.below(5))); break;
+                case 1: o.rotation[g_.below(4)] = poison(); break;
+                default: o.radius = -float(size), set_raw(o.shape, PF_OBSTACLE_SPHERE); break;
+            }
+        }
+        return o;
+    }
+    pf_emitter random_emitter(const Sim& s, bool hostile) {
+        pf_emitter e = pf_default_emitter();
+        double size = 0;
+        inner(s, e.position, size);
+        rotation(e.rotation);
+        set_raw(e.shape, int32_t(g_.below(PF_EMITTER_SHAPE_COUNT)));
+        set_raw(e.rate_unit, int32_t(g_.below(PF_RATE_UNIT_COUNT)));
+        for (float& h : e.half_extents) h = float(size);
+        e.radius = float(size);
+        for (float& v : e.velocity) v = float(g_.uniform(-0.5, 0.5)) * s.desc.max_speed;
+        e.rate = float(g_.uniform(0, 1000));
+        if (hostile) {
+            switch (g_.below(4)) {
+                case 0: set_raw(e.rate_unit, 2 + int32_t(g_.below(5))); break;
+                case 1: e.rate = g_.chance(0.5) ? -1.0f : poison(); break;
+                case 2: e.velocity[0] = 2.0f * s.desc.max_speed; break;
+                default: e.position[g_.below(3)] = float(s.hi(0) + s.hi(1) + s.hi(2)) + 1e3f; break;  // outside
+            }
+        }
+        return e;
+    }
+    pf_sink random_sink(const Sim& s, bool hostile) {
+        pf_sink k = pf_default_sink();
+        double size = 0;
+        inner(s, k.position, size);
+        rotation(k.rotation);
+        set_raw(k.shape, int32_t(g_.below(PF_SINK_SHAPE_COUNT)));
+        for (float& h : k.half_extents) h = float(size);
+        k.radius = float(size);
+        if (hostile) {
+            switch (g_.below(3)) {
+                case 0: set_raw(k.shape, 2 + int32_t(g_.below(5))); break;
+                case 1: k.half_extents[g_.below(3)] = poison(); break;
+                default: k.half_extents[g_.below(3)] = 0.0f, set_raw(k.shape, PF_SINK_BOX); break;
+            }
+        }
+        return k;
     }
 
     void clear(Sim& s) {
