@@ -179,8 +179,11 @@ enum {
                                             on the GPU (two passes per step; the live count is kept on the GPU) */
     PF_FEATURE_SINKS = 1u << 3,        /**< pf_add_sink: boxes and spheres removing the particles inside them,
                                             compacted on the GPU (three passes per step) */
+    PF_FEATURE_DOMAIN_MOTION = 1u << 4, /**< pf_set_domain_motion: the engine places and moves the whole domain
+                                             (a tank on a ship, a glass in a hand); the liquid feels its
+                                             acceleration and rotation (one grid pass per substep) */
     PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES | PF_FEATURE_EMITTERS |
-                     PF_FEATURE_SINKS /**< every known feature bit */
+                     PF_FEATURE_SINKS | PF_FEATURE_DOMAIN_MOTION /**< every known feature bit */
 };
 
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
@@ -567,6 +570,30 @@ PF_API pf_result pf_add_sink(pf_sim* sim, const pf_sink* sink, uint32_t* out_id)
 PF_API pf_result pf_set_sink(pf_sim* sim, uint32_t id, const pf_sink* sink);
 /** Removes sink `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
 PF_API pf_result pf_remove_sink(pf_sim* sim, uint32_t id);
+
+/** Where the engine holds the domain (PF_FEATURE_DOMAIN_MOTION). The simulation's coordinates
+ *  (desc.origin, particles, every effect object) are the domain's own frame; a domain point x is
+ *  at position + rotation * x in the world, where the renderer draws it. Each pf_step takes the
+ *  domain's acceleration as the change of velocity and angular_velocity since the previous
+ *  step over that step's frame_dt (zero for the first step after the feature is turned on), and
+ *  applies gravity turned into the domain's frame plus the frame's inertial accelerations
+ *  (linear, Euler, centrifugal and Coriolis) to the liquid. Start from pf_default_domain_motion(). */
+typedef struct pf_domain_motion {
+    float position[3];            /**< world position of the domain frame's origin, m */
+    float rotation[4];            /**< world orientation as a quaternion (x, y, z, w), normalised internally;
+                                       (0, 0, 0, 0) means the identity */
+    float velocity[3];            /**< world velocity of the frame's origin, m/s */
+    float angular_velocity[3];    /**< world angular velocity of the frame, rad/s, |w| <= 1000 */
+} pf_domain_motion;
+
+/** The domain at rest where the world is (identity pose, no motion). */
+PF_API pf_domain_motion pf_default_domain_motion(void);
+/** Sets where the domain is and how it moves, for the next pf_step and the renderer. It may be
+ *  set while PF_FEATURE_DOMAIN_MOTION is off (it acts once it is on). PF_ERROR_INVALID_ARGUMENT
+ *  for NULL, a non-finite value or |angular_velocity| > 1000 rad/s (logged; nothing changes). */
+PF_API pf_result pf_set_domain_motion(pf_sim* sim, const pf_domain_motion* motion);
+/** The domain motion last set (pf_default_domain_motion() if never). */
+PF_API pf_result pf_get_domain_motion(const pf_sim* sim, pf_domain_motion* out);
 
 /* ---- rendering into the engine's frame ----------------------------------------------------- */
 

@@ -14,7 +14,7 @@ through $PFLIP_LIBRARY, next to this package, the source tree's build/ or the sy
 from . import camera, frame
 from ._lib import ABI_VERSION, lib, version
 from ._types import (MAX_EMITTERS, MAX_FORCE_FIELDS, MAX_OBSTACLES, MAX_SINKS, Advection, Camera, DepthConvention,
-                     Emitter, EmitterShape, Feature, Flag, ForceField, ForceFieldType, GlBuffers, LogLevel, Obstacle,
+                     DomainMotion, Emitter, EmitterShape, Feature, Flag, ForceField, ForceFieldType, GlBuffers, LogLevel, Obstacle,
                      ObstacleShape, P2G, ParticleColor, ParticleParams, Pass, PressureSolver, Quality, RateUnit,
                      RenderPass, RenderTarget, Result, SimDesc, SimParams, Sink, SinkShape, SsfFilter, SsfParams,
                      SsfPath, Stats, Transfer)

@@ -100,6 +100,9 @@ _PROTOTYPES = {
     "pf_set_sink": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.Sink)]),
     "pf_remove_sink": (t.c_enum, [_sim, ctypes.c_uint32]),
     "pf_get_particle_count": (t.c_enum, [_sim, _P(ctypes.c_uint32)]),
+    "pf_default_domain_motion": (t.DomainMotion, []),
+    "pf_set_domain_motion": (t.c_enum, [_sim, _P(t.DomainMotion)]),
+    "pf_get_domain_motion": (t.c_enum, [_sim, _P(t.DomainMotion)]),
 }
 
 for _name, (_res, _args) in _PROTOTYPES.items():

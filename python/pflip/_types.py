@@ -102,7 +102,8 @@ class Feature(enum.IntFlag):
     OBSTACLES = 1 << 1
     EMITTERS = 1 << 2
     SINKS = 1 << 3
-    ALL = FORCE_FIELDS | OBSTACLES | EMITTERS | SINKS
+    DOMAIN_MOTION = 1 << 4
+    ALL = FORCE_FIELDS | OBSTACLES | EMITTERS | SINKS | DOMAIN_MOTION
 
 
 class ForceFieldType(enum.IntEnum):
@@ -453,6 +454,24 @@ class Sink(_Struct):
     ]
 
 
+class DomainMotion(_Struct):
+    """pf_domain_motion (PF_FEATURE_DOMAIN_MOTION): where the engine holds the domain and how it
+    moves (world position, rotation quaternion (x, y, z, w), velocity, angular velocity). Start
+    from DomainMotion.default(): at rest where the world is."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_domain_motion()."""
+        return _lib().pf_default_domain_motion()
+
+    _fields_ = [
+        ("position", ctypes.c_float * 3),
+        ("rotation", ctypes.c_float * 4),
+        ("velocity", ctypes.c_float * 3),
+        ("angular_velocity", ctypes.c_float * 3),
+    ]
+
+
 # C name of each mirrored struct, for the layout test.
 C_NAMES = {
     Logger: "pf_logger",
@@ -469,6 +488,7 @@ C_NAMES = {
     Obstacle: "pf_obstacle",
     Emitter: "pf_emitter",
     Sink: "pf_sink",
+    DomainMotion: "pf_domain_motion",
 }
 
 # Enums mirrored above with the C prefix of their values, for the layout test (values checked too).

@@ -49,6 +49,7 @@ _ENUM_FIELDS = {
     t.Obstacle: {"shape": t.ObstacleShape},
     t.Emitter: {"shape": t.EmitterShape, "rate_unit": t.RateUnit},
     t.Sink: {"shape": t.SinkShape},
+    t.DomainMotion: {},
 }
 
 
@@ -414,6 +415,21 @@ class Simulation:
     def remove_sink(self, sink_id):
         """pf_remove_sink; an unknown id raises PflipError(ERROR_INVALID_ARGUMENT)."""
         self._remove_object("sink", sink_id, self._sinks)
+
+    @property
+    def domain_motion(self):
+        """pf_get_domain_motion: where the domain is held and how it moves (a DomainMotion)."""
+        out = t.DomainMotion()
+        self._call("pf_get_domain_motion", ctypes.byref(out))
+        return out
+
+    def set_domain_motion(self, motion=None, **fields):
+        """pf_set_domain_motion: motion (a DomainMotion; default: as it is now) with the keyword
+        fields set, e.g. set_domain_motion(velocity=(1, 0, 0)). Acts while Feature.DOMAIN_MOTION is on;
+        the liquid feels the change of velocity since the previous step as an acceleration."""
+        m = _effect_struct(t.DomainMotion, self.domain_motion if motion is None else motion, fields,
+                           "pf_set_domain_motion")
+        self._call("pf_set_domain_motion", ctypes.byref(m))
 
     # ---- rendering ------------------------------------------------------------------------------
     def render_ssf(self, camera, target, params=None):

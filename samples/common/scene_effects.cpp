@@ -72,7 +72,8 @@ const Names<pf_sink_shape> kSinkShapes = {{"box", PF_SINK_BOX}, {"sphere", PF_SI
 const Names<uint32_t> kFeatures = {{"force_fields", PF_FEATURE_FORCE_FIELDS},
                                    {"obstacles", PF_FEATURE_OBSTACLES},
                                    {"emitters", PF_FEATURE_EMITTERS},
-                                   {"sinks", PF_FEATURE_SINKS}};
+                                   {"sinks", PF_FEATURE_SINKS},
+                                   {"domain_motion", PF_FEATURE_DOMAIN_MOTION}};
 
 pf_force_field read_field(const ObjectReader& r) {
     r.p.check_keys(r.obj, r.path, {"type", "position", "vector", "strength", "radius", "drag"});
@@ -194,7 +195,7 @@ uint32_t parse_feature_list(const std::string& list, const char* what) {
         }
         if (!known) {
             throw Error(std::string(what) + ": unknown feature '" + name +
-                        "' (force_fields, obstacles, emitters, sinks, all, none)");
+                        "' (force_fields, obstacles, emitters, sinks, domain_motion, all, none)");
         }
     }
     return bits;

@@ -20,6 +20,7 @@ layout(std140, binding = PF_UBO_RENDER) uniform RenderUniforms {
     vec4 color_high;  // debug view: rgb at range[1] (xyz), range[1] (w)
     ivec4 modes;      // debug view colour source (pf_particle_color), -, -, -
     ivec4 target;     // viewport x, y in the engine's target (own texel = target pixel - this), -, -
+    mat4 domain_view; // simulation (domain) coordinates -> eye: view * the domain's pose
 } rnd;
 
 // Larger than any eye depth: "no scene surface here".

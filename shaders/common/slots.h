@@ -84,6 +84,11 @@
 #define PF_LOC_EMIT_TOTAL 1     /* particles this step's emitters ask for */
 #define PF_LOC_EMIT_SEED 2      /* desc.seed: shifts each emitter's point sequence */
 #define PF_LOC_EMIT_CAPACITY 3  /* max_particles */
+/* explicit uniform locations of the domain-motion kernel: accelerations in the domain's frame */
+#define PF_LOC_DOMAIN_LINEAR 0   /* R^T (g - A) - g: gravity turned into the frame, minus the frame's
+                                    linear acceleration, less the gravity the core already added */
+#define PF_LOC_DOMAIN_OMEGA 1    /* angular velocity (xyz) */
+#define PF_LOC_DOMAIN_ALPHA 2    /* angular acceleration (xyz) */
 
 /* The live-count record (8 words), kept on the GPU: two DrawArraysIndirectCommand records, so
  * engines and the renderer draw exactly the live particles without reading the count back.

@@ -5,11 +5,12 @@
 #include "common/render.glsl"
 #include "common/ssf_scene.glsl"
 
-// Eye-space sphere centre of a world position; false when nothing of the sphere can be drawn
-// (wholly outside [near, far], or the camera inside it).
-bool sphere_visible(vec3 world, out vec3 center) {
+// Eye-space sphere centre of a particle position (simulation coordinates: the domain's frame,
+// placed in the world by PF_FEATURE_DOMAIN_MOTION); false when nothing of the sphere can be
+// drawn (wholly outside [near, far], or the camera inside it).
+bool sphere_visible(vec3 position, out vec3 center) {
     float r = rnd.sphere.x;
-    center = (rnd.view * vec4(world, 1.0)).xyz;
+    center = (rnd.domain_view * vec4(position, 1.0)).xyz;
     float dist = length(center);
     return !(-center.z + r < rnd.planes.x || -center.z - r > rnd.planes.y ||
              (!render_orthographic() && dist <= r * 1.0001));

@@ -322,6 +322,28 @@ pf_result pf_remove_sink(pf_sim* sim, uint32_t id) {
     return guarded(s.log(), "pf_remove_sink", [&] { return s.remove_sink(id); });
 }
 
+pf_domain_motion pf_default_domain_motion(void) {
+    pf_domain_motion m{};
+    m.rotation[3] = 1.0f;
+    return m;
+}
+
+pf_result pf_set_domain_motion(pf_sim* sim, const pf_domain_motion* motion) {
+    PF_CHECK_SIM(sim, "pf_set_domain_motion");
+    pf::Simulation& s = *sim->impl;
+    if (!motion) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_domain_motion: motion must not be NULL");
+    if (pf_result r = pf::validate_domain_motion(*motion, s.log(), "pf_set_domain_motion"); r != PF_OK) return r;
+    s.set_domain_motion(*motion);
+    return PF_OK;
+}
+
+pf_result pf_get_domain_motion(const pf_sim* sim, pf_domain_motion* out) {
+    PF_CHECK_SIM(sim, "pf_get_domain_motion");
+    if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_domain_motion: out must not be NULL");
+    *out = sim->impl->domain_motion_state();
+    return PF_OK;
+}
+
 pf_result pf_get_particle_count(pf_sim* sim, uint32_t* out) {
     PF_CHECK_SIM(sim, "pf_get_particle_count");
     pf::Simulation& s = *sim->impl;

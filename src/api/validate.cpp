@@ -224,6 +224,17 @@ pf_result validate_emitter(const pf_emitter& e, const pf_sim_desc& d, const Log&
     return PF_OK;
 }
 
+pf_result validate_domain_motion(const pf_domain_motion& m, const Log& log, const char* fn) {
+    auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
+    if (!finite3(m.position) || !finite4(m.rotation) || !finite3(m.velocity) || !finite3(m.angular_velocity))
+        return bad("every field of the domain motion must be finite");
+    const double w = std::sqrt(double(m.angular_velocity[0]) * m.angular_velocity[0] +
+                               double(m.angular_velocity[1]) * m.angular_velocity[1] +
+                               double(m.angular_velocity[2]) * m.angular_velocity[2]);
+    if (w > 1000.0) return bad("|angular_velocity| = " + str(float(w)) + " rad/s exceeds 1000");
+    return PF_OK;
+}
+
 pf_result validate_sink(const pf_sink& k, const pf_sim_desc& d, const Log& log, const char* fn) {
     auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
     if (enum_bits(k.shape) >= PF_SINK_SHAPE_COUNT) return bad("unknown sink shape " + std::to_string(int32_t(enum_bits(k.shape))));

@@ -31,6 +31,7 @@ pf_result validate_force_field(const pf_force_field& field, const Log& log, cons
 pf_result validate_obstacle(const pf_obstacle& obstacle, const Log& log, const char* fn);
 // Emitters must lie inside the domain and emit no faster than desc.max_speed; sinks must overlap it.
 pf_result validate_emitter(const pf_emitter& emitter, const pf_sim_desc& desc, const Log& log, const char* fn);
+pf_result validate_domain_motion(const pf_domain_motion& motion, const Log& log, const char* fn);
 pf_result validate_sink(const pf_sink& sink, const pf_sim_desc& desc, const Log& log, const char* fn);
 // Only known PF_FEATURE_* bits.
 pf_result validate_features(uint32_t features, const Log& log, const char* fn);

@@ -22,8 +22,9 @@ void store(const glm::dmat4& m, float out[16]) {
 }
 }  // namespace
 
-void fill_camera(const pf_camera& camera, float y_sign, RenderUniforms& u) {
+void fill_camera(const pf_camera& camera, float y_sign, const glm::mat4& domain_to_world, RenderUniforms& u) {
     std::memcpy(u.view, camera.view, sizeof(u.view));
+    store(to_dmat4(camera.view) * glm::dmat4(domain_to_world), u.domain_view);
     std::memcpy(u.proj, camera.proj, sizeof(u.proj));
     store(glm::inverse(to_dmat4(camera.proj)), u.inv_proj);
     store(glm::inverse(to_dmat4(camera.view)), u.inv_view);

@@ -4,6 +4,8 @@
 #pragma once
 #include <cstdint>
 
+#include <glm/glm.hpp>
+
 #include "pf/pf.h"
 
 namespace pf {
@@ -23,13 +25,15 @@ struct RenderUniforms {
     float color_high[4];   // rgb, range[1]
     int32_t modes[4];      // colour_by, -, -, -
     int32_t target[4];     // viewport x, y, -, -
+    float domain_view[16]; // simulation (domain) coordinates -> eye: view * the domain's pose
 };
-static_assert(sizeof(RenderUniforms) == 4 * 64 + 10 * 16, "RenderUniforms must match the std140 block");
+static_assert(sizeof(RenderUniforms) == 5 * 64 + 10 * 16, "RenderUniforms must match the std140 block");
 
 // Camera part: matrices (inverses in double precision), viewport, planes. `y_sign` is -1 when
 // the engine's clip origin is GL_UPPER_LEFT. The camera must have passed validation (the
-// matrices are invertible).
-void fill_camera(const pf_camera& camera, float y_sign, RenderUniforms& u);
+// matrices are invertible). `domain_to_world` places the particles (PF_FEATURE_DOMAIN_MOTION;
+// the identity otherwise).
+void fill_camera(const pf_camera& camera, float y_sign, const glm::mat4& domain_to_world, RenderUniforms& u);
 // Liquid look; `params` has its defaults resolved; `has_scene_depth` / `has_environment` say
 // which engine textures were given.
 void fill_ssf(const pf_ssf_params& params, bool has_scene_depth, bool has_environment, RenderUniforms& u);

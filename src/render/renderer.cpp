@@ -193,7 +193,7 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
     }
 
     RenderUniforms u{};
-    fill_camera(camera, y_sign, u);
+    fill_camera(camera, y_sign, sim_.domain_to_world(), u);
     fill_ssf(params, target.scene_depth != 0, target.environment_cubemap != 0, u);
     ++frames_;
     timers_.begin_step(frames_, 1);
@@ -382,7 +382,7 @@ pf_result Renderer::render_particles(const pf_camera& camera, const pf_render_ta
     if (pf_result r = program(ProgramId::particles, fn, sprites); r != PF_OK) return r;
 
     RenderUniforms u{};
-    fill_camera(camera, y_sign, u);
+    fill_camera(camera, y_sign, sim_.domain_to_world(), u);
     fill_particles(params, u);
     ++frames_;
     timers_.begin_step(frames_, 1);

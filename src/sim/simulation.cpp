@@ -162,6 +162,10 @@ pf_result Simulation::init() {
     return PF_OK;
 }
 
+glm::mat4 Simulation::domain_to_world() const {
+    return (desc_.features & PF_FEATURE_DOMAIN_MOTION) ? domain_motion().domain_to_world() : glm::mat4(1.0f);
+}
+
 void Simulation::write_count_record(uint32_t live) {
     count_record_.upload(PF_COUNT_LIVE * 4, 4, &live);
     count_record_.upload(PF_COUNT_INSTANCES * 4, 4, &live);
@@ -380,6 +384,7 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (desc_.features & (1u << i)) v_max = std::max(v_max, effects_[i]->added_speed());
     }
+    if (desc_.features & PF_FEATURE_DOMAIN_MOTION) accel += domain_motion().max_acceleration(v_max);
     const float v_est = std::max(v_max + accel * frame_dt, wind);
     const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
     const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
@@ -720,6 +725,7 @@ pf_result Simulation::set_params(const pf_sim_params& params) {
         zero_affine(0, particle_count_);
     solver_ = solver;
     desc_.params = params;
+    domain_motion().set_gravity(params.gravity);
     restart_energy_reference();  // gravity may have changed: the old total is not comparable
     return PF_OK;
 }
@@ -737,6 +743,8 @@ pf_result Simulation::set_features(uint32_t features, const char* fn) {
         }
         effects_ready_ |= bit;
     }
+    // A domain motion turned on has no previous step to take its acceleration from.
+    if ((features & PF_FEATURE_DOMAIN_MOTION) && !(desc_.features & PF_FEATURE_DOMAIN_MOTION)) domain_motion().restart();
     const bool gpu_count = (features & kGpuCountFeatures) != 0;
     // The count record is current in both modes; leaving GPU mode makes the host count exact.
     if (gpu_count_ && !gpu_count) live_count();
@@ -776,8 +784,9 @@ void Simulation::begin_effects_step(float frame_dt) {
 
 EffectBuffers Simulation::effect_buffers() const {
     const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
-    return EffectBuffers{pos_,          vel_,    face_accum_,         face_vel_,       cell_type_,       count_record_,
-                         status_,       apic ? &affine_ : nullptr, particle_count_, uint64_t(cells_), uint64_t(faces_)};
+    return EffectBuffers{pos_,    vel_,          face_accum_, face_vel_,
+                         face_vel_old_, cell_type_, count_record_, status_,
+                         apic ? &affine_ : nullptr, particle_count_, uint64_t(cells_), uint64_t(faces_)};
 }
 
 void Simulation::run_effects(EffectStage stage) {

@@ -12,6 +12,7 @@
 #include "gl/program.h"
 #include "gl/state_guard.h"
 #include "pf/pf.h"
+#include "sim/effects/domain_motion/domain_motion.h"
 #include "sim/effects/emitters/emitters.h"
 #include "sim/effects/force_fields/force_fields.h"
 #include "sim/effects/obstacles/obstacles.h"
@@ -58,6 +59,11 @@ public:
     pf_result add_sink(const pf_sink& sink, uint32_t* out_id);
     pf_result set_sink(uint32_t id, const pf_sink& sink);
     pf_result remove_sink(uint32_t id);
+    void set_domain_motion(const pf_domain_motion& motion) { domain_motion().set(motion); }
+    const pf_domain_motion& domain_motion_state() const { return domain_motion().motion(); }
+    // Domain -> world (the renderer's model matrix): the domain's pose while
+    // PF_FEATURE_DOMAIN_MOTION is on, else the identity.
+    glm::mat4 domain_to_world() const;
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
     void gl_buffers(pf_gl_buffers& out) const;
     void stats(pf_stats& out) const;
@@ -128,6 +134,8 @@ private:
     ObstaclesEffect& obstacles() { return static_cast<ObstaclesEffect&>(*effects_[1]); }
     EmittersEffect& emitters() { return static_cast<EmittersEffect&>(*effects_[2]); }
     SinksEffect& sinks() { return static_cast<SinksEffect&>(*effects_[3]); }
+    DomainMotionEffect& domain_motion() { return static_cast<DomainMotionEffect&>(*effects_[4]); }
+    const DomainMotionEffect& domain_motion() const { return static_cast<const DomainMotionEffect&>(*effects_[4]); }
     // The effects' buffers and sizes for this substep.
     EffectBuffers effect_buffers() const;
     // Runs the once-per-step stage `stage` (emitters, sinks), then hands the GPU's live count to

@@ -36,7 +36,8 @@ std::vector<std::string> names(const std::vector<Entry>& list) {
     return out;
 }
 
-// A small tank with one obstacle, force field, emitter and sink, present whatever is on.
+// A small tank with one obstacle, force field, emitter and sink and a turning domain, present
+// whatever is on.
 SimPtr make_scene(Effects& t, uint32_t features) {
     pf_sim_desc d = test_desc(16, 16, 16, 0.05f);
     d.features = features;
@@ -64,6 +65,9 @@ SimPtr make_scene(Effects& t, uint32_t features) {
     k.position[0] = 0.05f, k.position[1] = 0.05f, k.position[2] = 0.05f;
     k.half_extents[0] = k.half_extents[1] = k.half_extents[2] = 0.05f;
     EXPECT_EQ(pf_add_sink(sim.get(), &k, nullptr), PF_OK);
+    pf_domain_motion m = pf_default_domain_motion();
+    m.angular_velocity[1] = 0.5f;
+    EXPECT_EQ(pf_set_domain_motion(sim.get(), &m), PF_OK);
     return sim;
 }
 
@@ -91,7 +95,8 @@ TEST_F(Effects, EachEffectAddsOnlyItsOwnPasses) {
     const std::vector<Entry> core = pass_list(off.get());
     for (const Case& c : {Case{PF_FEATURE_FORCE_FIELDS, {"force_fields"}},
                           Case{PF_FEATURE_OBSTACLES, {"obstacles", "obstacle_push"}},
-                          Case{PF_FEATURE_EMITTERS, {"emit"}}, Case{PF_FEATURE_SINKS, {"sinks"}}}) {
+                          Case{PF_FEATURE_EMITTERS, {"emit"}}, Case{PF_FEATURE_SINKS, {"sinks"}},
+                          Case{PF_FEATURE_DOMAIN_MOTION, {"domain_motion"}}}) {
         SimPtr sim = make_scene(*this, 0);
         ASSERT_TRUE(sim);
         ASSERT_EQ(pf_set_features(sim.get(), c.feature), PF_OK) << last_log();

@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
 #include "support/render_fixture.h"
 
 namespace pf::test {
@@ -386,6 +389,55 @@ TEST_F(RenderSsf, FiltersReduceDepthNoise) {
     const double raw = roughness[PF_SSF_FILTER_NONE];
     EXPECT_LT(roughness[PF_SSF_FILTER_BILATERAL], 0.5 * raw) << "raw " << raw;
     EXPECT_LT(roughness[PF_SSF_FILTER_NARROW_RANGE], 0.5 * raw) << "raw " << raw;
+}
+
+}  // namespace
+}  // namespace pf::test
+
+namespace pf::test {
+namespace {
+
+// PF_FEATURE_DOMAIN_MOTION: the renderer draws the particles where the engine holds the domain.
+// A domain turned 30 degrees about y and moved, seen by camera C, must give the depth image of
+// an unmoved domain seen by C's view times the domain's pose (the same eye-space geometry), and
+// a different one from the unmoved domain seen by C (so the pose is applied at all).
+TEST_F(RenderSsf, DomainPosePlacesTheLiquid) {
+    add(slab(3, 0.02f));
+    EngineTarget t(96, 80, GL_RGBA32F);
+    const int vp[4] = {0, 0, 96, 80};
+    const TestCamera c = camera(vp);
+    const double angle = 30.0 * 3.14159265358979 / 180.0;
+    pf_domain_motion m = pf_default_domain_motion();
+    m.rotation[1] = float(std::sin(angle / 2)), m.rotation[3] = float(std::cos(angle / 2));
+    m.position[0] = 0.2f, m.position[1] = -0.1f, m.position[2] = 0.3f;
+    ASSERT_EQ(pf_set_domain_motion(sim_.get(), &m), PF_OK);
+    auto depth_image = [&](const pf_camera& cam) {
+        t.write_color(std::vector<float>(size_t(t.width) * t.height * 4, 0.0f));
+        t.write_depth(std::vector<float>(size_t(t.width) * t.height, 1.0f));
+        const pf_render_target target{t.fbo, t.color, t.depth, 0};
+        EXPECT_EQ(pf_render_ssf(sim_.get(), &cam, &target, nullptr), PF_OK) << last_log();
+        return t.read_depth();
+    };
+    const std::vector<float> unmoved = depth_image(c.cam);
+    ASSERT_EQ(pf_set_features(sim_.get(), PF_FEATURE_DOMAIN_MOTION), PF_OK);
+    const std::vector<float> moved = depth_image(c.cam);
+    ASSERT_EQ(pf_set_features(sim_.get(), 0), PF_OK);
+    const glm::dmat4 pose = glm::translate(glm::dmat4(1.0), glm::dvec3(0.2, -0.1, 0.3)) *
+                            glm::rotate(glm::dmat4(1.0), angle, glm::dvec3(0.0, 1.0, 0.0));
+    pf_camera moved_camera = c.cam;
+    const glm::dmat4 view = c.view * pose;
+    for (int i = 0; i < 16; ++i) moved_camera.view[i] = float(glm::value_ptr(view)[i]);
+    const std::vector<float> expected = depth_image(moved_camera);
+    double worst = 0;
+    int liquid = 0, changed = 0;
+    for (size_t i = 0; i < moved.size(); ++i) {
+        liquid += moved[i] != 1.0f;
+        changed += moved[i] != unmoved[i];
+        worst = std::max(worst, double(std::fabs(moved[i] - expected[i])));
+    }
+    EXPECT_GT(liquid, 500);
+    EXPECT_GT(changed, 500);
+    EXPECT_LT(worst, 1e-6);
 }
 
 }  // namespace

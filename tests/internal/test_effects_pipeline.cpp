@@ -15,6 +15,7 @@ const gl::ProgramId kForceFieldPrograms[] = {gl::ProgramId::force_fields};
 const gl::ProgramId kObstaclePrograms[] = {gl::ProgramId::obstacle_cells, gl::ProgramId::obstacle_faces,
                                            gl::ProgramId::obstacle_push};
 const gl::ProgramId kEmitterPrograms[] = {gl::ProgramId::emit, gl::ProgramId::emit_apic, gl::ProgramId::emit_commit};
+const gl::ProgramId kDomainPrograms[] = {gl::ProgramId::domain_forces};
 const gl::ProgramId kSinkPrograms[] = {gl::ProgramId::sink_mark, gl::ProgramId::sink_lists, gl::ProgramId::sink_move,
                                        gl::ProgramId::sink_move_apic};
 
@@ -38,6 +39,7 @@ TEST_F(EffectsPipeline, OffEffectsBuildNothingAndTurningOneOnBuildsOnlyItsProgra
     EXPECT_EQ(built(r, kObstaclePrograms), 0u);
     EXPECT_EQ(built(r, kEmitterPrograms), 0u);
     EXPECT_EQ(built(r, kSinkPrograms), 0u);
+    EXPECT_EQ(built(r, kDomainPrograms), 0u);
     // Objects of an effect that is off are kept on the host only.
     pf_obstacle o = pf_default_obstacle();
     o.position[0] = o.position[1] = o.position[2] = 0.4f;
@@ -58,8 +60,11 @@ TEST_F(EffectsPipeline, OffEffectsBuildNothingAndTurningOneOnBuildsOnlyItsProgra
     EXPECT_EQ(built(r, kSinkPrograms), 0u);
     ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_SINKS), PF_OK);
     EXPECT_EQ(built(r, kSinkPrograms), std::size(kSinkPrograms));
+    EXPECT_EQ(built(r, kDomainPrograms), 0u);
+    ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_DOMAIN_MOTION), PF_OK);
+    EXPECT_EQ(built(r, kDomainPrograms), std::size(kDomainPrograms));
     const size_t all = core + std::size(kForceFieldPrograms) + std::size(kObstaclePrograms) +
-                       std::size(kEmitterPrograms) + std::size(kSinkPrograms);
+                       std::size(kEmitterPrograms) + std::size(kSinkPrograms) + std::size(kDomainPrograms);
     EXPECT_EQ(r.programs_built(), all);
     // Off and on again: nothing is rebuilt.
     ASSERT_EQ(pf_set_features(handle.get(), 0), PF_OK);
@@ -91,6 +96,9 @@ TEST_F(EffectsPipeline, EveryEffectPassBindsEverySlotItsProgramUses) {
     pf_sink k = pf_default_sink();
     k.position[0] = 0.05f, k.position[1] = 0.05f, k.position[2] = 0.05f;
     ASSERT_EQ(pf_add_sink(handle.get(), &k, nullptr), PF_OK);
+    pf_domain_motion m = pf_default_domain_motion();
+    m.angular_velocity[1] = 0.5f;  // a turning domain: its pass runs every substep
+    ASSERT_EQ(pf_set_domain_motion(handle.get(), &m), PF_OK);
     const float lo[3] = {0, 0, 0}, hi[3] = {0.5f, 0.5f, 0.8f};
     ASSERT_EQ(pf_fill_box(handle.get(), lo, hi, nullptr), PF_OK);
     // The effect passes bind the same buffers whatever the scheme; six configurations take
@@ -117,6 +125,7 @@ TEST_F(EffectsPipeline, EveryEffectPassBindsEverySlotItsProgramUses) {
     }
     EXPECT_NE(std::find(ran.begin(), ran.end(), "emit"), ran.end());
     EXPECT_NE(std::find(ran.begin(), ran.end(), "sinks"), ran.end());
+    EXPECT_NE(std::find(ran.begin(), ran.end(), "domain_motion"), ran.end());
 }
 
 }  // namespace

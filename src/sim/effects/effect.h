@@ -25,6 +25,7 @@ struct EffectBuffers {
     const gl::Buffer& vel;         // particle velocities (vec4)
     const gl::Buffer& face_accum;  // P2G sums (momentum, weight) per face
     const gl::Buffer& face_vel;    // face velocities
+    const gl::Buffer& face_vel_old;  // face velocities at the substep's start (after P2G)
     const gl::Buffer& cell_type;   // AIR / FLUID / SOLID per cell
     const gl::Buffer& count_record;  // the live-count record (PF_COUNT_* in common/slots.h)
     const gl::Buffer& status;      // the step's status words (flags)

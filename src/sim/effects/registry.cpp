@@ -1,6 +1,7 @@
 // The one place that maps PF_FEATURE_* bits to effect classes.
 #include "sim/effects/registry.h"
 
+#include "sim/effects/domain_motion/domain_motion.h"
 #include "sim/effects/emitters/emitters.h"
 #include "sim/effects/force_fields/force_fields.h"
 #include "sim/effects/obstacles/obstacles.h"
@@ -14,6 +15,7 @@ std::unique_ptr<Effect> make_effect(uint32_t feature, const pf_sim_desc& desc) {
         case PF_FEATURE_OBSTACLES: return std::make_unique<ObstaclesEffect>();
         case PF_FEATURE_EMITTERS: return std::make_unique<EmittersEffect>(desc.max_particles, desc.seed);
         case PF_FEATURE_SINKS: return std::make_unique<SinksEffect>(desc.max_particles);
+        case PF_FEATURE_DOMAIN_MOTION: return std::make_unique<DomainMotionEffect>(desc);
         default: return nullptr;
     }
 }

@@ -8,7 +8,7 @@
 namespace pf {
 
 // Feature bits in the order their effects run within a stage (lowest bit first).
-constexpr uint32_t kEffectCount = 4;
+constexpr uint32_t kEffectCount = 5;
 static_assert(PF_FEATURE_ALL == (1u << kEffectCount) - 1u, "one effect per feature bit");
 
 // A new, uninitialised effect for one feature bit of a simulation made from `desc` (resolved
