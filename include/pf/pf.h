@@ -173,8 +173,9 @@ typedef enum pf_quality {
 enum {
     PF_FEATURE_FORCE_FIELDS = 1u << 0, /**< pf_add_force_field: wind, attractors/repulsors, vortices
                                             (one grid pass per substep after gravity) */
-    PF_FEATURE_OBSTACLES = 1u << 1,    /**< pf_add_obstacle: static boxes, spheres and capsules (solid
-                                            cells, free-slip faces, particles pushed out after advection) */
+    PF_FEATURE_OBSTACLES = 1u << 1,    /**< pf_add_obstacle: boxes, spheres and capsules, static or moved by
+                                            the engine (solid cells, faces at the obstacle's velocity, particles
+                                            pushed out after advection, pf_get_obstacle_force) */
     PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES /**< every known feature bit */
 };
 
@@ -429,7 +430,7 @@ PF_API pf_result pf_set_force_field(pf_sim* sim, uint32_t id, const pf_force_fie
 /** Removes force field `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
 PF_API pf_result pf_remove_force_field(pf_sim* sim, uint32_t id);
 
-/** Shapes of static obstacles (PF_FEATURE_OBSTACLES). */
+/** Shapes of obstacles (PF_FEATURE_OBSTACLES). */
 typedef enum pf_obstacle_shape {
     PF_OBSTACLE_BOX = 0,          /**< half_extents along the local axes */
     PF_OBSTACLE_SPHERE = 1,       /**< radius */
@@ -438,8 +439,10 @@ typedef enum pf_obstacle_shape {
     PF_OBSTACLE_SHAPE_FORCE32 = 0x7fffffff
 } pf_obstacle_shape;
 
-/** One static obstacle. Cells whose centre lies inside are solid (free-slip walls for the liquid);
- *  particles that end a substep inside are pushed out along the distance gradient. Start from
+/** One obstacle. Cells whose centre lies inside are solid: free-slip walls whose faces move with the
+ *  obstacle's surface (v + w x r); particles that end a substep inside are pushed out along the
+ *  distance gradient and leave at least as fast as the surface along its normal. A moving obstacle
+ *  is driven by the engine: pf_set_obstacle each frame with its pose and velocities. Start from
  *  pf_default_obstacle(). */
 typedef struct pf_obstacle {
     pf_obstacle_shape shape;
@@ -449,9 +452,20 @@ typedef struct pf_obstacle {
     float half_extents[3];        /**< BOX: half sizes in m, each > 0 */
     float radius;                 /**< SPHERE, CAPSULE: radius in m, > 0 */
     float half_height;            /**< CAPSULE: half length of the axis segment in m, >= 0 */
+    float velocity[3];            /**< linear velocity of the centre in m/s (world); default 0 */
+    float angular_velocity[3];    /**< angular velocity about the centre in rad/s (world axes); default 0 */
 } pf_obstacle;
 
-/** Default obstacle: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m). */
+/** What the liquid does to one obstacle in one step (pf_get_obstacle_force). */
+typedef struct pf_obstacle_force {
+    float force[3];               /**< N (world): -sum of p n dA over the faces between the obstacle's solid
+                                       cells and FLUID cells, mean over the step's substeps; p is gauge
+                                       pressure (air 0), so weight and atmosphere are the engine's */
+    float torque[3];              /**< N m (world) of the same pressures about the obstacle's position */
+    uint64_t step;                /**< the pf_step it belongs to (0: none measured yet) */
+} pf_obstacle_force;
+
+/** Default obstacle: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m), at rest. */
 PF_API pf_obstacle pf_default_obstacle(void);
 /** Adds an obstacle; *out_id (may be NULL) names it for pf_set_obstacle / pf_remove_obstacle.
  *  PF_ERROR_INVALID_ARGUMENT for a NULL obstacle, an unknown shape, a non-finite value, a box half
@@ -462,6 +476,9 @@ PF_API pf_result pf_add_obstacle(pf_sim* sim, const pf_obstacle* obstacle, uint3
 PF_API pf_result pf_set_obstacle(pf_sim* sim, uint32_t id, const pf_obstacle* obstacle);
 /** Removes obstacle `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
 PF_API pf_result pf_remove_obstacle(pf_sim* sim, uint32_t id);
+/** The newest force and torque of obstacle `id` read back without stalling (a few steps late, like
+ *  pf_stats; out->step says which, 0 and zeros while none); PF_ERROR_INVALID_ARGUMENT if no obstacle has id. */
+PF_API pf_result pf_get_obstacle_force(const pf_sim* sim, uint32_t id, pf_obstacle_force* out);
 
 /* ---- rendering into the engine's frame ----------------------------------------------------- */
 

@@ -14,7 +14,7 @@ through $PFLIP_LIBRARY, next to this package, the source tree's build/ or the sy
 from . import camera, frame
 from ._lib import ABI_VERSION, lib, version
 from ._types import (MAX_FORCE_FIELDS, MAX_OBSTACLES, Advection, Camera, DepthConvention, Feature, Flag,
-                     ForceField, ForceFieldType, GlBuffers, LogLevel, Obstacle, ObstacleShape, P2G, ParticleColor,
+                     ForceField, ForceFieldType, GlBuffers, LogLevel, Obstacle, ObstacleForce, ObstacleShape, P2G, ParticleColor,
                      ParticleParams, Pass, PressureSolver, Quality, RenderPass, RenderTarget, Result, SimDesc,
                      SimParams, SsfFilter, SsfParams, SsfPath, Stats, Transfer)
 from .errors import PflipError
@@ -40,7 +40,7 @@ def render_pass_name(p):
 
 __all__ = [
     "ABI_VERSION", "Advection", "Camera", "DepthConvention", "Feature", "Flag", "ForceField", "ForceFieldType",
-    "GlBuffers", "LogLevel", "MAX_FORCE_FIELDS", "MAX_OBSTACLES", "Obstacle", "ObstacleShape", "P2G",
+    "GlBuffers", "LogLevel", "MAX_FORCE_FIELDS", "MAX_OBSTACLES", "Obstacle", "ObstacleForce", "ObstacleShape", "P2G",
     "ParticleColor", "ParticleParams", "Pass", "PassStats", "PflipError", "PressureSolver", "Quality",
     "RenderPass", "RenderTarget", "Result", "SimDesc", "SimParams", "Simulation", "SsfFilter", "SsfParams",
     "SsfPath", "Stats", "Transfer", "camera", "frame", "pass_name", "render_pass_name", "result_string",

@@ -91,6 +91,7 @@ _PROTOTYPES = {
     "pf_add_obstacle": (t.c_enum, [_sim, _P(t.Obstacle), _P(ctypes.c_uint32)]),
     "pf_set_obstacle": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.Obstacle)]),
     "pf_remove_obstacle": (t.c_enum, [_sim, ctypes.c_uint32]),
+    "pf_get_obstacle_force": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.ObstacleForce)]),
 }
 
 for _name, (_res, _args) in _PROTOTYPES.items():

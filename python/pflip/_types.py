@@ -375,7 +375,8 @@ class ForceField(_Struct):
 
 class Obstacle(_Struct):
     """pf_obstacle (PF_FEATURE_OBSTACLES). Start from Obstacle.default(): an axis-aligned box of
-    half extents 0.1 m at the origin (radius 0.1 m). rotation is a quaternion (x, y, z, w)."""
+    half extents 0.1 m at the origin (radius 0.1 m), at rest. rotation is a quaternion (x, y, z, w);
+    velocity (m/s) and angular_velocity (rad/s, about position) move its surface."""
 
     @classmethod
     def default(cls):
@@ -389,6 +390,18 @@ class Obstacle(_Struct):
         ("half_extents", ctypes.c_float * 3),
         ("radius", ctypes.c_float),
         ("half_height", ctypes.c_float),
+        ("velocity", ctypes.c_float * 3),
+        ("angular_velocity", ctypes.c_float * 3),
+    ]
+
+
+class ObstacleForce(_Struct):
+    """pf_obstacle_force: the liquid's pressure force (N) and torque (N m, about the obstacle's
+    position) in the step `step` (0: none measured yet), read back a few steps late."""
+    _fields_ = [
+        ("force", ctypes.c_float * 3),
+        ("torque", ctypes.c_float * 3),
+        ("step", ctypes.c_uint64),
     ]
 
 
@@ -406,6 +419,7 @@ C_NAMES = {
     ParticleParams: "pf_particle_params",
     ForceField: "pf_force_field",
     Obstacle: "pf_obstacle",
+    ObstacleForce: "pf_obstacle_force",
 }
 
 # Enums mirrored above with the C prefix of their values, for the layout test (values checked too).

@@ -53,6 +53,8 @@
  * face accumulators 4, cell types 6) */
 #define PF_SLOT_FORCE_FIELDS 3
 #define PF_SLOT_OBSTACLES 3
+/* the obstacles' force sums (obstacle_forces.comp binds cell types 6, pressure 0, records 3) */
+#define PF_SLOT_OBSTACLE_FORCES 5
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
@@ -72,6 +74,8 @@
 
 /* explicit uniform location of the effects' kernels: how many objects of the effect's list are live */
 #define PF_LOC_EFFECT_COUNT 0
+/* explicit uniform location of obstacle_forces.comp: the weight of this substep in the step's mean */
+#define PF_LOC_OBSTACLE_FORCE_WEIGHT 1
 
 /* uniform block with the per-step constants (common/sim.glsl, src/sim/sim_uniforms.h) */
 #define PF_UBO_SIM 0

@@ -258,6 +258,13 @@ pf_result pf_remove_obstacle(pf_sim* sim, uint32_t id) {
     return guarded(s.log(), "pf_remove_obstacle", [&] { return s.remove_obstacle(id); });
 }
 
+pf_result pf_get_obstacle_force(const pf_sim* sim, uint32_t id, pf_obstacle_force* out) {
+    PF_CHECK_SIM(sim, "pf_get_obstacle_force");
+    const pf::Simulation& s = *sim->impl;
+    if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_obstacle_force: out must not be NULL");
+    return guarded(s.log(), "pf_get_obstacle_force", [&] { return s.obstacle_force(id, *out); });
+}
+
 pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out) {
     PF_CHECK_SIM(sim, "pf_get_params");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_params: out must not be NULL");

@@ -150,6 +150,8 @@ pf_result validate_obstacle(const pf_obstacle& o, const Log& log, const char* fn
     if (!finite3(o.position) || !finite3(o.half_extents) || !std::isfinite(o.rotation[3]) || !finite3(o.rotation) ||
         !std::isfinite(o.radius) || !std::isfinite(o.half_height))
         return bad("every field of the obstacle must be finite");
+    if (!finite3(o.velocity)) return bad("velocity must be finite");
+    if (!finite3(o.angular_velocity)) return bad("angular_velocity must be finite");
     if (o.shape == PF_OBSTACLE_BOX) {
         for (int a = 0; a < 3; ++a) {
             if (!(o.half_extents[a] > 0.0f))

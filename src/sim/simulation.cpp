@@ -296,6 +296,7 @@ void Simulation::run_substep() {
     r.run({ProgramId::velocity_update, stat_.velocity_update, faces,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
             {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}}});
+    run_effects(EffectStage::after_velocity_update);
     valid_current_ = 0;
     for (uint32_t layer = 0; layer < desc_.params.extrapolation_layers; ++layer) {
         r.run({ProgramId::extrapolate, stat_.extrapolate, faces,
@@ -352,7 +353,9 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
         accel += force_fields().max_acceleration();
         wind = force_fields().max_wind_speed();
     }
-    const float v_est = std::max(v_max + accel * frame_dt, wind);
+    // Moving obstacles push the liquid at up to their surface speed.
+    const float pushed = (desc_.features & PF_FEATURE_OBSTACLES) ? obstacles().max_surface_speed() : 0.0f;
+    const float v_est = std::max({v_max + accel * frame_dt, wind, pushed});
     const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
     const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
     if (clamped) *clamped = wanted > double(desc_.params.max_substeps);
@@ -377,10 +380,12 @@ pf_result Simulation::step(float frame_dt) {
                   "the per-step status words are contiguous");
     status_.upload(PF_STATUS_MAX_SPEED * 4, sizeof(zeros), zeros);
     upload_uniforms(frame_dt / float(substeps));
+    step_substeps_ = substeps;
     begin_effects_step();
     for (uint32_t s = 0; s < substeps; ++s) run_substep();
     run_metrics();
     runner_->end_step();
+    end_effects_step();
 
     // Status readback ring: copy now, read once the fence has passed (never wait).
     const int slot = int(steps_ % kReadbackSlots);
@@ -409,9 +414,11 @@ void Simulation::run_one_step_for_test(float dt, Passes&& passes) {
     ++steps_;
     runner_->begin_step(steps_, 1);
     upload_uniforms(dt);
+    step_substeps_ = 1;
     begin_effects_step();
     passes();
     runner_->end_step();
+    end_effects_step();
     gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
@@ -703,10 +710,16 @@ void Simulation::begin_effects_step() {
     if (work) restart_energy_reference();  // energy put in by an effect is not a numerical gain
 }
 
+void Simulation::end_effects_step() {
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        if (desc_.features & (1u << i)) effects_[i]->end_step(*runner_, steps_);
+    }
+}
+
 void Simulation::run_effects(EffectStage stage) {
     if (desc_.features == 0) return;
-    const EffectBuffers buffers{pos_,           vel_,          face_accum_, face_vel_, cell_type_, particle_count_,
-                                uint64_t(cells_), uint64_t(faces_)};
+    const EffectBuffers buffers{pos_,           vel_,          face_accum_, face_vel_, cell_type_, pressure_, particle_count_,
+                                uint64_t(cells_), uint64_t(faces_), step_substeps_};
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (desc_.features & (1u << i)) effects_[i]->run(stage, *runner_, buffers);
     }
@@ -762,6 +775,12 @@ pf_result Simulation::set_obstacle(uint32_t id, const pf_obstacle& obstacle) {
 pf_result Simulation::remove_obstacle(uint32_t id) {
     obstacles().changed();
     return remove_from(obstacles().list(), id, log_, "pf_remove_obstacle");
+}
+pf_result Simulation::obstacle_force(uint32_t id, pf_obstacle_force& out) const {
+    gl::StateGuard guard(gl_, gl_state_);
+    if (!obstacles().force(id, out))
+        return log_.error(PF_ERROR_INVALID_ARGUMENT, "pf_get_obstacle_force: no obstacle has id " + std::to_string(id));
+    return PF_OK;
 }
 
 pf_result Simulation::read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const {

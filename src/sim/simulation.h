@@ -50,6 +50,8 @@ public:
     pf_result add_obstacle(const pf_obstacle& obstacle, uint32_t* out_id);
     pf_result set_obstacle(uint32_t id, const pf_obstacle& obstacle);
     pf_result remove_obstacle(uint32_t id);
+    // pf_get_obstacle_force: the newest readback of obstacle `id` (never waits).
+    pf_result obstacle_force(uint32_t id, pf_obstacle_force& out) const;
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
     void gl_buffers(pf_gl_buffers& out) const;
     void stats(pf_stats& out) const;
@@ -107,9 +109,12 @@ private:
     void run_effects(EffectStage stage);
     // Start of a step: effects that are on upload what changed.
     void begin_effects_step();
+    // End of a step: effects that are on start their readbacks.
+    void end_effects_step();
     ForceFieldsEffect& force_fields() { return static_cast<ForceFieldsEffect&>(*effects_[0]); }
     const ForceFieldsEffect& force_fields() const { return static_cast<const ForceFieldsEffect&>(*effects_[0]); }
     ObstaclesEffect& obstacles() { return static_cast<ObstaclesEffect&>(*effects_[1]); }
+    const ObstaclesEffect& obstacles() const { return static_cast<const ObstaclesEffect&>(*effects_[1]); }
     void run_g2p_and_advect();
     const gl::Buffer& grid_buffer(GridBuffer which) const;
     void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat);
@@ -141,6 +146,7 @@ private:
     std::unique_ptr<Effect> effects_[kEffectCount];
     uint32_t effects_ready_ = 0;
     uint32_t requested_features_ = 0;  // desc.features, turned on at the end of init()
+    uint32_t step_substeps_ = 1;       // substeps of the step being run (effects weigh their sums by it)
 
     // particles
     gl::Buffer pos_, vel_;

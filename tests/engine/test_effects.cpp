@@ -81,7 +81,7 @@ TEST_F(Effects, EachEffectAddsOnlyItsOwnPasses) {
     ASSERT_EQ(pf_step(off.get(), 1.0f / 60.0f), PF_OK);
     const std::vector<Entry> core = pass_list(off.get());
     for (const Case& c : {Case{PF_FEATURE_FORCE_FIELDS, {"force_fields"}},
-                          Case{PF_FEATURE_OBSTACLES, {"obstacles", "obstacle_push"}}}) {
+                          Case{PF_FEATURE_OBSTACLES, {"obstacles", "obstacle_push", "obstacle_forces"}}}) {
         SimPtr sim = make_scene(*this, 0);
         ASSERT_TRUE(sim);
         ASSERT_EQ(pf_set_features(sim.get(), c.feature), PF_OK) << last_log();

@@ -94,13 +94,20 @@ void GlState::etiquette(EngineProgram kind) {
                  [&] { EXPECT_EQ(pf_set_features(sim, PF_FEATURE_ALL), PF_OK) << last_log(); });
     pf_obstacle obstacle = pf_default_obstacle();
     obstacle.position[0] = obstacle.position[1] = obstacle.position[2] = 0.3f;
+    uint32_t obstacle_id = 0;
+    obstacle.velocity[0] = 0.5f;  // moving: its faces take its velocity, its forces are read back
     guarded_call(engine, v++, "pf_add_obstacle",
-                 [&] { EXPECT_EQ(pf_add_obstacle(sim, &obstacle, nullptr), PF_OK) << last_log(); });
+                 [&] { EXPECT_EQ(pf_add_obstacle(sim, &obstacle, &obstacle_id), PF_OK) << last_log(); });
     pf_force_field field = pf_default_force_field();
     field.vector[0] = 1.0f;
     guarded_call(engine, v++, "pf_add_force_field",
                  [&] { EXPECT_EQ(pf_add_force_field(sim, &field, nullptr), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_step (effects)", [&] { EXPECT_EQ(pf_step(sim, kDt), PF_OK) << last_log(); });
+    guarded_call(engine, v++, "pf_step (effects, a force readback pending)",
+                 [&] { EXPECT_EQ(pf_step(sim, kDt), PF_OK) << last_log(); });
+    pf_obstacle_force force{};
+    guarded_call(engine, v++, "pf_get_obstacle_force (polls the readback ring)",
+                 [&] { EXPECT_EQ(pf_get_obstacle_force(sim, obstacle_id, &force), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_clear_particles", [&] { EXPECT_EQ(pf_clear_particles(sim), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_step (no particles)", [&] { EXPECT_EQ(pf_step(sim, kDt), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_destroy", [&] { pf_destroy(sim); });

@@ -13,7 +13,7 @@ class EffectsPipeline : public GpuTest {};
 
 const gl::ProgramId kForceFieldPrograms[] = {gl::ProgramId::force_fields};
 const gl::ProgramId kObstaclePrograms[] = {gl::ProgramId::obstacle_cells, gl::ProgramId::obstacle_faces,
-                                           gl::ProgramId::obstacle_push};
+                                           gl::ProgramId::obstacle_push, gl::ProgramId::obstacle_forces};
 
 template <size_t N>
 size_t built(const PassRunner& r, const gl::ProgramId (&ids)[N]) {

@@ -25,7 +25,11 @@ float obstacle_distance(uint k, vec3 x) {
     return length(p) - size.x;
 }
 
-vec3 obstacle_velocity(uint k) { return obstacles[PF_OBSTACLE_VEC4S * k + 3u].xyz; }
+// Velocity of obstacle k's material at world point x: v + w x (x - position).
+vec3 obstacle_velocity(uint k, vec3 x) {
+    vec3 r = x - obstacles[PF_OBSTACLE_VEC4S * k].xyz;
+    return obstacles[PF_OBSTACLE_VEC4S * k + 3u].xyz + cross(obstacles[PF_OBSTACLE_VEC4S * k + 4u].xyz, r);
+}
 
 // Distance of the union at x and the obstacle it belongs to (-1 when there is none).
 float scene_distance(vec3 x, out int nearest) {
@@ -43,3 +47,10 @@ float scene_distance(vec3 x, out int nearest) {
 
 // World position of the centre of cell c.
 vec3 cell_centre(ivec3 c) { return sim.origin.xyz + (vec3(c) + 0.5) * sim.dx; }
+
+// World position of the centre of face f of lattice `axis` (decode_face).
+vec3 face_centre(int axis, ivec3 f) {
+    vec3 offset = vec3(0.5);
+    offset[axis] = 0.0;
+    return sim.origin.xyz + (vec3(f) + offset) * sim.dx;
+}

@@ -24,14 +24,17 @@ struct EffectBuffers {
     const gl::Buffer& face_accum;  // P2G sums (momentum, weight) per face
     const gl::Buffer& face_vel;    // face velocities
     const gl::Buffer& cell_type;   // AIR / FLUID / SOLID per cell
+    const gl::Buffer& pressure;    // the substep's solved pressure (Pa) per cell
     uint32_t particles = 0;
     uint64_t cells = 0, faces = 0;
+    uint32_t substeps = 1;         // substeps of the current step
 };
 
 // The points of a substep (docs/design.md §4) where effects add passes, in substep order.
 enum class EffectStage : uint8_t {
     after_grid_forces,  // face velocities hold u_old + gravity (force fields)
     after_classify,     // cells are FLUID / AIR (obstacles mark SOLID and set their faces)
+    after_velocity_update,  // the pressure is solved and applied (obstacles sum their forces)
     after_advect,       // particles have moved (obstacles push them out)
 };
 
@@ -48,6 +51,12 @@ public:
     virtual void begin_step() = 0;
     // Records its passes of one substep at `stage` (nothing at stages it does not use).
     virtual void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) = 0;
+    // End of a step (after its last pass, GL state guarded): start the readbacks of what the
+    // step measured (copies behind fences, never waited for).
+    virtual void end_step(PassRunner& runner, uint64_t step) {
+        (void)runner;
+        (void)step;
+    }
     // True while it does work on the liquid (adds energy): PF_FLAG_ENERGY_GAINED then takes its
     // reference after the last such step instead of before it.
     virtual bool does_work() const { return false; }

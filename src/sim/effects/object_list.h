@@ -35,6 +35,8 @@ public:
         return false;
     }
     const std::vector<T>& items() const { return items_; }
+    // The ids of items(), in the same order.
+    const std::vector<uint32_t>& ids() const { return ids_; }
     uint32_t size() const { return uint32_t(items_.size()); }
 
 private:
