@@ -435,7 +435,9 @@ typedef enum pf_obstacle_shape {
     PF_OBSTACLE_BOX = 0,          /**< half_extents along the local axes */
     PF_OBSTACLE_SPHERE = 1,       /**< radius */
     PF_OBSTACLE_CAPSULE = 2,      /**< radius around the local y segment from -half_height to +half_height */
-    PF_OBSTACLE_SHAPE_COUNT = 3,
+    PF_OBSTACLE_SDF = 3,          /**< the engine's signed-distance texture sdf_texture over the local box
+                                       [-half_extents, half_extents] (placed like a box) */
+    PF_OBSTACLE_SHAPE_COUNT = 4,
     PF_OBSTACLE_SHAPE_FORCE32 = 0x7fffffff
 } pf_obstacle_shape;
 
@@ -449,11 +451,15 @@ typedef struct pf_obstacle {
     float position[3];            /**< centre, world m */
     float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
                                        (0, 0, 0, 0) means the identity */
-    float half_extents[3];        /**< BOX: half sizes in m, each > 0 */
+    float half_extents[3];        /**< BOX, SDF: half sizes in m, each > 0 */
     float radius;                 /**< SPHERE, CAPSULE: radius in m, > 0 */
     float half_height;            /**< CAPSULE: half length of the axis segment in m, >= 0 */
     float velocity[3];            /**< linear velocity of the centre in m/s (world); default 0 */
     float angular_velocity[3];    /**< angular velocity about the centre in rad/s (world axes); default 0 */
+    uint32_t sdf_texture;         /**< SDF: the engine's GL_TEXTURE_3D (sampled, never changed or deleted: keep it
+                                       alive while used), GL_R32F / GL_R16F (distances) or GL_R8 / GL_R16 (2 value
+                                       - 1); its texels tile the local box evenly, linear filtering */
+    float sdf_scale;              /**< SDF: metres per unit of the texture's distance, > 0; default 1 */
 } pf_obstacle;
 
 /** What the liquid does to one obstacle in one step (pf_get_obstacle_force). */
@@ -468,9 +474,10 @@ typedef struct pf_obstacle_force {
 /** Default obstacle: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m), at rest. */
 PF_API pf_obstacle pf_default_obstacle(void);
 /** Adds an obstacle; *out_id (may be NULL) names it for pf_set_obstacle / pf_remove_obstacle.
- *  PF_ERROR_INVALID_ARGUMENT for a NULL obstacle, an unknown shape, a non-finite value, a box half
- *  extent or radius <= 0 or a negative capsule half height; PF_ERROR_CAPACITY when
- *  PF_MAX_OBSTACLES are present. Each error is logged; on any error nothing changes. */
+ *  PF_ERROR_INVALID_ARGUMENT for a NULL obstacle, an unknown shape, a non-finite value, a box or SDF
+ *  half extent or radius <= 0, a negative capsule half height, or an SDF whose sdf_scale is <= 0 or
+ *  whose sdf_texture is not a 3D texture with storage in one of the four formats; PF_ERROR_CAPACITY
+ *  when PF_MAX_OBSTACLES are present. Each error is logged; on any error nothing changes. */
 PF_API pf_result pf_add_obstacle(pf_sim* sim, const pf_obstacle* obstacle, uint32_t* out_id);
 /** Replaces obstacle `id` (moves it, say); validated as in pf_add_obstacle, nothing changes on error. */
 PF_API pf_result pf_set_obstacle(pf_sim* sim, uint32_t id, const pf_obstacle* obstacle);

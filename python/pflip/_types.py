@@ -112,6 +112,7 @@ class ObstacleShape(enum.IntEnum):
     BOX = 0
     SPHERE = 1
     CAPSULE = 2
+    SDF = 3
 
 
 MAX_FORCE_FIELDS = 16
@@ -376,7 +377,9 @@ class ForceField(_Struct):
 class Obstacle(_Struct):
     """pf_obstacle (PF_FEATURE_OBSTACLES). Start from Obstacle.default(): an axis-aligned box of
     half extents 0.1 m at the origin (radius 0.1 m), at rest. rotation is a quaternion (x, y, z, w);
-    velocity (m/s) and angular_velocity (rad/s, about position) move its surface."""
+    velocity (m/s) and angular_velocity (rad/s, about position) move its surface. An SDF obstacle
+    samples the engine's GL_TEXTURE_3D sdf_texture over the local box [-half_extents, half_extents],
+    sdf_scale metres per texture unit."""
 
     @classmethod
     def default(cls):
@@ -392,6 +395,8 @@ class Obstacle(_Struct):
         ("half_height", ctypes.c_float),
         ("velocity", ctypes.c_float * 3),
         ("angular_velocity", ctypes.c_float * 3),
+        ("sdf_texture", ctypes.c_uint32),
+        ("sdf_scale", ctypes.c_float),
     ]
 
 

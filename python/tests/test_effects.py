@@ -205,6 +205,9 @@ BAD_OBSTACLES = {
     "capsule with a negative half height": dict(shape="capsule", radius=0.1, half_height=-0.2),
     "NaN velocity": dict(velocity=(float("nan"), 0.0, 0.0)),
     "Inf angular velocity": dict(angular_velocity=(0.0, float("-inf"), 0.0)),
+    "SDF without a texture": dict(shape="sdf", sdf_texture=0),
+    "SDF whose texture name is no texture": dict(shape="sdf", sdf_texture=987654),
+    "SDF with a zero sdf_scale": dict(shape="sdf", sdf_texture=987654, sdf_scale=0.0),
 }
 
 

@@ -211,6 +211,7 @@ pf_obstacle pf_default_obstacle(void) {
     o.rotation[3] = 1.0f;
     o.half_extents[0] = o.half_extents[1] = o.half_extents[2] = 0.1f;
     o.radius = 0.1f;
+    o.sdf_scale = 1.0f;
     return o;
 }
 

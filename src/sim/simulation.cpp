@@ -764,13 +764,30 @@ pf_result Simulation::remove_force_field(uint32_t id) {
     force_fields().changed();
     return remove_from(force_fields().list(), id, log_, "pf_remove_force_field");
 }
+pf_result Simulation::obstacle_entry(const pf_obstacle& obstacle, const ObstacleEntry* current, const char* fn,
+                                     ObstacleEntry& out) const {
+    out = ObstacleEntry{obstacle, false};
+    if (obstacle.shape != PF_OBSTACLE_SDF) return PF_OK;
+    // The same texture as before: checked when it was given.
+    if (current && current->obstacle.shape == PF_OBSTACLE_SDF && current->obstacle.sdf_texture == obstacle.sdf_texture) {
+        out.sdf_normalized = current->sdf_normalized;
+        return PF_OK;
+    }
+    gl::StateGuard guard(gl_, gl_state_);
+    return check_sdf_texture(gl_, log_, fn, obstacle.sdf_texture, out.sdf_normalized);
+}
 pf_result Simulation::add_obstacle(const pf_obstacle& obstacle, uint32_t* out_id) {
+    ObstacleEntry entry;
+    if (pf_result r = obstacle_entry(obstacle, nullptr, "pf_add_obstacle", entry); r != PF_OK) return r;
     obstacles().changed();
-    return add_to(obstacles().list(), obstacle, out_id, log_, "pf_add_obstacle", "obstacles");
+    return add_to(obstacles().list(), entry, out_id, log_, "pf_add_obstacle", "obstacles");
 }
 pf_result Simulation::set_obstacle(uint32_t id, const pf_obstacle& obstacle) {
+    ObstacleEntry entry;
+    if (pf_result r = obstacle_entry(obstacle, obstacles().list().find(id), "pf_set_obstacle", entry); r != PF_OK)
+        return r;
     obstacles().changed();
-    return set_in(obstacles().list(), id, obstacle, log_, "pf_set_obstacle");
+    return set_in(obstacles().list(), id, entry, log_, "pf_set_obstacle");
 }
 pf_result Simulation::remove_obstacle(uint32_t id) {
     obstacles().changed();

@@ -50,6 +50,10 @@ public:
     pf_result add_obstacle(const pf_obstacle& obstacle, uint32_t* out_id);
     pf_result set_obstacle(uint32_t id, const pf_obstacle& obstacle);
     pf_result remove_obstacle(uint32_t id);
+    // The list entry of `obstacle`: an SDF texture is checked on the GL unless `current` (the entry
+    // it replaces, or nullptr) has the same texture.
+    pf_result obstacle_entry(const pf_obstacle& obstacle, const ObstacleEntry* current, const char* fn,
+                             ObstacleEntry& out) const;
     // pf_get_obstacle_force: the newest readback of obstacle `id` (never waits).
     pf_result obstacle_force(uint32_t id, pf_obstacle_force& out) const;
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;

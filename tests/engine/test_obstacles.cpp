@@ -6,8 +6,11 @@
 // liquid's density floats at half submersion when the test integrates the returned force (the
 // engine's rigid body, through the public API only). Bad obstacles are refused with nothing
 // changed. The signed distances below are the test's own (double precision), not the library's.
+#include <glad/gl.h>
+
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,6 +47,34 @@ double distance_to(const pf_obstacle& o, const double p[3]) {
     }
     if (o.shape == PF_OBSTACLE_CAPSULE) l[1] -= std::clamp(l[1], -double(o.half_height), double(o.half_height));
     return std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]) - o.radius;
+}
+
+// An engine's signed-distance texture: an n^3 GL_TEXTURE_3D of `internal` format whose texel
+// (i, j, k) holds distance(local texel centre) / unit, the local box [-h, h] tiled evenly
+// (texel centre -h + (i + 0.5) 2h / n); normalized formats (GL_R8, GL_R16) store
+// (d / unit + 1) / 2. The caller deletes it.
+GLuint make_sdf_texture(GLenum internal, int n, const double h[3], double unit,
+                        const std::function<double(double, double, double)>& distance) {
+    static const bool loaded = gladLoadGL(reinterpret_cast<GLADloadfunc>(get_proc)) != 0;
+    EXPECT_TRUE(loaded) << "the test's own GL entry points";
+    std::vector<float> values(size_t(n) * n * n);
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const double x = -h[0] + (i + 0.5) * 2 * h[0] / n, y = -h[1] + (j + 0.5) * 2 * h[1] / n,
+                             z = -h[2] + (k + 0.5) * 2 * h[2] / n;
+                double v = distance(x, y, z) / unit;
+                if (internal == GL_R8 || internal == GL_R16) v = std::clamp((v + 1) / 2, 0.0, 1.0);
+                values[(size_t(k) * n + j) * n + i] = float(v);
+            }
+    GLuint tex = 0;
+    glGenTextures(1, &tex);
+    GLint previous = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_3D, &previous);
+    glBindTexture(GL_TEXTURE_3D, tex);
+    glTexImage3D(GL_TEXTURE_3D, 0, GLint(internal), n, n, n, 0, GL_RED, GL_FLOAT, values.data());
+    glBindTexture(GL_TEXTURE_3D, GLuint(previous));
+    return tex;
 }
 
 // Particles whose centre lies inside any of the obstacles (deeper than float rounding).
@@ -335,12 +366,120 @@ TEST_P(Obstacles, BoxMovedThroughStillWaterSetsItMoving) {
     RecordProperty("liquid_kinetic_energy_j", std::to_string(kinetic));
 }
 
+// An SDF obstacle (the engine's texture: the exact box distance, R32F, in centimetres, over a
+// padded local box) standing where the box of SubmergedBoxFeelsBuoyancyRhoGV stands: the same
+// solid cells, so the same buoyancy, rho g V within 2%.
+TEST_P(Obstacles, SdfBoxFeelsBuoyancyRhoGV) {
+    pf_sim_desc d = desc(12, 16, 12);
+    d.params.pressure_iterations = 200;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    const double h[3] = {0.15, 0.15, 0.15};
+    const GLuint tex = make_sdf_texture(GL_R32F, 32, h, 0.01, [](double x, double y, double z) {
+        double outside = 0, inside = -1e30;
+        for (double c : {x, y, z}) {
+            const double q = std::abs(c) - 0.1;
+            outside += std::max(q, 0.0) * std::max(q, 0.0);
+            inside = std::max(inside, q);
+        }
+        return std::sqrt(outside) + std::min(inside, 0.0);
+    });
+    pf_obstacle block = box(0.3, 0.2, 0.3, h[0], h[1], h[2]);
+    block.shape = PF_OBSTACLE_SDF;
+    block.sdf_texture = tex;
+    block.sdf_scale = 0.01f;  // the texture is in centimetres
+    uint32_t id = 0;
+    ASSERT_EQ(pf_add_obstacle(sim.get(), &block, &id), PF_OK) << last_log();
+    ASSERT_NO_FATAL_FAILURE(fill_tank_around_block(sim.get()));
+    double fy = 0;
+    int samples = 0;
+    for (int frame = 1; frame <= 40; ++frame) {
+        ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+        pf_obstacle_force f{};
+        ASSERT_EQ(pf_get_obstacle_force(sim.get(), id, &f), PF_OK);
+        if (frame > 20) fy += f.force[1], ++samples;
+    }
+    fy /= samples;
+    const double rho_g_v = 1000.0 * 9.81 * 0.2 * 0.2 * 0.2;
+    EXPECT_NEAR(fy, rho_g_v, 0.02 * rho_g_v);
+    const pf_obstacle exact = box(0.3, 0.2, 0.3, 0.1, 0.1, 0.1);
+    EXPECT_EQ(inside_count(read_all(sim.get()), {exact}), 0u);
+    RecordProperty("force_y_over_rho_g_v", std::to_string(fy / rho_g_v));
+    glDeleteTextures(1, &tex);
+}
+
 INSTANTIATE_TEST_SUITE_P(DefaultAndMgpcg, Obstacles,
                          ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_JACOBI, "jacobi"},
                                            SolverCase{PF_PRESSURE_SOLVER_MGPCG, "mgpcg"}),
                          [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
 
 class ObstacleArguments : public GpuTest {};
+
+// Liquid poured on a sphere given as the engine's SDF texture, in each accepted format: the sphere
+// sits off the texture's centre (local (0.05, 0, 0)) and the obstacle is turned 90 degrees about
+// z, so the sphere is at position + (0, 0.05, 0) in the world only if the library applies the
+// transform as documented. The liquid parts around it (a fifth on each side below its equator)
+// and no particle is found inside the true sphere deeper than the texture resolves distances:
+// 2 mm (float formats, GL_R16), 5 mm (GL_R8: 0.8 m of range in 255 steps is 3 mm).
+class SdfFormats : public GpuTest, public ::testing::WithParamInterface<GLenum> {};
+
+TEST_P(SdfFormats, LiquidPouredOnAnSdfSphereFlowsAroundIt) {
+    const GLenum format = GetParam();
+    pf_sim_desc d = test_desc(16, 24, 16, 0.05f);
+    d.features = PF_FEATURE_OBSTACLES;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    const double h[3] = {0.25, 0.22, 0.22}, radius = 0.15;
+    const bool normalized = format == GL_R8 || format == GL_R16;
+    const double unit = normalized ? 0.4 : 0.01;  // normalized: +-0.4 m of range
+    const GLuint tex = make_sdf_texture(format, 32, h, unit, [&](double x, double y, double z) {
+        return std::sqrt((x - 0.05) * (x - 0.05) + y * y + z * z) - radius;
+    });
+    pf_obstacle ball = box(0.4, 0.4, 0.4, h[0], h[1], h[2]);
+    ball.shape = PF_OBSTACLE_SDF;
+    ball.sdf_texture = tex;
+    ball.sdf_scale = float(unit);
+    ball.rotation[0] = 0, ball.rotation[1] = 0, ball.rotation[2] = float(std::sin(M_PI / 4)),
+    ball.rotation[3] = float(std::cos(M_PI / 4));
+    ASSERT_EQ(pf_add_obstacle(sim.get(), &ball, nullptr), PF_OK) << last_log();
+    const pf_obstacle truth = sphere(0.4, 0.45, 0.4, radius);
+    const float lo[3] = {0.3f, 0.75f, 0.3f}, hi[3] = {0.5f, 0.95f, 0.5f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    const double tolerance = format == GL_R8 ? 0.005 : 0.002;
+    double deepest = 0;
+    for (int f = 0; f < 45; ++f) {
+        ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+        if (f % 9 != 8) continue;
+        const ParticleState p = read_all(sim.get());
+        double worst = 0;
+        inside_count(p, {truth}, &worst);
+        deepest = std::min(deepest, worst);
+    }
+    EXPECT_GT(deepest, -tolerance) << "deepest particle inside the true sphere, m";
+    const ParticleState p = read_all(sim.get());
+    size_t left = 0, right = 0;
+    for (size_t i = 0; i < p.count(); ++i) {
+        if (p.pos[i * 3 + 1] > 0.45f) continue;
+        left += p.pos[i * 3] < 0.4f - 0.1f;
+        right += p.pos[i * 3] > 0.4f + 0.1f;
+    }
+    EXPECT_GT(left, p.count() / 5);
+    EXPECT_GT(right, p.count() / 5);
+    RecordProperty("deepest_inside_m", std::to_string(deepest));
+    RecordProperty("left_fraction", std::to_string(double(left) / p.count()));
+    RecordProperty("right_fraction", std::to_string(double(right) / p.count()));
+    glDeleteTextures(1, &tex);
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryFormat, SdfFormats, ::testing::Values(GLenum(GL_R32F), GLenum(GL_R16F), GLenum(GL_R8), GLenum(GL_R16)),
+                         [](const ::testing::TestParamInfo<GLenum>& info) {
+                             switch (info.param) {
+                                 case GL_R32F: return std::string("r32f");
+                                 case GL_R16F: return std::string("r16f");
+                                 case GL_R8: return std::string("r8");
+                                 default: return std::string("r16");
+                             }
+                         });
 
 TEST_F(ObstacleArguments, BadObstaclesAreRefusedAndChangeNothing) {
     pf_sim_desc d = test_desc(8, 8, 8, 0.05f);
@@ -377,6 +516,57 @@ TEST_F(ObstacleArguments, BadObstaclesAreRefusedAndChangeNothing) {
     refused(o, "NaN velocity");
     o = good, o.angular_velocity[2] = -INFINITY;
     refused(o, "infinite angular velocity");
+    // SDF obstacles: the engine's texture must be a 3D texture with storage in a supported format.
+    const double h[3] = {0.05, 0.05, 0.05};
+    const auto ball = [](double x, double y, double z) { return std::sqrt(x * x + y * y + z * z) - 0.04; };
+    const GLuint good_tex = make_sdf_texture(GL_R32F, 8, h, 1.0, ball);
+    const GLuint rgba = make_sdf_texture(GL_RGBA8, 8, h, 1.0, ball);
+    GLuint empty3d = 0, flat = 0, integer = 0;
+    glGenTextures(1, &empty3d);
+    glGenTextures(1, &flat);
+    glGenTextures(1, &integer);
+    GLint previous3d = 0, previous2d = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_3D, &previous3d);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous2d);
+    glBindTexture(GL_TEXTURE_3D, empty3d);  // a 3D texture without storage
+    glBindTexture(GL_TEXTURE_3D, integer);
+    const int32_t ints[8] = {};
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_R32I, 2, 2, 2, 0, GL_RED_INTEGER, GL_INT, ints);
+    glBindTexture(GL_TEXTURE_3D, GLuint(previous3d));
+    glBindTexture(GL_TEXTURE_2D, flat);
+    const float texels[4] = {};
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, 2, 2, 0, GL_RED, GL_FLOAT, texels);
+    glBindTexture(GL_TEXTURE_2D, GLuint(previous2d));
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    pf_obstacle sdf = good;
+    sdf.shape = PF_OBSTACLE_SDF;
+    sdf.sdf_texture = good_tex;
+    sdf.sdf_scale = 1.0f;
+    struct SdfCase {
+        const char* why;
+        std::function<void(pf_obstacle&)> edit;
+    };
+    const SdfCase sdf_cases[] = {
+        {"no texture (0)", [](pf_obstacle& o) { o.sdf_texture = 0; }},
+        {"a name that is no texture", [](pf_obstacle& o) { o.sdf_texture = 987654; }},
+        {"a 2D texture", [&](pf_obstacle& o) { o.sdf_texture = flat; }},
+        {"a 3D texture without storage (size 0)", [&](pf_obstacle& o) { o.sdf_texture = empty3d; }},
+        {"a 3D RGBA8 texture", [&](pf_obstacle& o) { o.sdf_texture = rgba; }},
+        {"a 3D integer texture (R32I)", [&](pf_obstacle& o) { o.sdf_texture = integer; }},
+        {"sdf_scale 0", [](pf_obstacle& o) { o.sdf_scale = 0.0f; }},
+        {"negative sdf_scale", [](pf_obstacle& o) { o.sdf_scale = -1.0f; }},
+        {"NaN sdf_scale", [](pf_obstacle& o) { o.sdf_scale = NAN; }},
+        {"zero SDF half extent", [](pf_obstacle& o) { o.half_extents[1] = 0.0f; }},
+    };
+    for (const SdfCase& c : sdf_cases) {
+        o = sdf;
+        c.edit(o);
+        refused(o, c.why);
+        EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << c.why << ": the check leaves no GL error behind";
+    }
+    uint32_t sdf_id = 0;
+    ASSERT_EQ(pf_add_obstacle(sim.get(), &sdf, &sdf_id), PF_OK) << "the good SDF is accepted: " << last_log();
+    ASSERT_EQ(pf_remove_obstacle(sim.get(), sdf_id), PF_OK);
     pf_obstacle_force force{};
     EXPECT_EQ(pf_get_obstacle_force(sim.get(), id + 5, &force), PF_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(pf_get_obstacle_force(sim.get(), id, nullptr), PF_ERROR_INVALID_ARGUMENT);
@@ -397,6 +587,7 @@ TEST_F(ObstacleArguments, BadObstaclesAreRefusedAndChangeNothing) {
     ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
     ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
     EXPECT_EQ(inside_count(read_all(sim.get()), {good}), 0u);
+    for (GLuint t : {good_tex, rgba, empty3d, flat, integer}) glDeleteTextures(1, &t);
 }
 
 // pf_set_obstacle moves an obstacle between steps: the next step keeps particles out of it

@@ -7,19 +7,32 @@
 // between SOLID and FLUID cells is summed into each obstacle's force and torque (obstacle_forces;
 // entry "obstacle_forces", PF_PASS_VELOCITY_UPDATE group); after advection, particles inside are
 // pushed out along the distance gradient (obstacle_push; entry "obstacle_push", PF_PASS_ADVECT
-// group). The step's mean force is copied into a readback ring behind fences at the step's end
+// group). SDF obstacles sample the engine's 3D texture, bound to a texture unit for each of these
+// passes only (PassRunner restores the unit). The step's mean force is copied into a readback ring behind fences at the step's end
 // and read once the fence has passed (force()), never waited for.
 #pragma once
 #include <vector>
 
+#include "gl/objects.h"
 #include "sim/effects/effect.h"
 #include "sim/effects/object_list.h"
 
 namespace pf {
 
+// An obstacle as the engine gave it, and how its SDF texture (if any) encodes distances.
+struct ObstacleEntry {
+    pf_obstacle obstacle{};
+    bool sdf_normalized = false;  // GL_R8 / GL_R16: distance = 2 t - 1 (in texture units)
+};
+
+// Checks the engine's texture `name` of an SDF obstacle: a GL_TEXTURE_3D whose level 0 has storage
+// in GL_R32F, GL_R16F, GL_R8 or GL_R16 (normalized: distance = 2 t - 1). PF_ERROR_INVALID_ARGUMENT,
+// logged, otherwise. Puts back the active unit's 3D binding.
+pf_result check_sdf_texture(const gl::Api& gl, const Log& log, const char* fn, GLuint name, bool& normalized);
+
 class ObstaclesEffect final : public Effect {
 public:
-    using List = ObjectList<pf_obstacle, PF_MAX_OBSTACLES>;
+    using List = ObjectList<ObstacleEntry, PF_MAX_OBSTACLES>;
     ~ObstaclesEffect() override;
     uint32_t feature() const override { return PF_FEATURE_OBSTACLES; }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
@@ -48,6 +61,8 @@ private:
     bool dirty_ = true;
     bool moving_ = false;      // an uploaded obstacle has a non-zero velocity
     gl::Buffer records_;       // PF_MAX_OBSTACLES records (obstacle_shapes.h)
+    gl::Object sdf_sampler_;   // linear, clamped: how the engine's SDF textures are sampled
+    Textures sdf_textures_;    // the SDF obstacles' textures on their units (obstacle_sdf.glsl)
     gl::Buffer forces_;        // PF_MAX_OBSTACLES force records of the current step
     gl::Buffer readback_[kReadbackSlots];
     mutable GLsync fences_[kReadbackSlots] = {};
