@@ -173,9 +173,9 @@ typedef enum pf_quality {
 enum {
     PF_FEATURE_FORCE_FIELDS = 1u << 0, /**< pf_add_force_field: wind, attractors/repulsors, vortices
                                             (one grid pass per substep after gravity) */
-    PF_FEATURE_OBSTACLES = 1u << 1,    /**< pf_add_obstacle: boxes, spheres and capsules, static or moved by
-                                            the engine (solid cells, faces at the obstacle's velocity, particles
-                                            pushed out after advection, pf_get_obstacle_force) */
+    PF_FEATURE_OBSTACLES = 1u << 1,    /**< pf_add_obstacle: boxes, spheres, capsules and SDF textures, static
+                                            or moved by the engine (solid cells, faces at the obstacle's velocity,
+                                            particles pushed out after advection, pf_get_obstacle_force) */
     PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES /**< every known feature bit */
 };
 
@@ -471,7 +471,8 @@ typedef struct pf_obstacle_force {
     uint64_t step;                /**< the pf_step it belongs to (0: none measured yet) */
 } pf_obstacle_force;
 
-/** Default obstacle: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m), at rest. */
+/** Default obstacle: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m), at rest,
+ *  sdf_scale 1. */
 PF_API pf_obstacle pf_default_obstacle(void);
 /** Adds an obstacle; *out_id (may be NULL) names it for pf_set_obstacle / pf_remove_obstacle.
  *  PF_ERROR_INVALID_ARGUMENT for a NULL obstacle, an unknown shape, a non-finite value, a box or SDF
