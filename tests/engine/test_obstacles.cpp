@@ -649,6 +649,42 @@ TEST_F(ObstacleArguments, BadObstaclesAreRefusedAndChangeNothing) {
     for (GLuint t : {good_tex, rgba, empty3d, flat, integer}) glDeleteTextures(1, &t);
 }
 
+// Particles a moving obstacle overtakes leave it at least as fast as its surface: a box moving at
+// 2 m/s along +x (no gravity, one substep) with particles at rest just inside its leading face
+// pushes them out through that face, and each then moves along +x at 2 m/s or faster.
+TEST_F(ObstacleArguments, ParticlesPushedOutOfAMovingObstacleTakeItsNormalVelocity) {
+    pf_sim_desc d = test_desc(16, 16, 16, 0.05f);
+    d.features = PF_FEATURE_OBSTACLES;
+    d.params.gravity[1] = 0.0f;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    pf_obstacle block = box(0.4, 0.4, 0.4, 0.1, 0.1, 0.1);
+    block.velocity[0] = 2.0f;
+    ASSERT_EQ(pf_add_obstacle(sim.get(), &block, nullptr), PF_OK);
+    std::vector<float> xyz;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 6; ++j)
+            for (int k = 0; k < 6; ++k) {
+                xyz.push_back(float(0.455 + 0.01 * i));  // 1..4.5 cm inside the face at x = 0.5
+                xyz.push_back(float(0.35 + 0.02 * j));
+                xyz.push_back(float(0.35 + 0.02 * k));
+            }
+    ASSERT_EQ(pf_add_particles(sim.get(), xyz.data(), nullptr, uint32_t(xyz.size() / 3)), PF_OK);
+    ASSERT_EQ(pf_step(sim.get(), 1.0f / 600.0f), PF_OK);
+    pf_stats st{};
+    ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+    ASSERT_EQ(st.substeps, 1u);
+    const ParticleState p = read_all(sim.get());
+    double slowest = 1e9, lowest_x = 1e9;
+    for (size_t i = 0; i < p.count(); ++i) {
+        slowest = std::min(slowest, double(p.vel[i * 3]));
+        lowest_x = std::min(lowest_x, double(p.pos[i * 3]));
+    }
+    EXPECT_GE(lowest_x, 0.5) << "out through the leading face";
+    EXPECT_GE(slowest, 2.0 - 1e-4) << "at least the face's normal velocity";
+    RecordProperty("slowest_vx", std::to_string(slowest));
+}
+
 // pf_set_obstacle moves an obstacle between steps: the next step keeps particles out of it
 // where it is now (a sphere moved into the middle of resting liquid clears its volume).
 TEST_F(ObstacleArguments, SetObstacleMovesIt) {
