@@ -173,8 +173,9 @@ typedef enum pf_quality {
 enum {
     PF_FEATURE_FORCE_FIELDS = 1u << 0, /**< pf_add_force_field: wind, attractors/repulsors, vortices
                                             (one grid pass per substep after gravity) */
-    PF_FEATURE_OBSTACLES = 1u << 1,    /**< pf_add_obstacle: static boxes, spheres and capsules (solid
-                                            cells, free-slip faces, particles pushed out after advection) */
+    PF_FEATURE_OBSTACLES = 1u << 1,    /**< pf_add_obstacle: boxes, spheres, capsules and SDF textures, static
+                                            or moved by the engine (solid cells, faces at the obstacle's velocity,
+                                            particles pushed out after advection, pf_get_obstacle_force) */
     PF_FEATURE_EMITTERS = 1u << 2,     /**< pf_add_emitter: boxes, spheres and discs adding particles at a rate,
                                             on the GPU (two passes per step; the live count is kept on the GPU) */
     PF_FEATURE_SINKS = 1u << 3,        /**< pf_add_sink: boxes and spheres removing the particles inside them,
@@ -455,39 +456,63 @@ PF_API pf_result pf_set_force_field(pf_sim* sim, uint32_t id, const pf_force_fie
 /** Removes force field `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
 PF_API pf_result pf_remove_force_field(pf_sim* sim, uint32_t id);
 
-/** Shapes of static obstacles (PF_FEATURE_OBSTACLES). */
+/** Shapes of obstacles (PF_FEATURE_OBSTACLES). */
 typedef enum pf_obstacle_shape {
     PF_OBSTACLE_BOX = 0,          /**< half_extents along the local axes */
     PF_OBSTACLE_SPHERE = 1,       /**< radius */
     PF_OBSTACLE_CAPSULE = 2,      /**< radius around the local y segment from -half_height to +half_height */
-    PF_OBSTACLE_SHAPE_COUNT = 3,
+    PF_OBSTACLE_SDF = 3,          /**< the engine's signed-distance texture sdf_texture over the local box
+                                       [-half_extents, half_extents] (placed like a box) */
+    PF_OBSTACLE_SHAPE_COUNT = 4,
     PF_OBSTACLE_SHAPE_FORCE32 = 0x7fffffff
 } pf_obstacle_shape;
 
-/** One static obstacle. Cells whose centre lies inside are solid (free-slip walls for the liquid);
- *  particles that end a substep inside are pushed out along the distance gradient. Start from
+/** One obstacle. Cells whose centre lies inside are solid: free-slip walls whose faces move with the
+ *  obstacle's surface (v + w x r); particles that end a substep inside are pushed out along the
+ *  distance gradient and leave at least as fast as the surface along its normal. A moving obstacle
+ *  is driven by the engine: pf_set_obstacle each frame with its pose and velocities. Start from
  *  pf_default_obstacle(). */
 typedef struct pf_obstacle {
     pf_obstacle_shape shape;
     float position[3];            /**< centre, world m */
     float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
                                        (0, 0, 0, 0) means the identity */
-    float half_extents[3];        /**< BOX: half sizes in m, each > 0 */
+    float half_extents[3];        /**< BOX, SDF: half sizes in m, each > 0 */
     float radius;                 /**< SPHERE, CAPSULE: radius in m, > 0 */
     float half_height;            /**< CAPSULE: half length of the axis segment in m, >= 0 */
+    float velocity[3];            /**< linear velocity of the centre in m/s (world); default 0 */
+    float angular_velocity[3];    /**< angular velocity about the centre in rad/s (world axes); default 0 */
+    uint32_t sdf_texture;         /**< SDF: the engine's GL_TEXTURE_3D (sampled, never changed or deleted: keep it
+                                       alive while used), GL_R32F / GL_R16F (distances) or GL_R8 / GL_R16 (2 value
+                                       - 1); its texels tile the local box evenly, linear filtering */
+    float sdf_scale;              /**< SDF: metres per unit of the texture's distance, > 0; default 1 */
 } pf_obstacle;
 
-/** Default obstacle: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m). */
+/** What the liquid does to one obstacle in one step (pf_get_obstacle_force). */
+typedef struct pf_obstacle_force {
+    float force[3];               /**< N (world): -sum of p n dA over the faces between the obstacle's solid
+                                       cells and FLUID cells, mean over the step's substeps; p is gauge
+                                       pressure (air 0), so weight and atmosphere are the engine's */
+    float torque[3];              /**< N m (world) of the same pressures about the obstacle's position */
+    uint64_t step;                /**< the pf_step it belongs to (0: none measured yet) */
+} pf_obstacle_force;
+
+/** Default obstacle: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m), at rest,
+ *  sdf_scale 1. */
 PF_API pf_obstacle pf_default_obstacle(void);
 /** Adds an obstacle; *out_id (may be NULL) names it for pf_set_obstacle / pf_remove_obstacle.
- *  PF_ERROR_INVALID_ARGUMENT for a NULL obstacle, an unknown shape, a non-finite value, a box half
- *  extent or radius <= 0 or a negative capsule half height; PF_ERROR_CAPACITY when
- *  PF_MAX_OBSTACLES are present. Each error is logged; on any error nothing changes. */
+ *  PF_ERROR_INVALID_ARGUMENT for a NULL obstacle, an unknown shape, a non-finite value, a box or SDF
+ *  half extent or radius <= 0, a negative capsule half height, or an SDF whose sdf_scale is <= 0 or
+ *  whose sdf_texture is not a 3D texture with storage in one of the four formats; PF_ERROR_CAPACITY
+ *  when PF_MAX_OBSTACLES are present. Each error is logged; on any error nothing changes. */
 PF_API pf_result pf_add_obstacle(pf_sim* sim, const pf_obstacle* obstacle, uint32_t* out_id);
 /** Replaces obstacle `id` (moves it, say); validated as in pf_add_obstacle, nothing changes on error. */
 PF_API pf_result pf_set_obstacle(pf_sim* sim, uint32_t id, const pf_obstacle* obstacle);
 /** Removes obstacle `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
 PF_API pf_result pf_remove_obstacle(pf_sim* sim, uint32_t id);
+/** The newest force and torque of obstacle `id` read back without stalling (a few steps late, like
+ *  pf_stats; out->step says which, 0 and zeros while none); PF_ERROR_INVALID_ARGUMENT if no obstacle has id. */
+PF_API pf_result pf_get_obstacle_force(const pf_sim* sim, uint32_t id, pf_obstacle_force* out);
 
 /** Shapes of emitters (PF_FEATURE_EMITTERS). */
 typedef enum pf_emitter_shape {

@@ -103,6 +103,7 @@ _PROTOTYPES = {
     "pf_default_domain_motion": (t.DomainMotion, []),
     "pf_set_domain_motion": (t.c_enum, [_sim, _P(t.DomainMotion)]),
     "pf_get_domain_motion": (t.c_enum, [_sim, _P(t.DomainMotion)]),
+    "pf_get_obstacle_force": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.ObstacleForce)]),
 }
 
 for _name, (_res, _args) in _PROTOTYPES.items():

@@ -116,6 +116,7 @@ class ObstacleShape(enum.IntEnum):
     BOX = 0
     SPHERE = 1
     CAPSULE = 2
+    SDF = 3
 
 
 class EmitterShape(enum.IntEnum):
@@ -398,7 +399,10 @@ class ForceField(_Struct):
 
 class Obstacle(_Struct):
     """pf_obstacle (PF_FEATURE_OBSTACLES). Start from Obstacle.default(): an axis-aligned box of
-    half extents 0.1 m at the origin (radius 0.1 m). rotation is a quaternion (x, y, z, w)."""
+    half extents 0.1 m at the origin (radius 0.1 m), at rest. rotation is a quaternion (x, y, z, w);
+    velocity (m/s) and angular_velocity (rad/s, about position) move its surface. An SDF obstacle
+    samples the engine's GL_TEXTURE_3D sdf_texture over the local box [-half_extents, half_extents],
+    sdf_scale metres per texture unit."""
 
     @classmethod
     def default(cls):
@@ -412,6 +416,20 @@ class Obstacle(_Struct):
         ("half_extents", ctypes.c_float * 3),
         ("radius", ctypes.c_float),
         ("half_height", ctypes.c_float),
+        ("velocity", ctypes.c_float * 3),
+        ("angular_velocity", ctypes.c_float * 3),
+        ("sdf_texture", ctypes.c_uint32),
+        ("sdf_scale", ctypes.c_float),
+    ]
+
+
+class ObstacleForce(_Struct):
+    """pf_obstacle_force: the liquid's pressure force (N) and torque (N m, about the obstacle's
+    position) in the step `step` (0: none measured yet), read back a few steps late."""
+    _fields_ = [
+        ("force", ctypes.c_float * 3),
+        ("torque", ctypes.c_float * 3),
+        ("step", ctypes.c_uint64),
     ]
 
 
@@ -489,6 +507,7 @@ C_NAMES = {
     Emitter: "pf_emitter",
     Sink: "pf_sink",
     DomainMotion: "pf_domain_motion",
+    ObstacleForce: "pf_obstacle_force",
 }
 
 # Enums mirrored above with the C prefix of their values, for the layout test (values checked too).

@@ -431,6 +431,15 @@ class Simulation:
                            "pf_set_domain_motion")
         self._call("pf_set_domain_motion", ctypes.byref(m))
 
+    def obstacle_force(self, obstacle_id):
+        """pf_get_obstacle_force: the newest ObstacleForce of obstacle obstacle_id (force in N, torque
+        in N m about its position, and the step it belongs to; step 0 while none was read back). Never
+        waits: it is a few steps late. An unknown id raises PflipError(ERROR_INVALID_ARGUMENT)."""
+        oid = _u32(obstacle_id, "pf_get_obstacle_force", "id")
+        out = t.ObstacleForce()
+        self._call("pf_get_obstacle_force", oid, ctypes.byref(out))
+        return out
+
     # ---- rendering ------------------------------------------------------------------------------
     def render_ssf(self, camera, target, params=None):
         """pf_render_ssf: the liquid into target (a RenderTarget) over its scene, seen by camera."""

@@ -61,6 +61,8 @@
 #define PF_SLOT_SINK_HOLES 2
 #define PF_SLOT_SINK_MOVERS 4
 #define PF_SLOT_SINK_STATE 7
+/* the obstacles' force sums (obstacle_forces.comp binds cell types 6, pressure 0, records 3) */
+#define PF_SLOT_OBSTACLE_FORCES 5
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
@@ -97,6 +99,8 @@
 #define PF_COUNT_STRIP_RECORD 4  /* first word of the strip record */
 #define PF_COUNT_INSTANCES 5
 #define PF_COUNT_WORDS 8
+/* explicit uniform location of obstacle_forces.comp: the weight of this substep in the step's mean */
+#define PF_LOC_OBSTACLE_FORCE_WEIGHT 1
 
 /* uniform block with the per-step constants (common/sim.glsl, src/sim/sim_uniforms.h) */
 #define PF_UBO_SIM 0

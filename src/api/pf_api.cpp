@@ -212,6 +212,7 @@ pf_obstacle pf_default_obstacle(void) {
     o.rotation[3] = 1.0f;
     o.half_extents[0] = o.half_extents[1] = o.half_extents[2] = 0.1f;
     o.radius = 0.1f;
+    o.sdf_scale = 1.0f;
     return o;
 }
 
@@ -352,6 +353,13 @@ pf_result pf_get_particle_count(pf_sim* sim, uint32_t* out) {
         *out = s.live_count();
         return PF_OK;
     });
+}
+
+pf_result pf_get_obstacle_force(const pf_sim* sim, uint32_t id, pf_obstacle_force* out) {
+    PF_CHECK_SIM(sim, "pf_get_obstacle_force");
+    const pf::Simulation& s = *sim->impl;
+    if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_obstacle_force: out must not be NULL");
+    return guarded(s.log(), "pf_get_obstacle_force", [&] { return s.obstacle_force(id, *out); });
 }
 
 pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out) {

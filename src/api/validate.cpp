@@ -150,7 +150,13 @@ pf_result validate_obstacle(const pf_obstacle& o, const Log& log, const char* fn
     if (!finite3(o.position) || !finite3(o.half_extents) || !std::isfinite(o.rotation[3]) || !finite3(o.rotation) ||
         !std::isfinite(o.radius) || !std::isfinite(o.half_height))
         return bad("every field of the obstacle must be finite");
-    if (o.shape == PF_OBSTACLE_BOX) {
+    if (!finite3(o.velocity)) return bad("velocity must be finite");
+    if (!finite3(o.angular_velocity)) return bad("angular_velocity must be finite");
+    if (o.shape == PF_OBSTACLE_SDF) {
+        if (!(o.sdf_scale > 0.0f) || !std::isfinite(o.sdf_scale)) return bad("sdf_scale must be finite and > 0, got " + str(o.sdf_scale));
+        if (o.sdf_texture == 0) return bad("an SDF obstacle needs an sdf_texture (0 given)");
+    }
+    if (o.shape == PF_OBSTACLE_BOX || o.shape == PF_OBSTACLE_SDF) {
         for (int a = 0; a < 3; ++a) {
             if (!(o.half_extents[a] > 0.0f))
                 return bad("half_extents[" + std::to_string(a) + "] must be > 0, got " + str(o.half_extents[a]));

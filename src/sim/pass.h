@@ -128,6 +128,27 @@ struct Indirect {
     uint32_t offset = 0;
 };
 
+// The 3D textures a pass samples (the engine's signed-distance textures of SDF obstacles): each
+// bound with `sampler` to texture unit `unit` for the pass's dispatch only; PassRunner puts the
+// unit's previous texture and sampler back right after it (the engine's state is kept).
+class Textures {
+public:
+    static constexpr size_t kMaxTextures = 16;
+    struct Bind {
+        GLuint unit = 0, texture = 0, sampler = 0;
+    };
+    void add(GLuint unit, GLuint texture, GLuint sampler) {
+        if (count_ < binds_.size()) binds_[count_++] = Bind{unit, texture, sampler};
+    }
+    const Bind* begin() const { return binds_.data(); }
+    const Bind* end() const { return binds_.data() + count_; }
+    bool empty() const { return count_ == 0; }
+
+private:
+    std::array<Bind, kMaxTextures> binds_{};
+    uint32_t count_ = 0;
+};
+
 struct Pass {
     gl::ProgramId program;
     StatId stat;
@@ -135,6 +156,7 @@ struct Pass {
     Bindings binds;
     Indirect indirect{};       // when indirect.buffer is set, invocations is ignored
     Uniforms uniforms{};
+    Textures textures{};       // GL_TEXTURE_3D bindings (none for most passes)
 };
 
 }  // namespace pf

@@ -1,6 +1,7 @@
 #include "sim/pass_runner.h"
 
 #include <algorithm>
+#include <array>
 
 namespace pf {
 
@@ -36,13 +37,15 @@ std::string PassRunner::prepare(gl::ProgramId id) {
     }
     used_slots_[size_t(id)] = mask;
     // The default-block uniforms the linker kept, by explicit location (block members have none).
+    // Samplers are bound to units by layout(binding) and take the textures a pass names.
     GLint uniforms = 0;
     gl_.GetProgramInterfaceiv(p, GL_UNIFORM, GL_ACTIVE_RESOURCES, &uniforms);
     uint32_t locations = 0;
     for (GLint u = 0; u < uniforms; ++u) {
-        const GLenum props[2] = {GL_LOCATION, GL_BLOCK_INDEX};
-        GLint values[2] = {-1, -1};
-        gl_.GetProgramResourceiv(p, GL_UNIFORM, GLuint(u), 2, props, 2, nullptr, values);
+        const GLenum props[3] = {GL_LOCATION, GL_BLOCK_INDEX, GL_TYPE};
+        GLint values[3] = {-1, -1, 0};
+        gl_.GetProgramResourceiv(p, GL_UNIFORM, GLuint(u), 3, props, 3, nullptr, values);
+        if (values[2] == GL_SAMPLER_3D) continue;
         if (values[1] == -1 && values[0] >= 0 && values[0] < 32) locations |= 1u << values[0];
     }
     used_uniforms_[size_t(id)] = locations;
@@ -100,12 +103,40 @@ void PassRunner::run(const Pass& pass) {
     gl_.UseProgram(program);
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, uniform_slot_, uniforms_.id());
     for (const Bind& b : pass.binds) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b.slot, b.buffer->id());
+    // Textures: bound for this dispatch only, the engine's bindings of those units put back after.
+    struct Saved {
+        GLint texture = 0, sampler = 0;
+    };
+    std::array<Saved, Textures::kMaxTextures> saved{};
+    GLint active = 0;
+    if (!pass.textures.empty()) {
+        gl_.GetIntegerv(GL_ACTIVE_TEXTURE, &active);
+        size_t i = 0;
+        for (const Textures::Bind& t : pass.textures) {
+            gl_.ActiveTexture(GL_TEXTURE0 + t.unit);
+            gl_.GetIntegerv(GL_TEXTURE_BINDING_3D, &saved[i].texture);
+            gl_.GetIntegerv(GL_SAMPLER_BINDING, &saved[i].sampler);
+            gl_.BindTexture(GL_TEXTURE_3D, t.texture);
+            gl_.BindSampler(t.unit, t.sampler);
+            ++i;
+        }
+    }
     if (pass.indirect.buffer) {
         gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, pass.indirect.buffer->id());
         gl_.DispatchComputeIndirect(GLintptr(pass.indirect.offset));
     } else {
         const Workgroups groups = workgroups_for(pass.invocations, max_groups_x_);
         gl_.DispatchCompute(groups.x, groups.y, 1);
+    }
+    if (!pass.textures.empty()) {
+        size_t i = 0;
+        for (const Textures::Bind& t : pass.textures) {
+            gl_.ActiveTexture(GL_TEXTURE0 + t.unit);
+            gl_.BindTexture(GL_TEXTURE_3D, GLuint(saved[i].texture));
+            gl_.BindSampler(t.unit, GLuint(saved[i].sampler));
+            ++i;
+        }
+        gl_.ActiveTexture(GLenum(active));
     }
 }
 

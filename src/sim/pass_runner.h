@@ -8,6 +8,9 @@
 // the pass. A missing one is a bug in pflip; it is logged once per program and counted
 // (binding_errors(), asserted to be 0 by the tests). Uniform values a pass names that the
 // linker removed are skipped (setting them would be a GL error on drivers that remove them).
+// Sampler uniforms are not checked: they are bound to units by layout(binding), and a pass that
+// samples (the SDF obstacles) names its textures, bound for its dispatch only and the units'
+// previous texture and sampler put back right after (the engine's state is kept).
 #pragma once
 #include <cstdint>
 #include <memory>

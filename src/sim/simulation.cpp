@@ -324,6 +324,7 @@ void Simulation::run_substep() {
     r.run({ProgramId::velocity_update, stat_.velocity_update, faces,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
             {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}}});
+    run_effects(EffectStage::after_velocity_update);
     valid_current_ = 0;
     for (uint32_t layer = 0; layer < desc_.params.extrapolation_layers; ++layer) {
         r.run({ProgramId::extrapolate, stat_.extrapolate, faces,
@@ -385,7 +386,9 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
         if (desc_.features & (1u << i)) v_max = std::max(v_max, effects_[i]->added_speed());
     }
     if (desc_.features & PF_FEATURE_DOMAIN_MOTION) accel += domain_motion().max_acceleration(v_max);
-    const float v_est = std::max(v_max + accel * frame_dt, wind);
+    // Moving obstacles push the liquid at up to their surface speed.
+    const float pushed = (desc_.features & PF_FEATURE_OBSTACLES) ? obstacles().max_surface_speed() : 0.0f;
+    const float v_est = std::max({v_max + accel * frame_dt, wind, pushed});
     const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
     const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
     if (clamped) *clamped = wanted > double(desc_.params.max_substeps);
@@ -410,12 +413,14 @@ pf_result Simulation::step(float frame_dt) {
                   "the per-step status words are contiguous");
     status_.upload(PF_STATUS_MAX_SPEED * 4, sizeof(zeros), zeros);
     upload_uniforms(frame_dt / float(substeps));
+    step_substeps_ = substeps;
     begin_effects_step(frame_dt);
     run_count_stage(EffectStage::before_substeps);
     for (uint32_t s = 0; s < substeps; ++s) run_substep();
     run_count_stage(EffectStage::after_substeps);
     run_metrics();
     runner_->end_step();
+    end_effects_step();
 
     // Status readback ring: copy now, read once the fence has passed (never wait).
     const int slot = int(steps_ % kReadbackSlots);
@@ -444,9 +449,11 @@ void Simulation::run_one_step_for_test(float dt, Passes&& passes) {
     ++steps_;
     runner_->begin_step(steps_, 1);
     upload_uniforms(dt);
+    step_substeps_ = 1;
     begin_effects_step(dt);
     passes();
     runner_->end_step();
+    end_effects_step();
     gl_.MemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
@@ -784,9 +791,16 @@ void Simulation::begin_effects_step(float frame_dt) {
 
 EffectBuffers Simulation::effect_buffers() const {
     const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
-    return EffectBuffers{pos_,    vel_,          face_accum_, face_vel_,
+    return EffectBuffers{pos_,         vel_,       face_accum_,   face_vel_,
                          face_vel_old_, cell_type_, count_record_, status_,
-                         apic ? &affine_ : nullptr, particle_count_, uint64_t(cells_), uint64_t(faces_)};
+                         apic ? &affine_ : nullptr, pressure_, particle_count_, uint64_t(cells_),
+                         uint64_t(faces_), step_substeps_};
+}
+
+void Simulation::end_effects_step() {
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        if (desc_.features & (1u << i)) effects_[i]->end_step(*runner_, steps_);
+    }
 }
 
 void Simulation::run_effects(EffectStage stage) {
@@ -842,17 +856,40 @@ pf_result Simulation::remove_force_field(uint32_t id) {
     force_fields().changed();
     return remove_from(force_fields().list(), id, log_, "pf_remove_force_field");
 }
+pf_result Simulation::obstacle_entry(const pf_obstacle& obstacle, const ObstacleEntry* current, const char* fn,
+                                     ObstacleEntry& out) const {
+    out = ObstacleEntry{obstacle, false};
+    if (obstacle.shape != PF_OBSTACLE_SDF) return PF_OK;
+    // The same texture as before: checked when it was given.
+    if (current && current->obstacle.shape == PF_OBSTACLE_SDF && current->obstacle.sdf_texture == obstacle.sdf_texture) {
+        out.sdf_normalized = current->sdf_normalized;
+        return PF_OK;
+    }
+    gl::StateGuard guard(gl_, gl_state_);
+    return check_sdf_texture(gl_, log_, fn, obstacle.sdf_texture, out.sdf_normalized);
+}
 pf_result Simulation::add_obstacle(const pf_obstacle& obstacle, uint32_t* out_id) {
+    ObstacleEntry entry;
+    if (pf_result r = obstacle_entry(obstacle, nullptr, "pf_add_obstacle", entry); r != PF_OK) return r;
     obstacles().changed();
-    return add_to(obstacles().list(), obstacle, out_id, log_, "pf_add_obstacle", "obstacles");
+    return add_to(obstacles().list(), entry, out_id, log_, "pf_add_obstacle", "obstacles");
 }
 pf_result Simulation::set_obstacle(uint32_t id, const pf_obstacle& obstacle) {
+    ObstacleEntry entry;
+    if (pf_result r = obstacle_entry(obstacle, obstacles().list().find(id), "pf_set_obstacle", entry); r != PF_OK)
+        return r;
     obstacles().changed();
-    return set_in(obstacles().list(), id, obstacle, log_, "pf_set_obstacle");
+    return set_in(obstacles().list(), id, entry, log_, "pf_set_obstacle");
 }
 pf_result Simulation::remove_obstacle(uint32_t id) {
     obstacles().changed();
     return remove_from(obstacles().list(), id, log_, "pf_remove_obstacle");
+}
+pf_result Simulation::obstacle_force(uint32_t id, pf_obstacle_force& out) const {
+    gl::StateGuard guard(gl_, gl_state_);
+    if (!obstacles().force(id, out))
+        return log_.error(PF_ERROR_INVALID_ARGUMENT, "pf_get_obstacle_force: no obstacle has id " + std::to_string(id));
+    return PF_OK;
 }
 
 pf_result Simulation::add_emitter(const pf_emitter& emitter, uint32_t* out_id) {

@@ -64,6 +64,12 @@ public:
     // Domain -> world (the renderer's model matrix): the domain's pose while
     // PF_FEATURE_DOMAIN_MOTION is on, else the identity.
     glm::mat4 domain_to_world() const;
+    // The list entry of `obstacle`: an SDF texture is checked on the GL unless `current` (the entry
+    // it replaces, or nullptr) has the same texture.
+    pf_result obstacle_entry(const pf_obstacle& obstacle, const ObstacleEntry* current, const char* fn,
+                             ObstacleEntry& out) const;
+    // pf_get_obstacle_force: the newest readback of obstacle `id` (never waits).
+    pf_result obstacle_force(uint32_t id, pf_obstacle_force& out) const;
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
     void gl_buffers(pf_gl_buffers& out) const;
     void stats(pf_stats& out) const;
@@ -145,6 +151,9 @@ private:
     void write_count_record(uint32_t live);
     // Copies the GPU's live count into the uniform block (sim.particle_count of the kernels).
     void copy_count_to_uniforms();
+    // End of a step: effects that are on start their readbacks.
+    void end_effects_step();
+    const ObstaclesEffect& obstacles() const { return static_cast<const ObstaclesEffect&>(*effects_[1]); }
     void run_g2p_and_advect();
     const gl::Buffer& grid_buffer(GridBuffer which) const;
     void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat);
@@ -176,6 +185,7 @@ private:
     std::unique_ptr<Effect> effects_[kEffectCount];
     uint32_t effects_ready_ = 0;
     uint32_t requested_features_ = 0;  // desc.features, turned on at the end of init()
+    uint32_t step_substeps_ = 1;       // substeps of the step being run (effects weigh their sums by it)
 
     // particles
     gl::Buffer pos_, vel_;

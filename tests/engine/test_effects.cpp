@@ -94,7 +94,7 @@ TEST_F(Effects, EachEffectAddsOnlyItsOwnPasses) {
     ASSERT_EQ(pf_step(off.get(), 1.0f / 60.0f), PF_OK);
     const std::vector<Entry> core = pass_list(off.get());
     for (const Case& c : {Case{PF_FEATURE_FORCE_FIELDS, {"force_fields"}},
-                          Case{PF_FEATURE_OBSTACLES, {"obstacles", "obstacle_push"}},
+                          Case{PF_FEATURE_OBSTACLES, {"obstacles", "obstacle_push", "obstacle_forces"}},
                           Case{PF_FEATURE_EMITTERS, {"emit"}}, Case{PF_FEATURE_SINKS, {"sinks"}},
                           Case{PF_FEATURE_DOMAIN_MOTION, {"domain_motion"}}}) {
         SimPtr sim = make_scene(*this, 0);

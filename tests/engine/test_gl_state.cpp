@@ -94,16 +94,52 @@ void GlState::etiquette(EngineProgram kind) {
                  [&] { EXPECT_EQ(pf_set_features(sim, PF_FEATURE_ALL), PF_OK) << last_log(); });
     pf_obstacle obstacle = pf_default_obstacle();
     obstacle.position[0] = obstacle.position[1] = obstacle.position[2] = 0.3f;
+    uint32_t obstacle_id = 0;
+    obstacle.velocity[0] = 0.5f;  // moving: its faces take its velocity, its forces are read back
     guarded_call(engine, v++, "pf_add_obstacle",
-                 [&] { EXPECT_EQ(pf_add_obstacle(sim, &obstacle, nullptr), PF_OK) << last_log(); });
+                 [&] { EXPECT_EQ(pf_add_obstacle(sim, &obstacle, &obstacle_id), PF_OK) << last_log(); });
     pf_force_field field = pf_default_force_field();
     field.vector[0] = 1.0f;
     guarded_call(engine, v++, "pf_add_force_field",
                  [&] { EXPECT_EQ(pf_add_force_field(sim, &field, nullptr), PF_OK) << last_log(); });
+    // An SDF obstacle: the engine's 3D texture is bound to a texture unit (units 0.. hold the
+    // engine's textures and samplers here) during the obstacle passes only.
+    GLuint sdf = 0;
+    {
+        GLint active = 0, previous = 0, unpack = 0;
+        glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &unpack);  // the engine may keep one bound
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+        glGetIntegerv(GL_ACTIVE_TEXTURE, &active);
+        glActiveTexture(GL_TEXTURE0 + 15);
+        glGetIntegerv(GL_TEXTURE_BINDING_3D, &previous);
+        glGenTextures(1, &sdf);
+        glBindTexture(GL_TEXTURE_3D, sdf);
+        std::vector<float> texels(4 * 4 * 4);
+        for (int i = 0; i < 64; ++i) texels[size_t(i)] = std::sqrt(float((i % 4 - 1.5) * (i % 4 - 1.5) + (i / 4 % 4 - 1.5) * (i / 4 % 4 - 1.5) + (i / 16 - 1.5) * (i / 16 - 1.5))) - 1.0f;
+        glTexImage3D(GL_TEXTURE_3D, 0, GL_R32F, 4, 4, 4, 0, GL_RED, GL_FLOAT, texels.data());
+        glBindTexture(GL_TEXTURE_3D, GLuint(previous));
+        glActiveTexture(GLenum(active));
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(unpack));
+        ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << "making the engine's SDF texture";
+    }
+    pf_obstacle sdf_obstacle = pf_default_obstacle();
+    sdf_obstacle.shape = PF_OBSTACLE_SDF;
+    sdf_obstacle.sdf_texture = sdf;
+    sdf_obstacle.sdf_scale = 0.05f;
+    sdf_obstacle.position[0] = 0.2f, sdf_obstacle.position[1] = 0.2f, sdf_obstacle.position[2] = 0.2f;
+    guarded_call(engine, v++, "pf_add_obstacle (SDF: checks the engine's texture)",
+                 [&] { EXPECT_EQ(pf_add_obstacle(sim, &sdf_obstacle, nullptr), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_step (effects)", [&] { EXPECT_EQ(pf_step(sim, kDt), PF_OK) << last_log(); });
+    guarded_call(engine, v++, "pf_step (effects, a force readback pending)",
+                 [&] { EXPECT_EQ(pf_step(sim, kDt), PF_OK) << last_log(); });
+    pf_obstacle_force force{};
+    guarded_call(engine, v++, "pf_get_obstacle_force (polls the readback ring)",
+                 [&] { EXPECT_EQ(pf_get_obstacle_force(sim, obstacle_id, &force), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_clear_particles", [&] { EXPECT_EQ(pf_clear_particles(sim), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_step (no particles)", [&] { EXPECT_EQ(pf_step(sim, kDt), PF_OK) << last_log(); });
     guarded_call(engine, v++, "pf_destroy", [&] { pf_destroy(sim); });
+    EXPECT_TRUE(glIsTexture(sdf)) << "the engine's SDF texture is the engine's: never deleted";
+    glDeleteTextures(1, &sdf);
     // Its particle buffers went with it; the engine's objects did not (checked by guarded_call).
     EXPECT_FALSE(glIsBuffer(bufs.positions)) << "pf_destroy left the positions buffer";
     EXPECT_FALSE(glIsBuffer(bufs.velocities)) << "pf_destroy left the velocities buffer";

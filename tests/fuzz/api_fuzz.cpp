@@ -600,7 +600,11 @@ private:
     // Features the count model can follow (force fields, obstacles), or unknown bits.
     void features(Sim& s) {
         const bool unknown = g_.chance(0.1);
-        const uint32_t f = unknown ? (1u << (4 + g_.below(28))) : g_.below(4);
+        uint32_t f = g_.below(4);  // force fields and obstacles in any combination
+        if (unknown) {
+            do f = 1u << g_.below(32);
+            while (f & uint32_t(PF_FEATURE_ALL));
+        }
         uint32_t was = 0;
         CHECK(pf_get_features(s.sim, &was) == PF_OK, "get features");
         trace("pf_set_features %#x", f);
@@ -650,7 +654,7 @@ private:
         double size = 0;
         inner(s, o.position, size);
         rotation(o.rotation);
-        set_raw(o.shape, int32_t(g_.below(PF_OBSTACLE_SHAPE_COUNT)));
+        set_raw(o.shape, int32_t(g_.below(PF_OBSTACLE_SDF)));  // primitives (an SDF needs an engine texture)
         for (float& h : o.half_extents) h = float(size);
         o.radius = float(size), o.half_height = float(size);
         if (hostile) {

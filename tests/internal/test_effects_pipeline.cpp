@@ -13,7 +13,7 @@ class EffectsPipeline : public GpuTest {};
 
 const gl::ProgramId kForceFieldPrograms[] = {gl::ProgramId::force_fields};
 const gl::ProgramId kObstaclePrograms[] = {gl::ProgramId::obstacle_cells, gl::ProgramId::obstacle_faces,
-                                           gl::ProgramId::obstacle_push};
+                                           gl::ProgramId::obstacle_push, gl::ProgramId::obstacle_forces};
 const gl::ProgramId kEmitterPrograms[] = {gl::ProgramId::emit, gl::ProgramId::emit_apic, gl::ProgramId::emit_commit};
 const gl::ProgramId kDomainPrograms[] = {gl::ProgramId::domain_forces};
 const gl::ProgramId kSinkPrograms[] = {gl::ProgramId::sink_mark, gl::ProgramId::sink_lists, gl::ProgramId::sink_move,

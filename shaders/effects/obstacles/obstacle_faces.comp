@@ -1,6 +1,6 @@
 // Obstacles, per face, after obstacle_cells: a face with a SOLID cell on either side takes the
-// normal component of the velocity of the obstacle that cell lies deepest in (0 for static
-// obstacles): free-slip, as the domain walls. The pressure setup reads it as the boundary
+// normal component of the velocity, at the face's centre (v + w x r), of the obstacle that cell
+// lies deepest in (0 for static obstacles): free-slip, as the domain walls, moving with it. The pressure setup reads it as the boundary
 // velocity and velocity_update keeps it. Domain walls stay 0.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
@@ -21,5 +21,5 @@ void main() {
     if (!solid_lo && cell_type[cell_index(f)] != PF_CELL_SOLID) return;
     int nearest;
     scene_distance(cell_centre(solid_lo ? lo : f), nearest);
-    face_vel[id] = nearest >= 0 ? obstacle_velocity(uint(nearest))[axis] : 0.0;
+    face_vel[id] = nearest >= 0 ? obstacle_velocity(uint(nearest), face_centre(axis, f))[axis] : 0.0;
 }

@@ -1,7 +1,8 @@
 // Obstacles, per particle, after advection: a particle closer to the obstacles than
 // PF_OBSTACLE_PUSH_MARGIN cells (or inside one) is moved along the gradient of the nearest
 // obstacle's signed distance (central differences) to that margin outside, and the part of its
-// velocity relative to the obstacle that points into it is removed (free-slip). Two rounds
+// velocity relative to the obstacle's surface there (v + w x r) that points into it is removed
+// (free-slip): it leaves at least as fast as a moving obstacle's surface along the normal. Two rounds
 // resolve a particle pushed from one obstacle into another; the wall clamp follows. Where the
 // gradient leads out of the domain (an obstacle cut by a wall, the particle between its
 // nearest surface and the wall) the particle leaves along the axis direction with the shortest
@@ -65,7 +66,7 @@ void main() {
         vec3 n = len > 0.0 ? grad / len : vec3(0.0, 1.0, 0.0);  // at a medial point: straight up
         vec3 pushed = x + (margin - d) * n;
         x = in_domain(pushed) ? pushed : axis_exit(o, x, margin, n);
-        float vn = dot(v - obstacle_velocity(o), n);
+        float vn = dot(v - obstacle_velocity(o, x), n);
         if (vn < 0.0) v -= vn * n;
         moved = true;
     }

@@ -30,9 +30,11 @@ struct EffectBuffers {
     const gl::Buffer& count_record;  // the live-count record (PF_COUNT_* in common/slots.h)
     const gl::Buffer& status;      // the step's status words (flags)
     const gl::Buffer* affine;      // APIC affine vectors while params.transfer is APIC, else nullptr
+    const gl::Buffer& pressure;    // the substep's solved pressure (Pa) per cell
     uint32_t particles = 0;        // particle slots passes cover (an upper bound of the live count
                                    // while the GPU keeps it: kernels compare with sim.particle_count)
     uint64_t cells = 0, faces = 0;
+    uint32_t substeps = 1;         // substeps of the current step
 };
 
 // What an effect learns at the start of each pf_step.
@@ -48,6 +50,7 @@ enum class EffectStage : uint8_t {
     before_substeps,    // once per step, before the first substep (emitters add particles)
     after_grid_forces,  // face velocities hold u_old + gravity (force fields)
     after_classify,     // cells are FLUID / AIR (obstacles mark SOLID and set their faces)
+    after_velocity_update,  // the pressure is solved and applied (obstacles sum their forces)
     after_advect,       // particles have moved (obstacles push them out)
     after_substeps,     // once per step, after the last substep (sinks remove particles)
 };
@@ -67,6 +70,12 @@ public:
     virtual void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) = 0;
     // Start of a step, before begin_step: the frame's length (emitters turn rates into counts).
     virtual void begin_frame(const FrameInfo&) {}
+    // End of a step (after its last pass, GL state guarded): start the readbacks of what the
+    // step measured (copies behind fences, never waited for).
+    virtual void end_step(PassRunner& runner, uint64_t step) {
+        (void)runner;
+        (void)step;
+    }
     // True while it does work on the liquid (adds energy): PF_FLAG_ENERGY_GAINED then takes its
     // reference after the last such step instead of before it.
     virtual bool does_work() const { return false; }

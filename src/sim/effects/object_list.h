@@ -37,6 +37,8 @@ public:
     const std::vector<T>& items() const { return items_; }
     // The objects for in-place updates of state the host keeps with them (ids unchanged).
     std::vector<T>& items_mutable() { return items_; }
+    // The ids of items(), in the same order.
+    const std::vector<uint32_t>& ids() const { return ids_; }
     uint32_t size() const { return uint32_t(items_.size()); }
 
 private:
