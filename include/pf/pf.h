@@ -79,7 +79,12 @@ typedef enum pf_p2g {
                                   compare-and-swap loop elsewhere): no rounding grid or overflow,
                                   but the sums depend on the order of the atomics (not
                                   bit-identical run to run) */
-    PF_P2G_COUNT = 2,
+    PF_P2G_SORTED_GATHER = 2, /**< particles counting-sorted by cell every substep, then one
+                                  gather per face sample summing its particles in a fixed order:
+                                  no atomics on hot samples, no rounding grid or overflow, and
+                                  bit-identical run to run and for any particle order (several
+                                  passes more: docs/accuracy.md) */
+    PF_P2G_COUNT = 3,
     PF_P2G_FORCE32 = 0x7fffffff
 } pf_p2g;
 

@@ -43,6 +43,17 @@
 #define PF_SLOT_MG_COARSE_TYPE 2
 #define PF_SLOT_MG_COARSE_R 4
 #define PF_SLOT_MG_COARSE_E 5
+/* storage blocks of the sorted-gather P2G (pf_p2g PF_P2G_SORTED_GATHER: sim/p2g_sort_*.comp,
+ * sim/p2g_gather.comp): positions 0, velocities 1, face accumulators 4, cell counts 5 and APIC
+ * affine vectors 6 as above; its own buffers on the slots those kernels leave free (none binds
+ * face velocities or the status buffer) */
+#define PF_SLOT_SORT_CELL_SLOT 2  /* per particle: uvec2(its cell, its slot among the cell's particles) */
+#define PF_SLOT_SORT_CELL_START 3 /* per cell: first index of its particles in the sorted order */
+#define PF_SLOT_SORT_UNSORTED 4   /* particle indices grouped by cell, in counting-atomic order */
+#define PF_SLOT_SORT_SORTED 7     /* particle indices grouped by cell, in the fixed order within each cell */
+/* storage blocks of the exclusive prefix sum (sim/scan_blocks.comp, sim/scan_add.comp) */
+#define PF_SLOT_SCAN_IN 0
+#define PF_SLOT_SCAN_OUT 1
 /* storage blocks of the accuracy-metrics kernels (sim/metrics*.comp): the particle/face group's
  * slots for what they read, and the face accumulator's slot (4, unused there) for their partial sums */
 #define PF_SLOT_METRICS_PARTIALS 4
@@ -66,6 +77,13 @@
 #define PF_LOC_PUSH_CENTER_RADIUS 0
 #define PF_LOC_PUSH_DV_MAX_SPEED 1
 #define PF_LOC_PUSH_COUNT 2
+
+/* explicit uniform locations of the prefix-sum kernels: items of the level, and word offsets of
+ * its input, its output and its block totals */
+#define PF_LOC_SCAN_COUNT 0
+#define PF_LOC_SCAN_IN_OFFSET 1
+#define PF_LOC_SCAN_OUT_OFFSET 2
+#define PF_LOC_SCAN_SUMS_OFFSET 3
 
 /* explicit uniform location of the metrics reduction: workgroups (partial-sum pairs) to add */
 #define PF_LOC_METRICS_GROUPS 0
