@@ -46,11 +46,12 @@
 /* storage blocks of the sorted-gather P2G (pf_p2g PF_P2G_SORTED_GATHER: sim/p2g_sort_*.comp,
  * sim/p2g_gather.comp): positions 0, velocities 1, face accumulators 4, cell counts 5 and APIC
  * affine vectors 6 as above; its own buffers on the slots those kernels leave free (none binds
- * face velocities or the status buffer) */
-#define PF_SLOT_SORT_CELL_SLOT 2  /* per particle: uvec2(its cell, its slot among the cell's particles) */
-#define PF_SLOT_SORT_CELL_START 3 /* per cell: first index of its particles in the sorted order */
-#define PF_SLOT_SORT_UNSORTED 4   /* particle indices grouped by cell, in counting-atomic order */
-#define PF_SLOT_SORT_SORTED 7     /* particle indices grouped by cell, in the fixed order within each cell */
+ * face velocities or the status buffer). It sorts by half cell (2 x 2 x 2 per cell). */
+#define PF_SLOT_SORT_CELL_SLOT 2  /* per particle: uvec2(its half cell, its slot among that half cell's particles) */
+#define PF_SLOT_SORT_HALF_COUNT 3 /* per half cell: particles (the counting pass only) */
+#define PF_SLOT_SORT_HALF_START 3 /* per half cell, plus one: first index of its particles in the sorted order */
+#define PF_SLOT_SORT_UNSORTED 4   /* particle indices grouped by half cell, in counting-atomic order */
+#define PF_SLOT_SORT_SORTED 7     /* particle indices grouped by half cell, in the fixed order within each */
 /* storage blocks of the exclusive prefix sum (sim/scan_blocks.comp, sim/scan_add.comp) */
 #define PF_SLOT_SCAN_IN 0
 #define PF_SLOT_SCAN_OUT 1

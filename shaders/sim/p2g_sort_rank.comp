@@ -1,19 +1,18 @@
-// Sorted-gather P2G, step 4 of 5, per particle: places the particle in its cell's segment of the
-// sorted index list by rank, the number of the cell's particles that come before it in a fixed
-// order: by the bits of the position, then of the velocity (then, with PF_APIC, of the affine
+// Sorted-gather P2G, step 4 of 5, per particle: places the particle in its half cell's segment
+// of the sorted index list by rank, the number of the half cell's particles that come before it
+// in a fixed order: by the bits of the position, then of the velocity (then, with PF_APIC, of the affine
 // vectors), then by particle index. Particles that tie on everything but the index contribute
-// identical terms, so the gather (p2g_gather.comp), which sums each cell in this order, gives
-// the same bits for any order of the particle array and any order of the counting atomics.
-// O(n) per particle in a cell of n particles (O(n^2) per cell): a few tens of reads at the
-// usual 8 per cell; a cell holding thousands pays quadratically, but with no atomics.
+// identical terms, so the gather (p2g_gather.comp), which sums each half cell in this order,
+// gives the same bits for any order of the particle array and any order of the counting
+// atomics. O(n) per particle in a half cell of n particles (O(n^2) per half cell): about one at
+// the usual 8 per cell; a half cell holding thousands pays quadratically, but with no atomics.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
 layout(std430, binding = PF_SLOT_PARTICLE_VEL) readonly buffer Vel { vec4 vel[]; };
 layout(std430, binding = PF_SLOT_SORT_CELL_SLOT) readonly buffer CellSlot { uvec2 cell_slot[]; };
-layout(std430, binding = PF_SLOT_SORT_CELL_START) readonly buffer Start { uint cell_start[]; };
+layout(std430, binding = PF_SLOT_SORT_HALF_START) readonly buffer Start { uint half_start[]; };
 layout(std430, binding = PF_SLOT_SORT_UNSORTED) readonly buffer Unsorted { uint unsorted[]; };
-layout(std430, binding = PF_SLOT_CELL_COUNT) readonly buffer Count { uint cell_count[]; };
 layout(std430, binding = PF_SLOT_SORT_SORTED) writeonly buffer Sorted { uint sorted_index[]; };
 #if PF_APIC
 layout(std430, binding = PF_SLOT_PARTICLE_AFFINE) readonly buffer Affine { vec4 affine[]; };
@@ -31,7 +30,7 @@ void main() {
     uint i = flat_id();
     if (i >= sim.particle_count) return;
     uvec2 cs = cell_slot[i];
-    uint start = cell_start[cs.x], n = cell_count[cs.x];
+    uint start = half_start[cs.x], n = half_start[cs.x + 1u] - start;
     uvec3 key_pos = floatBitsToUint(pos[i].xyz), key_vel = floatBitsToUint(vel[i].xyz);
 #if PF_APIC
     uvec3 key_affine[3] = uvec3[3](floatBitsToUint(affine[3u * i].xyz), floatBitsToUint(affine[3u * i + 1u].xyz),

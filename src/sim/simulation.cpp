@@ -234,11 +234,14 @@ pf_result Simulation::prepare_sorted_gather(bool apic, const char* fn) {
             return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
     if (sort_scan_.bytes() != 0) return PF_OK;
-    // The prefix sum's levels: the cell counts, then their block totals, and so on until one
-    // workgroup scans them all. One buffer: the cell starts (level 0's prefixes) at word 0, then
-    // per level above its block totals and their prefixes, then the grand total.
-    std::vector<ScanLevel> levels{ScanLevel{uint32_t(cells_), 0, 0, 0}};
-    uint64_t words = uint64_t(cells_);
+    // Particles are sorted by half cell (2 x 2 x 2 per cell). The prefix sum's levels: the half
+    // cells' counts and one zero after them (so that start[h + 1] - start[h] is the count of every
+    // h), then their block totals, and so on until one workgroup scans them all. One buffer: the
+    // starts (level 0's prefixes) at word 0, then per level above its block totals and their
+    // prefixes, then the grand total.
+    const uint64_t halves = uint64_t(cells_) * 8u + 1u;
+    std::vector<ScanLevel> levels{ScanLevel{uint32_t(halves), 0, 0, 0}};
+    uint64_t words = halves;
     while (levels.back().count > PF_WORKGROUP_SIZE) {
         const uint32_t blocks = (levels.back().count + PF_WORKGROUP_SIZE - 1) / PF_WORKGROUP_SIZE;
         levels.back().sums = uint32_t(words);
@@ -248,26 +251,28 @@ pf_result Simulation::prepare_sorted_gather(bool apic, const char* fn) {
     levels.back().sums = uint32_t(words);
     words += 1;
     const uint64_t np = desc_.max_particles;
-    const uint64_t largest = std::max<uint64_t>(np * 8u, words * 4u);  // the per-particle uvec2s or the sums
+    const uint64_t largest = std::max<uint64_t>(np * 8u, words * 4u);  // the per-particle uvec2s or the starts
     GLint64 max_block = 0;
     gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
     if (largest > uint64_t(max_block)) {
         return log_.error(PF_ERROR_CAPACITY, std::string(fn) + ": PF_P2G_SORTED_GATHER needs a buffer of " +
-                                                 std::to_string(largest) + " bytes (8 per particle, 4 per cell), more than "
+                                                 std::to_string(largest) + " bytes (8 per particle, 32 per cell), more than "
                                                  "this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
                                                  "); lower max_particles or the grid size");
     }
     gl::Buffer cell_slot(gl_, size_t(np) * 8, GL_DYNAMIC_COPY), unsorted(gl_, size_t(np) * 4, GL_DYNAMIC_COPY),
-        sorted(gl_, size_t(np) * 4, GL_DYNAMIC_COPY), scan(gl_, size_t(words) * 4, GL_DYNAMIC_COPY);
+        sorted(gl_, size_t(np) * 4, GL_DYNAMIC_COPY), scan(gl_, size_t(words) * 4, GL_DYNAMIC_COPY),
+        counts(gl_, size_t(halves) * 4, GL_DYNAMIC_COPY);
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                          std::string(fn) + ": allocating " + std::to_string((np * 16 + words * 4) >> 20) +
+                          std::string(fn) + ": allocating " + std::to_string((np * 16 + words * 4 + halves * 4) >> 20) +
                               " MiB for the sorted-gather P2G failed (GL error " + hex(err) + ")");
     }
     sort_cell_slot_ = std::move(cell_slot);
     sort_unsorted_ = std::move(unsorted);
     sort_sorted_ = std::move(sorted);
     sort_scan_ = std::move(scan);
+    sort_count_ = std::move(counts);
     scan_levels_ = std::move(levels);
     stat_p2g_sort_ = runner_->add_stat("p2g_sort", PF_PASS_P2G);
     stat_p2g_gather_ = runner_->add_stat("p2g_gather", PF_PASS_P2G);
@@ -279,15 +284,17 @@ void Simulation::run_sorted_gather(bool apic) {
     const uint32_t np = particle_count_;
     const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
         count{PF_SLOT_CELL_COUNT, &cell_count_}, cell_slot{PF_SLOT_SORT_CELL_SLOT, &sort_cell_slot_},
-        start{PF_SLOT_SORT_CELL_START, &sort_scan_}, unsorted{PF_SLOT_SORT_UNSORTED, &sort_unsorted_},
+        start{PF_SLOT_SORT_HALF_START, &sort_scan_}, unsorted{PF_SLOT_SORT_UNSORTED, &sort_unsorted_},
         sorted{PF_SLOT_SORT_SORTED, &sort_sorted_}, affine{PF_SLOT_PARTICLE_AFFINE, &affine_};
-    // 1. Count per cell (cell_count_ was cleared), keeping each particle's cell and slot.
-    r.run({ProgramId::p2g_sort_count, stat_p2g_sort_, np, {pos, count, cell_slot}});
-    // 2. Cell starts: exclusive prefix sum of the counts, up the levels, then back down.
+    // 1. Count per cell and per half cell (both cleared), keeping each particle's half cell and slot.
+    fill(sort_count_, scan_levels_[0].count, 0u, stat_.clear);
+    r.run({ProgramId::p2g_sort_count, stat_p2g_sort_, np,
+           {pos, count, {PF_SLOT_SORT_HALF_COUNT, &sort_count_}, cell_slot}});
+    // 2. Half-cell starts: exclusive prefix sum of the counts, up the levels, then back down.
     for (size_t k = 0; k < scan_levels_.size(); ++k) {
         const ScanLevel& l = scan_levels_[k];
         r.run({ProgramId::scan_blocks, stat_p2g_sort_, l.count,
-               {{PF_SLOT_SCAN_IN, k == 0 ? &cell_count_ : &sort_scan_}, {PF_SLOT_SCAN_OUT, &sort_scan_}}, {},
+               {{PF_SLOT_SCAN_IN, k == 0 ? &sort_count_ : &sort_scan_}, {PF_SLOT_SCAN_OUT, &sort_scan_}}, {},
                {Uniform::uint1(PF_LOC_SCAN_COUNT, l.count), Uniform::uint1(PF_LOC_SCAN_IN_OFFSET, l.in),
                 Uniform::uint1(PF_LOC_SCAN_OUT_OFFSET, l.out), Uniform::uint1(PF_LOC_SCAN_SUMS_OFFSET, l.sums)}});
     }
@@ -297,15 +304,15 @@ void Simulation::run_sorted_gather(bool apic) {
                {Uniform::uint1(PF_LOC_SCAN_COUNT, l.count), Uniform::uint1(PF_LOC_SCAN_OUT_OFFSET, l.out),
                 Uniform::uint1(PF_LOC_SCAN_SUMS_OFFSET, scan_levels_[k + 1].out)}});
     }
-    // 3. Indices into their cells' segments; 4. the fixed order within each cell.
+    // 3. Indices into their half cells' segments; 4. the fixed order within each half cell.
     r.run({ProgramId::p2g_sort_scatter, stat_p2g_sort_, np, {cell_slot, start, unsorted}});
     r.run({apic ? ProgramId::p2g_sort_rank_apic : ProgramId::p2g_sort_rank, stat_p2g_sort_, np,
-           apic ? Bindings{pos, vel, cell_slot, start, unsorted, count, sorted, affine}
-                : Bindings{pos, vel, cell_slot, start, unsorted, count, sorted}});
+           apic ? Bindings{pos, vel, cell_slot, start, unsorted, sorted, affine}
+                : Bindings{pos, vel, cell_slot, start, unsorted, sorted}});
     // 5. One invocation per face sample sums its particles (both words of every sample).
     const Bind accum{PF_SLOT_FACE_ACCUM, &face_accum_};
     r.run({apic ? ProgramId::p2g_gather_apic : ProgramId::p2g_gather, stat_p2g_gather_, uint64_t(faces_),
-           apic ? Bindings{pos, vel, start, count, sorted, accum, affine} : Bindings{pos, vel, start, count, sorted, accum}});
+           apic ? Bindings{pos, vel, start, sorted, accum, affine} : Bindings{pos, vel, start, sorted, accum}});
 }
 
 void Simulation::zero_affine(uint32_t first, uint32_t count) {

@@ -459,7 +459,7 @@ TEST_F(P2gSchemes, SortedGatherPassesAreListedUnderP2gOnceSelected) {
     ASSERT_NE(atomics, nullptr);
     EXPECT_EQ(sort->group, PF_PASS_P2G);
     EXPECT_EQ(gather->group, PF_PASS_P2G);
-    // Per substep: count, the prefix sum (960 cells: 4 blocks, so two levels up and one down),
+    // Per substep: count, the prefix sum (7,681 half-cell counts: 31 blocks, so two levels up and one down),
     // scatter and order, 6 dispatches; then one gather.
     EXPECT_EQ(sort->dispatches, 6u * stats.substeps);
     EXPECT_EQ(gather->dispatches, stats.substeps);
@@ -467,10 +467,10 @@ TEST_F(P2gSchemes, SortedGatherPassesAreListedUnderP2gOnceSelected) {
     EXPECT_EQ(sim->impl->runner().binding_errors(), 0u);
 }
 
-// A grid of 76,800 cells: the prefix sum over the cell counts takes three levels (300 blocks of
-// 256, then 2 blocks, then one), and every particle must still land in its cell's segment.
+// A grid of 9,600 cells: the prefix sum over the 76,801 half-cell counts takes three levels (301
+// blocks of 256, then 2 blocks, then one), and every particle must still land in its segment.
 TEST_F(P2gSchemes, SortedGatherOnAGridWhosePrefixSumTakesThreeLevels) {
-    const ref::Grid g{48, 40, 40, 0.025, glm::dvec3(0.0)};
+    const ref::Grid g{24, 20, 20, 0.05, glm::dvec3(0.0)};
     std::mt19937 rng(17);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f), uv(-2.0f, 2.0f);
     std::vector<float> pos, vel;
@@ -486,11 +486,11 @@ TEST_F(P2gSchemes, SortedGatherOnAGridWhosePrefixSumTakesThreeLevels) {
     const SplatResult gather = splat_of(PF_P2G_SORTED_GATHER, PF_TRANSFER_PIC_FLIP, pos, vel, {}, g);
     ASSERT_EQ(gather.accum.size(), size_t(2 * g.faces()));
     EXPECT_EQ(gather.count, exact.count);
-    // g <= 48 here: the grid coordinate errs by up to 4x the 12-cell case's 1e-6, and so does
-    // each weight factor (a term by <= 4 x 3.2e-6 per m/s).
-    const double worst = worst_float_ratio(gather.accum, exact, contributions(g, particles), 2.0, 4 * 3.2e-6);
+    // g <= 24 here: the grid coordinate errs by up to 2x the 12-cell case's 1e-6, and so does
+    // each weight factor (a term by <= 2 x 3.2e-6 per m/s).
+    const double worst = worst_float_ratio(gather.accum, exact, contributions(g, particles), 2.0, 2 * 3.2e-6);
     EXPECT_LE(worst, 1.0);
-    std::printf("sorted-gather P2G on 48 x 40 x 40 cells (three prefix-sum levels): %.3f of its rounding bound\n", worst);
+    std::printf("sorted-gather P2G on 24 x 20 x 20 cells (three prefix-sum levels): %.3f of its rounding bound\n", worst);
 }
 
 }  // namespace
