@@ -209,7 +209,8 @@ typedef struct pf_sim pf_sim;
 /** Passes timed and counted by pf_get_stats. */
 typedef enum pf_pass {
     PF_PASS_CLEAR = 0,            /**< zero the grid accumulators */
-    PF_PASS_P2G = 1,              /**< particle-to-grid splat (fixed-point atomics) */
+    PF_PASS_P2G = 1,              /**< particle-to-grid: the atomic splat ("p2g"), or the sorted gather's
+                                       sort and gather ("p2g_sort", "p2g_gather") */
     PF_PASS_GRID_FORCES = 2,      /**< normalise face velocities, apply gravity (and force fields) */
     PF_PASS_CLASSIFY = 3,         /**< mark cells fluid / air (and solid: obstacles, PF_FEATURE_OBSTACLES) */
     PF_PASS_PRESSURE_SETUP = 4,   /**< divergence right-hand side */
