@@ -493,5 +493,37 @@ TEST_F(P2gSchemes, SortedGatherOnAGridWhosePrefixSumTakesThreeLevels) {
     std::printf("sorted-gather P2G on 24 x 20 x 20 cells (three prefix-sum levels): %.3f of its rounding bound\n", worst);
 }
 
+// Particles exactly on every half-cell boundary of a grid of 1/8 m cells (positions k/16 m, exact
+// in float: g = k/2), walls included (g = 0 and g = n): the stencil clamps, the cell and half-cell
+// clamps and the gather's half-cell ranges all meet their edge cases here.
+TEST_F(P2gSchemes, SortedGatherWithParticlesOnEveryHalfCellBoundaryAndTheWalls) {
+    const ref::Grid g{12, 10, 8, 0.125, glm::dvec3(0.0)};
+    std::mt19937 rng(19);
+    std::uniform_real_distribution<float> uv(-2.0f, 2.0f);
+    std::vector<float> pos, vel;
+    ref::Particles particles;
+    for (int k = 0; k <= 2 * g.nz; ++k)
+        for (int j = 0; j <= 2 * g.ny; ++j)
+            for (int i = 0; i <= 2 * g.nx; ++i) {
+                const float p[3] = {float(i) / 16.0f, float(j) / 16.0f, float(k) / 16.0f};
+                const float v[3] = {uv(rng), uv(rng), uv(rng)};
+                for (int a = 0; a < 3; ++a) pos.push_back(p[a]), vel.push_back(v[a]);
+                particles.pos.emplace_back(p[0], p[1], p[2]);
+                particles.vel.emplace_back(v[0], v[1], v[2]);
+            }
+    const ref::P2GResult exact = ref::p2g(g, particles);
+    const SplatResult gather = splat_of(PF_P2G_SORTED_GATHER, PF_TRANSFER_PIC_FLIP, pos, vel, {}, g),
+                      fixed = splat_of(PF_P2G_FIXED_POINT, PF_TRANSFER_PIC_FLIP, pos, vel, {}, g);
+    ASSERT_EQ(gather.accum.size(), size_t(2 * g.faces()));
+    EXPECT_EQ(gather.count, exact.count);
+    EXPECT_EQ(fixed.count, exact.count);
+    // Exact positions and dx: g and the weights (products of 0, 1/2, 1) are exact, so the only
+    // error left is the float sums'; the bound is the usual one with the term error dropped.
+    const double worst = worst_float_ratio(gather.accum, exact, contributions(g, particles), 2.0, 0.0);
+    EXPECT_LE(worst, 1.0);
+    std::printf("sorted-gather P2G, %zu particles on half-cell boundaries and walls: %.3f of the float-sum bound\n",
+                particles.pos.size(), worst);
+}
+
 }  // namespace
 }  // namespace pf::test
