@@ -79,7 +79,7 @@ typedef enum pf_p2g {
                                   compare-and-swap loop elsewhere): no rounding grid or overflow,
                                   but the sums depend on the order of the atomics (not
                                   bit-identical run to run) */
-    PF_P2G_SORTED_GATHER = 2, /**< particles counting-sorted by cell every substep, then one
+    PF_P2G_SORTED_GATHER = 2, /**< particles counting-sorted by half cell every substep, then one
                                   gather per face sample summing its particles in a fixed order:
                                   no atomics on hot samples, no rounding grid or overflow, and
                                   bit-identical run to run and for any particle order (several

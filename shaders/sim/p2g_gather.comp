@@ -4,9 +4,11 @@
 // common/sim.glsl) gives weight max(0, 1 - |s - f|) per axis, nonzero only for g in (f - 1, f + 1)
 // along `axis` and in (f - 1/2, f + 3/2) along the others (a clamp moves s only onto the
 // lattice's end sample, which those ranges then hold too), i.e. h in [2f - 2, 2f + 1] along
-// `axis` and [2f - 1, 2f + 2] along the others, clamped to the grid. So the kernel visits those
-// 4 x 4 x 4 half cells — 16 rows, each one contiguous range of the sorted index list, since x
-// runs fastest — in a fixed order, each half cell's particles in the order of
+// `axis` and [2f - 1, 2f + 2] along the others, clamped to the grid (the range edges are where a
+// weight falls to 0, so should p2g_sort_count.comp round g differently from this kernel, a
+// particle could only cross an edge with a weight of the order of that rounding). So the kernel
+// visits those 4 x 4 x 4 half cells — 16 rows, each one contiguous range of the sorted index
+// list, since x runs fastest — in a fixed order, each half cell's particles in the order of
 // p2g_sort_rank.comp, recomputes the particle's stencil and adds w·v_axis and w exactly as
 // p2g.comp's float permutation does (w·(v_a + c_a·(x_node - x_p)) with PF_APIC). Particles of
 // those half cells whose weight is 0 add nothing (x + 0 = x), so the sums are p2g.comp's. Float
