@@ -310,8 +310,9 @@ TEST_F(P2gSchemes, ApicSortedGatherWithAffineVectorsMatchesTheReference) {
 
 TEST_F(P2gSchemes, AHotCellOverflowsFixedPointButNotTheGather) {
     // 6,000 particles within 0.1 cells of the centre of cell (5, 4, 3), moving at ~(1.5, -1, 0.5)
-    // m/s: every u sample at x = 5 and 6 (y = 4, z = 3) gets about 3,000 half-weight particles,
-    // beyond the 2,047 full weights a 31-bit fixed-point sum holds at the initial range.
+    // m/s: the u samples at x = 5 and 6 (y = 4, z = 3) each get a weight of about 0.5 · 0.95² from
+    // every particle, some 2,700 in all, beyond the 2,047 full weights a 31-bit fixed-point sum
+    // holds at the initial range.
     std::mt19937 rng(13);
     std::uniform_real_distribution<float> jitter(-0.01f, 0.01f), dv(-0.2f, 0.2f);
     std::vector<float> pos, vel;
