@@ -526,5 +526,42 @@ TEST_F(P2gSchemes, SortedGatherWithParticlesOnEveryHalfCellBoundaryAndTheWalls) 
                 particles.pos.size(), worst);
 }
 
+// The gather's largest buffer, the half-cell starts, takes 32 bytes per cell where pf_create's
+// largest takes about 24 (the face accumulators): a grid between the two against this GL's
+// GL_MAX_SHADER_STORAGE_BLOCK_SIZE is created, but refused the gather with PF_ERROR_CAPACITY —
+// by pf_set_params, which then changes nothing, and by pf_create.
+TEST_F(P2gSchemes, SortedGatherRefusesAGridBeyondTheStorageBlockLimit) {
+    SimPtr probe = create(test_desc(4, 4, 4));
+    ASSERT_TRUE(probe);
+    GLint64 max_block = 0;
+    probe->impl->api().GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+    probe.reset();
+    // 1024 x 64 x nz cells with 28 bytes per cell at the limit.
+    const uint64_t nz = uint64_t(max_block) / 28u / (1024u * 64u);
+    if (nz < 2 || nz > 1024 || 1024u * 64u * nz > (1u << 26))
+        GTEST_SKIP() << "GL_MAX_SHADER_STORAGE_BLOCK_SIZE " << max_block << " needs a grid pflip does not take";
+    pf_sim_desc d = test_desc(1024, 64, uint32_t(nz), 0.01f);
+    d.max_particles = 16;
+    const uint64_t cells = 1024u * 64u * nz;
+    const uint64_t faces = 1025u * 64u * nz + 1024u * 65u * nz + 1024u * 64u * (nz + 1);
+    ASSERT_LE(faces * 8, uint64_t(max_block));
+    ASSERT_GT(cells * 32, uint64_t(max_block));
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    pf_sim_params p{};
+    ASSERT_EQ(pf_get_params(sim.get(), &p), PF_OK);
+    p.p2g = PF_P2G_SORTED_GATHER;
+    EXPECT_EQ(pf_set_params(sim.get(), &p), PF_ERROR_CAPACITY);
+    EXPECT_NE(std::string(last_log()).find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos) << last_log();
+    pf_sim_params now{};
+    ASSERT_EQ(pf_get_params(sim.get(), &now), PF_OK);
+    EXPECT_EQ(now.p2g, PF_P2G_FIXED_POINT);
+    sim.reset();
+    d.params.p2g = PF_P2G_SORTED_GATHER;
+    pf_sim* raw = nullptr;
+    EXPECT_EQ(pf_create(&d, &raw), PF_ERROR_CAPACITY);
+    EXPECT_EQ(raw, nullptr);
+}
+
 }  // namespace
 }  // namespace pf::test
