@@ -52,7 +52,11 @@
 #define PF_SLOT_SORT_HALF_START 3 /* per half cell, plus one: first index of its particles in the sorted order */
 #define PF_SLOT_SORT_UNSORTED 4   /* particle indices grouped by half cell, in counting-atomic order */
 #define PF_SLOT_SORT_SORTED 7     /* particle indices grouped by half cell, in the fixed order within each */
-/* storage blocks of the exclusive prefix sum (sim/scan_blocks.comp, sim/scan_add.comp) */
+/* the exclusive prefix sum (sim/scan_blocks.comp, sim/scan_add.comp): items per invocation and
+ * per workgroup (one block) */
+#define PF_SCAN_ITEMS_PER_INVOCATION 4
+#define PF_SCAN_BLOCK (PF_WORKGROUP_SIZE * PF_SCAN_ITEMS_PER_INVOCATION)
+/* storage blocks of the exclusive prefix sum */
 #define PF_SLOT_SCAN_IN 0
 #define PF_SLOT_SCAN_OUT 1
 /* storage blocks of the accuracy-metrics kernels (sim/metrics*.comp): the particle/face group's

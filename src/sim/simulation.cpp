@@ -236,14 +236,14 @@ pf_result Simulation::prepare_sorted_gather(bool apic, const char* fn) {
     if (sort_scan_.bytes() != 0) return PF_OK;
     // Particles are sorted by half cell (2 x 2 x 2 per cell). The prefix sum's levels: the half
     // cells' counts and one zero after them (so that start[h + 1] - start[h] is the count of every
-    // h), then their block totals, and so on until one workgroup scans them all. One buffer: the
-    // starts (level 0's prefixes) at word 0, then per level above its block totals and their
-    // prefixes, then the grand total.
+    // h), then their totals per block of PF_SCAN_BLOCK, and so on until one workgroup scans them
+    // all. One buffer: the starts (level 0's prefixes) at word 0, then per level above its block
+    // totals and their prefixes, then the grand total.
     const uint64_t halves = uint64_t(cells_) * 8u + 1u;
     std::vector<ScanLevel> levels{ScanLevel{uint32_t(halves), 0, 0, 0}};
     uint64_t words = halves;
-    while (levels.back().count > PF_WORKGROUP_SIZE) {
-        const uint32_t blocks = (levels.back().count + PF_WORKGROUP_SIZE - 1) / PF_WORKGROUP_SIZE;
+    while (levels.back().count > PF_SCAN_BLOCK) {
+        const uint32_t blocks = (levels.back().count + PF_SCAN_BLOCK - 1) / PF_SCAN_BLOCK;
         levels.back().sums = uint32_t(words);
         levels.push_back(ScanLevel{blocks, uint32_t(words), uint32_t(words + blocks), 0});
         words += 2u * blocks;
@@ -293,7 +293,8 @@ void Simulation::run_sorted_gather(bool apic) {
     // 2. Half-cell starts: exclusive prefix sum of the counts, up the levels, then back down.
     for (size_t k = 0; k < scan_levels_.size(); ++k) {
         const ScanLevel& l = scan_levels_[k];
-        r.run({ProgramId::scan_blocks, stat_p2g_sort_, l.count,
+        const uint64_t invocations = (uint64_t(l.count) + PF_SCAN_ITEMS_PER_INVOCATION - 1) / PF_SCAN_ITEMS_PER_INVOCATION;
+        r.run({ProgramId::scan_blocks, stat_p2g_sort_, invocations,
                {{PF_SLOT_SCAN_IN, k == 0 ? &sort_count_ : &sort_scan_}, {PF_SLOT_SCAN_OUT, &sort_scan_}}, {},
                {Uniform::uint1(PF_LOC_SCAN_COUNT, l.count), Uniform::uint1(PF_LOC_SCAN_IN_OFFSET, l.in),
                 Uniform::uint1(PF_LOC_SCAN_OUT_OFFSET, l.out), Uniform::uint1(PF_LOC_SCAN_SUMS_OFFSET, l.sums)}});

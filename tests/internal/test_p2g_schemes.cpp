@@ -460,7 +460,7 @@ TEST_F(P2gSchemes, SortedGatherPassesAreListedUnderP2gOnceSelected) {
     ASSERT_NE(atomics, nullptr);
     EXPECT_EQ(sort->group, PF_PASS_P2G);
     EXPECT_EQ(gather->group, PF_PASS_P2G);
-    // Per substep: count, the prefix sum (7,681 half-cell counts: 31 blocks, so two levels up and one down),
+    // Per substep: count, the prefix sum (7,681 half-cell counts: 8 blocks of 1,024, so two levels up and one down),
     // scatter and order, 6 dispatches; then one gather.
     EXPECT_EQ(sort->dispatches, 6u * stats.substeps);
     EXPECT_EQ(gather->dispatches, stats.substeps);
@@ -468,16 +468,17 @@ TEST_F(P2gSchemes, SortedGatherPassesAreListedUnderP2gOnceSelected) {
     EXPECT_EQ(sim->impl->runner().binding_errors(), 0u);
 }
 
-// A grid of 9,600 cells: the prefix sum over the 76,801 half-cell counts takes three levels (301
-// blocks of 256, then 2 blocks, then one), and every particle must still land in its segment.
+// A grid of 147,456 cells: the prefix sum over the 1,179,649 half-cell counts takes three levels
+// (1,153 blocks of 1,024, then 2 blocks, then one), and every particle must still land in its
+// segment.
 TEST_F(P2gSchemes, SortedGatherOnAGridWhosePrefixSumTakesThreeLevels) {
-    const ref::Grid g{24, 20, 20, 0.05, glm::dvec3(0.0)};
+    const ref::Grid g{64, 48, 48, 0.01875, glm::dvec3(0.0)};
     std::mt19937 rng(17);
     std::uniform_real_distribution<float> u01(0.0f, 1.0f), uv(-2.0f, 2.0f);
     std::vector<float> pos, vel;
     ref::Particles particles;
     for (int i = 0; i < 20000; ++i) {
-        const float p[3] = {1.2f * u01(rng), 1.0f * u01(rng), 1.0f * u01(rng)};
+        const float p[3] = {1.2f * u01(rng), 0.9f * u01(rng), 0.9f * u01(rng)};
         const float v[3] = {uv(rng), uv(rng), uv(rng)};
         for (int a = 0; a < 3; ++a) pos.push_back(p[a]), vel.push_back(v[a]);
         particles.pos.emplace_back(p[0], p[1], p[2]);
@@ -487,11 +488,11 @@ TEST_F(P2gSchemes, SortedGatherOnAGridWhosePrefixSumTakesThreeLevels) {
     const SplatResult gather = splat_of(PF_P2G_SORTED_GATHER, PF_TRANSFER_PIC_FLIP, pos, vel, {}, g);
     ASSERT_EQ(gather.accum.size(), size_t(2 * g.faces()));
     EXPECT_EQ(gather.count, exact.count);
-    // g <= 24 here: the grid coordinate errs by up to 2x the 12-cell case's 1e-6, and so does
-    // each weight factor (a term by <= 2 x 3.2e-6 per m/s).
-    const double worst = worst_float_ratio(gather.accum, exact, contributions(g, particles), 2.0, 2 * 3.2e-6);
+    // g <= 64 here: the grid coordinate errs by up to 64/12 times the 12-cell case's 1e-6, and so
+    // does each weight factor (a term by <= 64/12 x 3.2e-6 per m/s).
+    const double worst = worst_float_ratio(gather.accum, exact, contributions(g, particles), 2.0, 64.0 / 12.0 * 3.2e-6);
     EXPECT_LE(worst, 1.0);
-    std::printf("sorted-gather P2G on 24 x 20 x 20 cells (three prefix-sum levels): %.3f of its rounding bound\n", worst);
+    std::printf("sorted-gather P2G on 64 x 48 x 48 cells (three prefix-sum levels): %.3f of its rounding bound\n", worst);
 }
 
 // Particles exactly on every half-cell boundary of a grid of 1/8 m cells (positions k/16 m, exact
