@@ -7,9 +7,10 @@
 // `axis` and [2f - 1, 2f + 2] along the others, clamped to the grid (the range edges are where a
 // weight falls to 0, so should p2g_sort_count.comp round g differently from this kernel, a
 // particle could only cross an edge with a weight of the order of that rounding). So the kernel
-// visits those 4 x 4 x 4 half cells — 16 rows, each one contiguous range of the sorted index
-// list, since x runs fastest — in a fixed order, each half cell's particles in the order of
-// p2g_sort_rank.comp, recomputes the particle's stencil and adds w·v_axis and w exactly as
+// visits those 4 x 4 x 4 half cells — 16 rows, each one contiguous range of the sorted order,
+// since x runs fastest — in a fixed order, each half cell's particles in the order of
+// p2g_sort_rank.comp (which wrote their grid coordinates and velocities in that order),
+// recomputes the particle's stencil and adds w·v_axis and w exactly as
 // p2g.comp's float permutation does (w·(v_a + c_a·(x_node - x_p)) with PF_APIC). Particles of
 // those half cells whose weight is 0 add nothing (x + 0 = x), so the sums are p2g.comp's. Float
 // sums in a fixed order: bit-identical run to run and for any order of the particle array; no
@@ -17,10 +18,13 @@
 // float layout that grid_forces.comp reads with PF_P2G_FLOAT.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
-layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
-layout(std430, binding = PF_SLOT_PARTICLE_VEL) readonly buffer Vel { vec4 vel[]; };
 layout(std430, binding = PF_SLOT_SORT_HALF_START) readonly buffer Start { uint half_start[]; };
-layout(std430, binding = PF_SLOT_SORT_SORTED) readonly buffer Sorted { uint sorted_index[]; };
+layout(std430, binding = PF_SLOT_SORT_GRID) readonly buffer SortedGrid { vec4 sorted_grid[]; };
+struct SortedParticle {
+    vec3 vel;
+    uint index;  // into the particle arrays (APIC's affine vectors)
+};
+layout(std430, binding = PF_SLOT_SORT_PARTICLE) readonly buffer SortedParticles { SortedParticle sorted_particle[]; };
 layout(std430, binding = PF_SLOT_FACE_ACCUM) writeonly buffer Accum { float accum[]; };  // 2 words per face
 #if PF_APIC
 layout(std430, binding = PF_SLOT_PARTICLE_AFFINE) readonly buffer Affine { vec4 affine[]; };
@@ -43,20 +47,19 @@ void main() {
             uint first = half_start[half_cell_index(ivec3(lo.x, y, z))];
             uint end = half_start[half_cell_index(ivec3(hi.x, y, z)) + 1];
             for (uint k = first; k < end; ++k) {
-                uint p = sorted_index[k];
-                vec3 g = grid_coord(pos[p].xyz);
+                vec3 g = sorted_grid[k].xyz;
                 Stencil st = face_stencil(axis, g);
                 ivec3 d = f - st.base;
                 if (any(lessThan(d, ivec3(0))) || any(greaterThan(d, ivec3(1)))) continue;  // weight 0 there
                 float w = stencil_weight(st.frac, d);
 #if PF_APIC
-                vec3 ca = affine[3u * p + uint(axis)].xyz * sim.dx;  // per grid unit
+                vec3 ca = affine[3u * sorted_particle[k].index + uint(axis)].xyz * sim.dx;  // per grid unit
                 vec3 node_offset = vec3(0.5);
                 node_offset[axis] = 0.0;
                 vec3 to_base = vec3(st.base) + node_offset - g;      // node b minus particle, grid units
-                float va = vel[p][axis] + dot(ca, to_base + vec3(d));
+                float va = sorted_particle[k].vel[axis] + dot(ca, to_base + vec3(d));
 #else
-                float va = vel[p][axis];
+                float va = sorted_particle[k].vel[axis];
 #endif
                 momentum += w * va;
                 weight += w;

@@ -251,26 +251,27 @@ pf_result Simulation::prepare_sorted_gather(bool apic, const char* fn) {
     levels.back().sums = uint32_t(words);
     words += 1;
     const uint64_t np = desc_.max_particles;
-    const uint64_t largest = std::max<uint64_t>(np * 8u, words * 4u);  // the per-particle uvec2s or the starts
+    const uint64_t largest = std::max<uint64_t>(np * 16u, words * 4u);  // the sorted copies or the starts
     GLint64 max_block = 0;
     gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
     if (largest > uint64_t(max_block)) {
         return log_.error(PF_ERROR_CAPACITY, std::string(fn) + ": PF_P2G_SORTED_GATHER needs a buffer of " +
-                                                 std::to_string(largest) + " bytes (8 per particle, 32 per cell), more than "
+                                                 std::to_string(largest) + " bytes (16 per particle, 32 per cell), more than "
                                                  "this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
                                                  "); lower max_particles or the grid size");
     }
     gl::Buffer cell_slot(gl_, size_t(np) * 8, GL_DYNAMIC_COPY), unsorted(gl_, size_t(np) * 4, GL_DYNAMIC_COPY),
-        sorted(gl_, size_t(np) * 4, GL_DYNAMIC_COPY), scan(gl_, size_t(words) * 4, GL_DYNAMIC_COPY),
-        counts(gl_, size_t(halves) * 4, GL_DYNAMIC_COPY);
+        grid(gl_, size_t(np) * 16, GL_DYNAMIC_COPY), particles(gl_, size_t(np) * 16, GL_DYNAMIC_COPY),
+        scan(gl_, size_t(words) * 4, GL_DYNAMIC_COPY), counts(gl_, size_t(halves) * 4, GL_DYNAMIC_COPY);
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                          std::string(fn) + ": allocating " + std::to_string((np * 16 + words * 4 + halves * 4) >> 20) +
+                          std::string(fn) + ": allocating " + std::to_string((np * 44 + words * 4 + halves * 4) >> 20) +
                               " MiB for the sorted-gather P2G failed (GL error " + hex(err) + ")");
     }
     sort_cell_slot_ = std::move(cell_slot);
     sort_unsorted_ = std::move(unsorted);
-    sort_sorted_ = std::move(sorted);
+    sort_grid_ = std::move(grid);
+    sort_particles_ = std::move(particles);
     sort_scan_ = std::move(scan);
     sort_count_ = std::move(counts);
     scan_levels_ = std::move(levels);
@@ -285,7 +286,8 @@ void Simulation::run_sorted_gather(bool apic) {
     const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
         count{PF_SLOT_CELL_COUNT, &cell_count_}, cell_slot{PF_SLOT_SORT_CELL_SLOT, &sort_cell_slot_},
         start{PF_SLOT_SORT_HALF_START, &sort_scan_}, unsorted{PF_SLOT_SORT_UNSORTED, &sort_unsorted_},
-        sorted{PF_SLOT_SORT_SORTED, &sort_sorted_}, affine{PF_SLOT_PARTICLE_AFFINE, &affine_};
+        grid{PF_SLOT_SORT_GRID, &sort_grid_}, particles{PF_SLOT_SORT_PARTICLE, &sort_particles_},
+        affine{PF_SLOT_PARTICLE_AFFINE, &affine_};
     // 1. Count per cell and per half cell (both cleared), keeping each particle's half cell and slot.
     fill(sort_count_, scan_levels_[0].count, 0u, stat_.clear);
     r.run({ProgramId::p2g_sort_count, stat_p2g_sort_, np,
@@ -305,15 +307,16 @@ void Simulation::run_sorted_gather(bool apic) {
                {Uniform::uint1(PF_LOC_SCAN_COUNT, l.count), Uniform::uint1(PF_LOC_SCAN_OUT_OFFSET, l.out),
                 Uniform::uint1(PF_LOC_SCAN_SUMS_OFFSET, scan_levels_[k + 1].out)}});
     }
-    // 3. Indices into their half cells' segments; 4. the fixed order within each half cell.
+    // 3. Indices into their half cells' segments; 4. the fixed order within each half cell, with
+    // the particles' grid coordinates, velocities and indices written in that order.
     r.run({ProgramId::p2g_sort_scatter, stat_p2g_sort_, np, {cell_slot, start, unsorted}});
     r.run({apic ? ProgramId::p2g_sort_rank_apic : ProgramId::p2g_sort_rank, stat_p2g_sort_, np,
-           apic ? Bindings{pos, vel, cell_slot, start, unsorted, sorted, affine}
-                : Bindings{pos, vel, cell_slot, start, unsorted, sorted}});
+           apic ? Bindings{pos, vel, cell_slot, start, unsorted, grid, particles, affine}
+                : Bindings{pos, vel, cell_slot, start, unsorted, grid, particles}});
     // 5. One invocation per face sample sums its particles (both words of every sample).
     const Bind accum{PF_SLOT_FACE_ACCUM, &face_accum_};
     r.run({apic ? ProgramId::p2g_gather_apic : ProgramId::p2g_gather, stat_p2g_gather_, uint64_t(faces_),
-           apic ? Bindings{pos, vel, start, sorted, accum, affine} : Bindings{pos, vel, start, sorted, accum}});
+           apic ? Bindings{start, grid, particles, accum, affine} : Bindings{start, grid, particles, accum}});
 }
 
 void Simulation::zero_affine(uint32_t first, uint32_t count) {

@@ -151,13 +151,14 @@ private:
     gl::Buffer pos_, vel_;
     gl::Buffer affine_;  // APIC: 3 vec4 per particle slot (c_x, c_y, c_z); allocated on first use
     // Sorted-gather P2G, allocated on first use: per particle slot its half cell (2 x 2 x 2 per
-    // cell) and its slot in it (uvec2); particle indices grouped by half cell, in counting-atomic
-    // order and in the fixed order; per half cell the particle count (and one word more), and the
-    // levels of the prefix sum over those counts (the half-cell starts first).
+    // cell) and its slot in it (uvec2); particle indices grouped by half cell in counting-atomic
+    // order; in the fixed order, the particles' grid coordinates (vec4) and velocities with
+    // indices (vec3 + uint); per half cell the particle count (and one word more), and the levels
+    // of the prefix sum over those counts (the half-cell starts first).
     struct ScanLevel {
         uint32_t count = 0, in = 0, out = 0, sums = 0;  // items; word offsets of input, prefixes, block totals
     };
-    gl::Buffer sort_cell_slot_, sort_unsorted_, sort_sorted_, sort_count_, sort_scan_;
+    gl::Buffer sort_cell_slot_, sort_unsorted_, sort_grid_, sort_particles_, sort_count_, sort_scan_;
     std::vector<ScanLevel> scan_levels_;
     StatId stat_p2g_sort_ = 0, stat_p2g_gather_ = 0;
     uint32_t particle_count_ = 0;
