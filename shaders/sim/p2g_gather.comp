@@ -43,7 +43,7 @@ void main() {
     float momentum = 0.0, weight = 0.0;
     for (int z = lo.z; z <= hi.z; ++z) {
         for (int y = lo.y; y <= hi.y; ++y) {
-            // Half cells lo.x..hi.x of this row are consecutive: one range of the sorted list.
+            // Half cells lo.x..hi.x of this row are consecutive: one range of the sorted arrays.
             uint first = half_start[half_cell_index(ivec3(lo.x, y, z))];
             uint end = half_start[half_cell_index(ivec3(hi.x, y, z)) + 1];
             for (uint k = first; k < end; ++k) {
