@@ -24,7 +24,7 @@ if [ "${QUICK:-0}" = 1 ]; then  # the main points only
   exit 0
 fi
 if [ "${P2G:-0}" = 1 ]; then  # the particle-to-grid schemes on the benchmark scenes
-  for scheme in fixed float; do
+  for scheme in fixed float gather; do
     run original_24_p2g_$scheme original_24 --p2g $scheme
     run dam_break_1m_p2g_$scheme dam_break_1m --p2g $scheme
     run dam_break_10m_p2g_$scheme dam_break_10m --p2g $scheme --steps 30

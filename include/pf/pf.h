@@ -79,7 +79,12 @@ typedef enum pf_p2g {
                                   compare-and-swap loop elsewhere): no rounding grid or overflow,
                                   but the sums depend on the order of the atomics (not
                                   bit-identical run to run) */
-    PF_P2G_COUNT = 2,
+    PF_P2G_SORTED_GATHER = 2, /**< particles counting-sorted by half cell every substep, then one
+                                  gather per face sample summing its particles in a fixed order:
+                                  no atomics on hot samples, no rounding grid or overflow, and
+                                  bit-identical run to run and for any particle order (several
+                                  passes more: docs/accuracy.md) */
+    PF_P2G_COUNT = 3,
     PF_P2G_FORCE32 = 0x7fffffff
 } pf_p2g;
 
@@ -213,7 +218,8 @@ typedef struct pf_sim pf_sim;
 /** Passes timed and counted by pf_get_stats. */
 typedef enum pf_pass {
     PF_PASS_CLEAR = 0,            /**< zero the grid accumulators */
-    PF_PASS_P2G = 1,              /**< particle-to-grid splat (fixed-point atomics) */
+    PF_PASS_P2G = 1,              /**< particle-to-grid: the atomic splat ("p2g"), or the sorted gather's
+                                       sort and gather ("p2g_sort", "p2g_gather") */
     PF_PASS_GRID_FORCES = 2,      /**< normalise face velocities, apply gravity (and force fields) */
     PF_PASS_CLASSIFY = 3,         /**< mark cells fluid / air (and solid: obstacles, PF_FEATURE_OBSTACLES) */
     PF_PASS_PRESSURE_SETUP = 4,   /**< divergence right-hand side */

@@ -30,6 +30,7 @@ class LogLevel(enum.IntEnum):
 class P2G(enum.IntEnum):
     FIXED_POINT = 0
     FLOAT_ATOMIC = 1
+    SORTED_GATHER = 2
 
 
 class PressureSolver(enum.IntEnum):

@@ -96,6 +96,9 @@ std::vector<Config> sweep_configs() {
     add("transfer", "pic", [](pf_sim_params& p) { p.flip_ratio = 0.0f; });
     add("transfer", "flip_0.95", [](pf_sim_params&) {});
     add("transfer", "apic", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_APIC; });
+    add("p2g", "p2g_fixed", [](pf_sim_params&) {});
+    add("p2g", "p2g_float", [](pf_sim_params& p) { p.p2g = PF_P2G_FLOAT_ATOMIC; });
+    add("p2g", "p2g_gather", [](pf_sim_params& p) { p.p2g = PF_P2G_SORTED_GATHER; });
     add("advection", "euler", [](pf_sim_params&) {});
     add("advection", "rk2", [](pf_sim_params& p) { p.advection = PF_ADVECTION_RK2; });
     add("advection", "rk3", [](pf_sim_params& p) { p.advection = PF_ADVECTION_RK3; });
@@ -463,7 +466,8 @@ int run(int argc, char** argv) {
                              {"transfer", int(config.params.transfer)},
                              {"advection", int(config.params.advection)},
                              {"cfl", config.params.cfl},
-                             {"separation", config.params.separation}};
+                             {"separation", config.params.separation},
+                             {"p2g", pfs::p2g_name(config.params.p2g)}};
             rows.push_back(row);
         }
     }

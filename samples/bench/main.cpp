@@ -66,7 +66,8 @@ void print_usage(std::FILE* f) {
                  "  --solver NAME            pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
                  "  --tolerance T            pressure_tolerance (relative residual) for every scene\n"
                  "  --separation 0|1         override the scenes' separation\n"
-                 "  --p2g fixed|float        particle-to-grid scheme: fixed-point or float atomics\n"
+                 "  --p2g fixed|float|gather particle-to-grid scheme: fixed-point atomics, float atomics or\n"
+                 "                           the sorted gather (PF_P2G_SORTED_GATHER)\n"
                  "  --max-substeps N         override the scenes' max_substeps (1 = one substep per step)\n"
                  "  --frame-dt S             override the scenes' frame_dt (seconds per pf_step)\n"
                  "  --features LIST          effects to run, overriding the scenes' (comma-separated\n"
@@ -104,9 +105,7 @@ Options parse_args(int argc, char** argv) {
         } else if (a == "--tolerance") {
             o.tolerance = pfs::parse_float(args.value(), "--tolerance", 1e-12f, 0.999f);
         } else if (a == "--p2g") {
-            const std::string v = args.value();
-            if (v != "fixed" && v != "float") throw Error("--p2g: expected fixed or float, got '" + v + "'");
-            o.p2g = v == "float" ? PF_P2G_FLOAT_ATOMIC : PF_P2G_FIXED_POINT;
+            o.p2g = pfs::parse_p2g(args.value(), "--p2g");
         } else if (a == "--separation") {
             o.separation = int(pfs::parse_u32(args.value(), "--separation", 0, 1));
         } else if (a == "--max-substeps") {
@@ -359,7 +358,7 @@ ojson result_json(const Result& r) {
     p["pressure_solver"] = pfs::solver_name(r.params.pressure_solver);
     p["pressure_tolerance"] = r.params.pressure_tolerance;
     p["sor_omega"] = r.params.sor_omega;
-    p["p2g"] = r.params.p2g == PF_P2G_FLOAT_ATOMIC ? "float" : "fixed";
+    p["p2g"] = pfs::p2g_name(r.params.p2g);
     j["params"] = p;
     j["solver_iterations"] = summary_json(r.solver_iterations);
     j["solver_residual"] = summary_json(r.solver_residual);

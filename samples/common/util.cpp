@@ -184,6 +184,7 @@ const char* solver_name(pf_pressure_solver solver) {
 namespace {
 const char* const kTransferNames[PF_TRANSFER_COUNT] = {"pic_flip", "apic"};
 const char* const kAdvectionNames[PF_ADVECTION_COUNT] = {"euler", "rk2", "rk3"};
+const char* const kP2gNames[PF_P2G_COUNT] = {"fixed", "float", "gather"};
 
 /// Index of `name` in names[0..n); throws Error listing the known names otherwise.
 template <size_t N>
@@ -212,6 +213,12 @@ const char* advection_name(pf_advection advection) {
     return advection >= 0 && advection < PF_ADVECTION_COUNT ? kAdvectionNames[advection] : "unknown";
 }
 
+pf_p2g parse_p2g(const std::string& name, const char* what) {
+    return pf_p2g(parse_name(kP2gNames, name, what, "particle-to-grid scheme"));
+}
+
+const char* p2g_name(pf_p2g p2g) { return p2g >= 0 && p2g < PF_P2G_COUNT ? kP2gNames[p2g] : "unknown"; }
+
 bool ParamOverrides::parse(ArgCursor& args) {
     const std::string& a = args.option();
     if (a == "--preset") {
@@ -230,6 +237,9 @@ bool ParamOverrides::parse(ArgCursor& args) {
     } else if (a == "--advection") {
         advection = parse_advection(args.value(), "--advection");
         has_advection = true;
+    } else if (a == "--p2g") {
+        p2g = parse_p2g(args.value(), "--p2g");
+        has_p2g = true;
     } else {
         return false;
     }
@@ -242,6 +252,7 @@ void ParamOverrides::apply(pf_sim_params& p) const {
     if (has_tolerance) p.pressure_tolerance = tolerance;
     if (has_transfer) p.transfer = transfer;
     if (has_advection) p.advection = advection;
+    if (has_p2g) p.p2g = p2g;
 }
 
 const char* ParamOverrides::usage() {
@@ -250,7 +261,9 @@ const char* ParamOverrides::usage() {
            "  --solver NAME       pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
            "  --tolerance T       relative residual at which a pressure solve stops, (0, 1) (default: the scene's)\n"
            "  --transfer pic_flip|apic  grid-particle transfer (default: the scene's)\n"
-           "  --advection euler|rk2|rk3  particle integrator (default: the scene's)\n";
+           "  --advection euler|rk2|rk3  particle integrator (default: the scene's)\n"
+           "  --p2g fixed|float|gather  particle-to-grid scheme: fixed-point atomics, float atomics or the\n"
+           "                      sorted gather (default: the scene's)\n";
 }
 
 pf_result get_pass_list(const pf_sim* sim, std::vector<pf_pass_stats>& out) {

@@ -12,6 +12,9 @@ layout(std140, binding = PF_UBO_SIM) uniform SimUniforms {
 
 int cell_index(ivec3 c) { return c.x + sim.grid.x * (c.y + sim.grid.y * c.z); }
 
+// Half cells (2 x 2 x 2 per cell, h = floor(2 g)), x fastest: the sorted-gather P2G's buckets.
+int half_cell_index(ivec3 h) { return h.x + 2 * sim.grid.x * (h.y + 2 * sim.grid.y * h.z); }
+
 bool cell_inside(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, sim.grid.xyz)); }
 
 // Sample counts of the lattice of face component `axis`.

@@ -207,8 +207,15 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
     ParticlePrograms p{};
     const bool apic = params.transfer == PF_TRANSFER_APIC;
     const bool floats = params.p2g == PF_P2G_FLOAT_ATOMIC;
-    p.p2g = apic ? (floats ? ProgramId::p2g_apic_float : ProgramId::p2g_apic) : (floats ? ProgramId::p2g_float : ProgramId::p2g);
-    p.grid_forces = floats ? ProgramId::grid_forces_float : ProgramId::grid_forces;
+    if (params.p2g == PF_P2G_SORTED_GATHER) {
+        // Its first pass (the count per cell); the rest are prepared by prepare_sorted_gather.
+        // The gather writes floats, as the float atomics do.
+        p.p2g = ProgramId::p2g_sort_count;
+        p.grid_forces = ProgramId::grid_forces_float;
+    } else {
+        p.p2g = apic ? (floats ? ProgramId::p2g_apic_float : ProgramId::p2g_apic) : (floats ? ProgramId::p2g_float : ProgramId::p2g);
+        p.grid_forces = floats ? ProgramId::grid_forces_float : ProgramId::grid_forces;
+    }
     // Pure PIC skips the FLIP delta (and its u_old reads) in a permutation of its own.
     p.g2p = apic ? ProgramId::g2p_apic : params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
     p.advect = params.advection == PF_ADVECTION_RK2   ? ProgramId::advect_rk2
@@ -222,6 +229,9 @@ pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const
     for (ProgramId id : {programs.p2g, programs.grid_forces, programs.g2p, programs.advect}) {
         if (std::string error = runner_->prepare(id); !error.empty())
             return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    }
+    if (params.p2g == PF_P2G_SORTED_GATHER) {
+        if (pf_result r = prepare_sorted_gather(params.transfer == PF_TRANSFER_APIC, fn); r != PF_OK) return r;
     }
     if (params.transfer != PF_TRANSFER_APIC || affine_.bytes() != 0) return PF_OK;
     const uint64_t bytes = uint64_t(desc_.max_particles) * 48u;
@@ -241,6 +251,99 @@ pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const
     }
     affine_ = std::move(made);
     return PF_OK;
+}
+
+pf_result Simulation::prepare_sorted_gather(bool apic, const char* fn) {
+    for (ProgramId id : {ProgramId::scan_blocks, ProgramId::scan_add, ProgramId::p2g_sort_scatter,
+                         apic ? ProgramId::p2g_sort_rank_apic : ProgramId::p2g_sort_rank,
+                         apic ? ProgramId::p2g_gather_apic : ProgramId::p2g_gather}) {
+        if (std::string error = runner_->prepare(id); !error.empty())
+            return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    }
+    if (sort_scan_.bytes() != 0) return PF_OK;
+    // Particles are sorted by half cell (2 x 2 x 2 per cell). The prefix sum's levels: the half
+    // cells' counts and one zero after them (so that start[h + 1] - start[h] is the count of every
+    // h), then their totals per block of PF_SCAN_BLOCK, and so on until one workgroup scans them
+    // all. One buffer: the starts (level 0's prefixes) at word 0, then per level above its block
+    // totals and their prefixes, then the grand total.
+    const uint64_t halves = uint64_t(cells_) * 8u + 1u;
+    std::vector<ScanLevel> levels{ScanLevel{uint32_t(halves), 0, 0, 0}};
+    uint64_t words = halves;
+    while (levels.back().count > PF_SCAN_BLOCK) {
+        const uint32_t blocks = (levels.back().count + PF_SCAN_BLOCK - 1) / PF_SCAN_BLOCK;
+        levels.back().sums = uint32_t(words);
+        levels.push_back(ScanLevel{blocks, uint32_t(words), uint32_t(words + blocks), 0});
+        words += 2u * blocks;
+    }
+    levels.back().sums = uint32_t(words);
+    words += 1;
+    const uint64_t np = desc_.max_particles;
+    const uint64_t largest = std::max<uint64_t>(np * 16u, words * 4u);  // the sorted copies or the starts
+    GLint64 max_block = 0;
+    gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+    if (largest > uint64_t(max_block)) {
+        return log_.error(PF_ERROR_CAPACITY, std::string(fn) + ": PF_P2G_SORTED_GATHER needs a buffer of " +
+                                                 std::to_string(largest) + " bytes (16 per particle, 32 per cell), more than "
+                                                 "this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
+                                                 "); lower max_particles or the grid size");
+    }
+    gl::Buffer cell_slot(gl_, size_t(np) * 8, GL_DYNAMIC_COPY), unsorted(gl_, size_t(np) * 4, GL_DYNAMIC_COPY),
+        grid(gl_, size_t(np) * 16, GL_DYNAMIC_COPY), particles(gl_, size_t(np) * 16, GL_DYNAMIC_COPY),
+        scan(gl_, size_t(words) * 4, GL_DYNAMIC_COPY), counts(gl_, size_t(halves) * 4, GL_DYNAMIC_COPY);
+    if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
+        return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
+                          std::string(fn) + ": allocating " + std::to_string((np * 44 + words * 4 + halves * 4) >> 20) +
+                              " MiB for the sorted-gather P2G failed (GL error " + hex(err) + ")");
+    }
+    sort_cell_slot_ = std::move(cell_slot);
+    sort_unsorted_ = std::move(unsorted);
+    sort_grid_ = std::move(grid);
+    sort_particles_ = std::move(particles);
+    sort_scan_ = std::move(scan);
+    sort_count_ = std::move(counts);
+    scan_levels_ = std::move(levels);
+    stat_p2g_sort_ = runner_->add_stat("p2g_sort", PF_PASS_P2G);
+    stat_p2g_gather_ = runner_->add_stat("p2g_gather", PF_PASS_P2G);
+    return PF_OK;
+}
+
+void Simulation::run_sorted_gather(bool apic) {
+    PassRunner& r = *runner_;
+    const uint32_t np = particle_count_;
+    const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
+        count{PF_SLOT_CELL_COUNT, &cell_count_}, cell_slot{PF_SLOT_SORT_CELL_SLOT, &sort_cell_slot_},
+        start{PF_SLOT_SORT_HALF_START, &sort_scan_}, unsorted{PF_SLOT_SORT_UNSORTED, &sort_unsorted_},
+        grid{PF_SLOT_SORT_GRID, &sort_grid_}, particles{PF_SLOT_SORT_PARTICLE, &sort_particles_},
+        affine{PF_SLOT_PARTICLE_AFFINE, &affine_};
+    // 1. Count per cell and per half cell (both cleared), keeping each particle's half cell and slot.
+    fill(sort_count_, scan_levels_[0].count, 0u, stat_.clear);
+    r.run({ProgramId::p2g_sort_count, stat_p2g_sort_, np,
+           {pos, count, {PF_SLOT_SORT_HALF_COUNT, &sort_count_}, cell_slot}});
+    // 2. Half-cell starts: exclusive prefix sum of the counts, up the levels, then back down.
+    for (size_t k = 0; k < scan_levels_.size(); ++k) {
+        const ScanLevel& l = scan_levels_[k];
+        const uint64_t invocations = (uint64_t(l.count) + PF_SCAN_ITEMS_PER_INVOCATION - 1) / PF_SCAN_ITEMS_PER_INVOCATION;
+        r.run({ProgramId::scan_blocks, stat_p2g_sort_, invocations,
+               {{PF_SLOT_SCAN_IN, k == 0 ? &sort_count_ : &sort_scan_}, {PF_SLOT_SCAN_OUT, &sort_scan_}}, {},
+               {Uniform::uint1(PF_LOC_SCAN_COUNT, l.count), Uniform::uint1(PF_LOC_SCAN_IN_OFFSET, l.in),
+                Uniform::uint1(PF_LOC_SCAN_OUT_OFFSET, l.out), Uniform::uint1(PF_LOC_SCAN_SUMS_OFFSET, l.sums)}});
+    }
+    for (size_t k = scan_levels_.size() - 1; k-- > 0;) {
+        const ScanLevel& l = scan_levels_[k];
+        r.run({ProgramId::scan_add, stat_p2g_sort_, l.count, {{PF_SLOT_SCAN_OUT, &sort_scan_}}, {},
+               {Uniform::uint1(PF_LOC_SCAN_COUNT, l.count), Uniform::uint1(PF_LOC_SCAN_OUT_OFFSET, l.out),
+                Uniform::uint1(PF_LOC_SCAN_SUMS_OFFSET, scan_levels_[k + 1].out)}});
+    }
+    // 3. Indices into their half cells' segments; 4. the fixed order within each half cell, with
+    // the particles' grid coordinates, velocities and indices written in that order.
+    r.run({ProgramId::p2g_sort_scatter, stat_p2g_sort_, np, {cell_slot, start, unsorted}});
+    r.run({apic ? ProgramId::p2g_sort_rank_apic : ProgramId::p2g_sort_rank, stat_p2g_sort_, np,
+           apic ? Bindings{pos, vel, cell_slot, start, unsorted, grid, particles, affine}
+                : Bindings{pos, vel, cell_slot, start, unsorted, grid, particles}});
+    // 5. One invocation per face sample sums its particles (both words of every sample).
+    const Bind accum{PF_SLOT_FACE_ACCUM, &face_accum_};
+    r.run({apic ? ProgramId::p2g_gather_apic : ProgramId::p2g_gather, stat_p2g_gather_, uint64_t(faces_),
+           apic ? Bindings{start, grid, particles, accum, affine} : Bindings{start, grid, particles, accum}});
 }
 
 void Simulation::zero_affine(uint32_t first, uint32_t count) {
@@ -288,14 +391,20 @@ void Simulation::run_substep() {
     const uint32_t np = particle_count_;
     const uint64_t cells = uint64_t(cells_), faces = uint64_t(faces_);
 
-    fill(face_accum_, uint32_t(faces_) * 2, 0u, stat_.clear);
-    fill(cell_count_, uint32_t(cells_), 0u, stat_.clear);
-    const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
-        accum{PF_SLOT_FACE_ACCUM, &face_accum_}, count{PF_SLOT_CELL_COUNT, &cell_count_},
-        status{PF_SLOT_STATUS, &status_}, affine{PF_SLOT_PARTICLE_AFFINE, &affine_};
     const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
-    r.run({particle_programs(desc_.params).p2g, stat_.p2g, np,
-           apic ? Bindings{pos, vel, accum, count, status, affine} : Bindings{pos, vel, accum, count, status}});
+    if (desc_.params.p2g == PF_P2G_SORTED_GATHER) {
+        // The gather writes every accumulator: only the counts are cleared.
+        fill(cell_count_, uint32_t(cells_), 0u, stat_.clear);
+        run_sorted_gather(apic);
+    } else {
+        fill(face_accum_, uint32_t(faces_) * 2, 0u, stat_.clear);
+        fill(cell_count_, uint32_t(cells_), 0u, stat_.clear);
+        const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
+            accum{PF_SLOT_FACE_ACCUM, &face_accum_}, count{PF_SLOT_CELL_COUNT, &cell_count_},
+            status{PF_SLOT_STATUS, &status_}, affine{PF_SLOT_PARTICLE_AFFINE, &affine_};
+        r.run({particle_programs(desc_.params).p2g, stat_.p2g, np,
+               apic ? Bindings{pos, vel, accum, count, status, affine} : Bindings{pos, vel, accum, count, status}});
+    }
     r.run({particle_programs(desc_.params).grid_forces, stat_.grid_forces, faces,
            {{PF_SLOT_FACE_ACCUM, &face_accum_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}}});
     run_effects(EffectStage::after_grid_forces);

@@ -126,6 +126,11 @@ private:
     // that a failure leaves the running simulation untouched.
     pf_result prepare_particle_passes(const pf_sim_params& params, const char* fn);
     void zero_affine(uint32_t first, uint32_t count);
+    // PF_P2G_SORTED_GATHER: builds its programs (APIC's or not), adds its statistics entries and allocates its
+    // buffers (first use only; nothing while another scheme runs). Errors are logged and returned.
+    pf_result prepare_sorted_gather(bool apic, const char* fn);
+    // Its passes: count and sort the particles by cell, then gather per face sample.
+    void run_sorted_gather(bool apic);
     void upload_uniforms(float dt);
     // Test hooks: one step of length dt that runs `passes` (timed and counted like a step).
     template <typename Passes>
@@ -190,6 +195,17 @@ private:
     // particles
     gl::Buffer pos_, vel_;
     gl::Buffer affine_;  // APIC: 3 vec4 per particle slot (c_x, c_y, c_z); allocated on first use
+    // Sorted-gather P2G, allocated on first use: per particle slot its half cell (2 x 2 x 2 per
+    // cell) and its slot in it (uvec2); particle indices grouped by half cell in counting-atomic
+    // order; in the fixed order, the particles' grid coordinates (vec4) and velocities with
+    // indices (vec3 + uint); per half cell the particle count (and one word more), and the levels
+    // of the prefix sum over those counts (the half-cell starts first).
+    struct ScanLevel {
+        uint32_t count = 0, in = 0, out = 0, sums = 0;  // items; word offsets of input, prefixes, block totals
+    };
+    gl::Buffer sort_cell_slot_, sort_unsorted_, sort_grid_, sort_particles_, sort_count_, sort_scan_;
+    std::vector<ScanLevel> scan_levels_;
+    StatId stat_p2g_sort_ = 0, stat_p2g_gather_ = 0;
     // The live count; while gpu_count_, an upper bound of it (the GPU's count record holds the
     // exact one): raised by what emitters may add, lowered by readbacks of the GPU's count.
     mutable uint32_t particle_count_ = 0;

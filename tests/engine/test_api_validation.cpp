@@ -88,6 +88,7 @@ std::vector<ParamCase> bad_param_cases() {
         {"sor_omega NaN", "sor_omega", [](pf_sim_params& p) { p.sor_omega = kNaN; }},
         {"p2g COUNT", "p2g", [](pf_sim_params& p) { p.p2g = PF_P2G_COUNT; }},
         {"p2g -1", "p2g", [](pf_sim_params& p) { p.p2g = pf_p2g(-1); }},
+        {"p2g FORCE32", "p2g", [](pf_sim_params& p) { p.p2g = PF_P2G_FORCE32; }},
         {"transfer COUNT", "transfer", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_COUNT; }},
         {"transfer -1", "transfer", [](pf_sim_params& p) { p.transfer = pf_transfer(-1); }},
         {"transfer FORCE32", "transfer", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_FORCE32; }},
@@ -549,6 +550,7 @@ TEST_F(ApiValidation, SetParamsAcceptsBoundaryValues) {
     hi.sor_omega = 1.999f;
     hi.transfer = pf_transfer(PF_TRANSFER_COUNT - 1);
     hi.advection = pf_advection(PF_ADVECTION_COUNT - 1);
+    hi.p2g = pf_p2g(PF_P2G_COUNT - 1);
     pf_sim_params lo = pf_default_sim_params();
     lo.flip_ratio = 0.0f;
     lo.pressure_iterations = 1;

@@ -1,5 +1,6 @@
 // Case 10 (docs/stability.md): every combination of the accuracy ladder — pressure solver x
-// transfer x advection — on cases 1 (a dam break at 0.5 s frames), 5 (a closed full box) and 6
+// transfer x advection, with fixed-point P2G; and the other P2G schemes (float atomics, sorted
+// gather) with both transfers on the cheapest and the most accurate solver — on cases 1 (a dam break at 0.5 s frames), 5 (a closed full box) and 6
 // (liquid in two mirrored corners), each small and short. Every run must be sound; the closed
 // box at rest and the two corners mirror images.
 #include <cmath>
@@ -11,7 +12,7 @@
 namespace pf::test {
 namespace {
 
-using Combination = std::tuple<pf_pressure_solver, pf_transfer, pf_advection>;
+using Combination = std::tuple<pf_pressure_solver, pf_transfer, pf_advection, pf_p2g>;
 
 class Ladder : public GpuTest, public ::testing::WithParamInterface<Combination> {
 protected:
@@ -20,6 +21,7 @@ protected:
         d.params.pressure_solver = std::get<0>(GetParam());
         d.params.transfer = std::get<1>(GetParam());
         d.params.advection = std::get<2>(GetParam());
+        d.params.p2g = std::get<3>(GetParam());
         return d;
     }
     static void expect_sound(pf_sim* sim, const pf_sim_desc& d, size_t n, const char* when) {
@@ -104,8 +106,9 @@ std::string combination_name(const ::testing::TestParamInfo<Combination>& info) 
     static const char* solvers[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
     static const char* transfers[] = {"flip", "apic"};
     static const char* advections[] = {"euler", "rk2", "rk3"};
+    static const char* p2g[] = {"", "_float_atomic", "_sorted_gather"};  // fixed point: the names of old
     return std::string(solvers[std::get<0>(info.param)]) + "_" + transfers[std::get<1>(info.param)] + "_" +
-           advections[std::get<2>(info.param)];
+           advections[std::get<2>(info.param)] + p2g[std::get<3>(info.param)];
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -113,7 +116,15 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Combine(::testing::Values(PF_PRESSURE_SOLVER_JACOBI, PF_PRESSURE_SOLVER_RBGS, PF_PRESSURE_SOLVER_CG,
                                          PF_PRESSURE_SOLVER_PCG, PF_PRESSURE_SOLVER_MGPCG),
                        ::testing::Values(PF_TRANSFER_PIC_FLIP, PF_TRANSFER_APIC),
-                       ::testing::Values(PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_RK3)),
+                       ::testing::Values(PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_RK3),
+                       ::testing::Values(PF_P2G_FIXED_POINT)),
+    combination_name);
+
+INSTANTIATE_TEST_SUITE_P(
+    P2g, Ladder,
+    ::testing::Combine(::testing::Values(PF_PRESSURE_SOLVER_JACOBI, PF_PRESSURE_SOLVER_MGPCG),
+                       ::testing::Values(PF_TRANSFER_PIC_FLIP, PF_TRANSFER_APIC), ::testing::Values(PF_ADVECTION_EULER),
+                       ::testing::Values(PF_P2G_FLOAT_ATOMIC, PF_P2G_SORTED_GATHER)),
     combination_name);
 
 }  // namespace

@@ -1,0 +1,17 @@
+// Sorted-gather P2G, step 3 of 5, per particle: writes the particle's index into its half cell's
+// segment of the unsorted index list, at the half cell's start (exclusive prefix sum of the
+// counts, scan_blocks.comp / scan_add.comp) plus the slot the counting atomic gave it. Within a
+// half cell the order is that of the atomics, which is not reproducible; p2g_sort_rank.comp
+// fixes it.
+#include "common/sim.glsl"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_SORT_CELL_SLOT) readonly buffer CellSlot { uvec2 cell_slot[]; };
+layout(std430, binding = PF_SLOT_SORT_HALF_START) readonly buffer Start { uint half_start[]; };
+layout(std430, binding = PF_SLOT_SORT_UNSORTED) writeonly buffer Unsorted { uint unsorted[]; };
+
+void main() {
+    uint i = flat_id();
+    if (i >= sim.particle_count) return;
+    uvec2 cs = cell_slot[i];
+    unsorted[half_start[cs.x] + cs.y] = i;
+}
