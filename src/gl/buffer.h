@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "gl/debug.h"
 #include "gl/gl.h"
 
 namespace pf::gl {
@@ -10,11 +11,13 @@ namespace pf::gl {
 class Buffer {
 public:
     Buffer() = default;
-    Buffer(const Api& gl, size_t bytes, GLenum usage) : gl_(&gl), bytes_(bytes) {
+    // `label` names it for debuggers ("pflip/<label>", src/gl/debug.h).
+    Buffer(const Api& gl, size_t bytes, GLenum usage, const char* label) : gl_(&gl), bytes_(bytes) {
         gl.GenBuffers(1, &id_);
         // COPY_WRITE is a binding the state guard restores; allocation needs some target.
         gl.BindBuffer(GL_COPY_WRITE_BUFFER, id_);
         gl.BufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, usage);
+        label_object(gl, GL_BUFFER, id_, label);
     }
     ~Buffer() { reset(); }
     Buffer(Buffer&& o) noexcept { *this = std::move(o); }

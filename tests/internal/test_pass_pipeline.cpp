@@ -98,8 +98,8 @@ TEST_F(PassPipeline, AMissingBindingIsCaught) {
     SimPtr handle = create(test_desc(8, 8, 8));
     ASSERT_TRUE(handle);
     const Simulation& sim = *handle->impl;
-    gl::Buffer uniforms(sim.api(), sizeof(SimUniforms), GL_DYNAMIC_DRAW);
-    gl::Buffer a(sim.api(), 64 * 4, GL_DYNAMIC_COPY), b(sim.api(), 64 * 4, GL_DYNAMIC_COPY);
+    gl::Buffer uniforms(sim.api(), sizeof(SimUniforms), GL_DYNAMIC_DRAW, "test_uniforms");
+    gl::Buffer a(sim.api(), 64 * 4, GL_DYNAMIC_COPY, "test_a"), b(sim.api(), 64 * 4, GL_DYNAMIC_COPY, "test_b");
     Log log;
     PassRunner runner(sim.api(), log, uniforms, PF_UBO_SIM);
     const StatId stat = runner.add_stat("classify", PF_PASS_CLASSIFY);

@@ -17,7 +17,7 @@ static_assert(PF_FORCE_FIELD_VORTEX_ID == PF_FORCE_FIELD_VORTEX, "type ids share
 pf_result ForceFieldsEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
     if (std::string error = runner.prepare(gl::ProgramId::force_fields); !error.empty())
         return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    records_ = gl::Buffer(gl, size_t(PF_MAX_FORCE_FIELDS) * PF_FORCE_FIELD_VEC4S * 16, GL_DYNAMIC_DRAW);
+    records_ = gl::Buffer(gl, size_t(PF_MAX_FORCE_FIELDS) * PF_FORCE_FIELD_VEC4S * 16, GL_DYNAMIC_DRAW, "force_fields");
     stat_ = runner.add_stat("force_fields", PF_PASS_GRID_FORCES);
     dirty_ = true;
     return PF_OK;

@@ -18,7 +18,7 @@ pf_result ObstaclesEffect::init(const gl::Api& gl, PassRunner& runner, const Log
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
-    records_ = gl::Buffer(gl, size_t(PF_MAX_OBSTACLES) * PF_OBSTACLE_VEC4S * 16, GL_DYNAMIC_DRAW);
+    records_ = gl::Buffer(gl, size_t(PF_MAX_OBSTACLES) * PF_OBSTACLE_VEC4S * 16, GL_DYNAMIC_DRAW, "obstacles");
     grid_stat_ = runner.add_stat("obstacles", PF_PASS_CLASSIFY);
     push_stat_ = runner.add_stat("obstacle_push", PF_PASS_ADVECT);
     dirty_ = true;
