@@ -337,8 +337,10 @@ PF_API pf_sim_desc pf_default_sim_desc(void);
 
 /** Create a simulation in the current GL context. *out is set only on PF_OK. */
 PF_API pf_result pf_create(const pf_sim_desc* desc, pf_sim** out);
-/** Destroy a simulation and every GL object it made; NULL is ignored. Needs its context current. */
-PF_API void pf_destroy(pf_sim* sim);
+/** Destroy a simulation and every GL object it made. Needs its context current. PF_OK (NULL is
+ *  ignored: PF_OK too); PF_ERROR_INVALID_ARGUMENT, logged through the global logger, for a handle
+ *  already destroyed or not made by pf_create (nothing is read through it). */
+PF_API pf_result pf_destroy(pf_sim* sim);
 
 /** Append n particles; xyz is 3n floats (world positions inside the domain), vel 3n floats or NULL
  *  (zero). All or nothing: on any error nothing is added. */
@@ -372,6 +374,29 @@ PF_API pf_result pf_get_pass_count(const pf_sim* sim, uint32_t* out);
 /** Entry `index` (< pf_get_pass_count) of the per-pass statistics list; no stall. */
 PF_API pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_stats* out);
 
+
+/* ---- handles, the global logger and threading (docs/integration.md §5, §6) ----------------- */
+
+/* Handles. A pf_sim* is an id, not a pointer: it names a slot of a process-wide registry of live
+ * simulations and that slot's generation. Every call looks its handle up first, so a destroyed
+ * handle (or any value pf_create did not return) gives PF_ERROR_INVALID_ARGUMENT and a message to
+ * the global logger, never undefined behaviour; a slot reused by a later simulation has a new
+ * generation, so an old handle does not reach it. The registry (and the global logger) is the
+ * library's only global state, guarded by a mutex; each simulation's state is its own.
+ *
+ * Threading. pflip starts no threads. Calls on one simulation must come from the thread on which
+ * its GL context (or one sharing its objects) is current, one at a time: every call taking a
+ * pf_sim*, pf_create and pf_destroy included. Calls on different simulations in different
+ * contexts may run on different threads at once. A call on a handle must not race with
+ * pf_destroy of that handle on another thread. These may be called from any thread at any time:
+ * pf_version, pf_result_string, pf_pass_name, pf_render_pass_name, pf_set_global_logger and the
+ * pf_default_* and pf_quality_params functions. */
+
+/** Sets the logger of messages that belong to no simulation: calls on invalid handles, a NULL
+ *  pf_create descriptor, pf_quality_params errors. NULL removes it (messages are dropped, the
+ *  default). The logger is copied; it may be called from any thread that makes such a call.
+ *  Any thread. */
+PF_API void pf_set_global_logger(const pf_logger* logger);
 
 /* ---- effects (docs/design.md §9) --------------------------------------------------------------- */
 

@@ -10,15 +10,13 @@
 #include "pf/pf.h"
 
 namespace {
-const pf::Log kSilent{};
-
 using pf::guarded;
-using pf::live;
 
-#define PF_CHECK_SIM(sim, fn)                                                                  \
-    do {                                                                                       \
-        if (!live(sim)) return kSilent.error(PF_ERROR_INVALID_ARGUMENT, fn ": invalid pf_sim"); \
-    } while (0)
+// The entry a live handle names, as `var`; otherwise the call returns PF_ERROR_INVALID_ARGUMENT
+// after logging through the global logger (a dead handle has no simulation, hence no logger).
+#define PF_ENTRY(var, handle, fn)                     \
+    pf::SimEntry* const var = pf::entry(handle);      \
+    if (!var) return pf::invalid_handle(handle, fn)
 }  // namespace
 
 extern "C" {
@@ -68,7 +66,7 @@ pf_sim_params pf_default_sim_params(void) {
 
 pf_result pf_quality_params(pf_quality quality, pf_sim_params* out) {
     if (!out || pf::enum_bits(quality) >= PF_QUALITY_COUNT) {
-        return kSilent.error(PF_ERROR_INVALID_ARGUMENT, "pf_quality_params: unknown quality or NULL out");
+        return pf::global_error(PF_ERROR_INVALID_ARGUMENT, "pf_quality_params: unknown quality or NULL out");
     }
     pf_sim_params p = pf_default_sim_params();
     switch (quality) {
@@ -105,28 +103,32 @@ pf_sim_desc pf_default_sim_desc(void) {
 
 pf_result pf_create(const pf_sim_desc* desc, pf_sim** out) {
     if (!desc || !out) {
-        const pf::Log log = desc ? pf::Log(desc->logger) : kSilent;
-        return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
+        if (desc) return pf::Log(desc->logger).error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
+        return pf::global_error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
     }
     const pf::Log log(desc->logger);
     return guarded(log, "pf_create", [&] {
         const pf_sim_desc resolved = pf::resolve_desc(*desc);
         if (pf_result r = pf::validate_desc(resolved, log); r != PF_OK) return r;
-        auto sim = std::make_unique<pf_sim>();
-        if (pf_result r = pf::Simulation::create(resolved, sim->impl); r != PF_OK) return r;
-        *out = sim.release();
+        auto entry = std::make_unique<pf::SimEntry>();
+        if (pf_result r = pf::Simulation::create(resolved, entry->impl); r != PF_OK) return r;
+        *out = pf::register_sim(std::move(entry));
         return PF_OK;
     });
 }
 
-void pf_destroy(pf_sim* sim) {
-    if (!live(sim)) return;
-    sim->magic = 0;
-    delete sim;
+pf_result pf_destroy(pf_sim* handle) {
+    if (!handle) return PF_OK;
+    std::unique_ptr<pf::SimEntry> entry = pf::unregister_sim(handle);
+    if (!entry) return pf::invalid_handle(handle, "pf_destroy");
+    entry.reset();  // deletes its GL objects: the context must be current
+    return PF_OK;
 }
 
-pf_result pf_add_particles(pf_sim* sim, const float* xyz, const float* vel, uint32_t n) {
-    PF_CHECK_SIM(sim, "pf_add_particles");
+void pf_set_global_logger(const pf_logger* logger) { pf::set_global_logger(logger); }
+
+pf_result pf_add_particles(pf_sim* handle, const float* xyz, const float* vel, uint32_t n) {
+    PF_ENTRY(sim, handle, "pf_add_particles");
     pf::Simulation& s = *sim->impl;
     return guarded(s.log(), "pf_add_particles", [&] {
         if (n == 0) return PF_OK;
@@ -141,8 +143,8 @@ pf_result pf_add_particles(pf_sim* sim, const float* xyz, const float* vel, uint
     });
 }
 
-pf_result pf_fill_box(pf_sim* sim, const float lo[3], const float hi[3], const float vel[3]) {
-    PF_CHECK_SIM(sim, "pf_fill_box");
+pf_result pf_fill_box(pf_sim* handle, const float lo[3], const float hi[3], const float vel[3]) {
+    PF_ENTRY(sim, handle, "pf_fill_box");
     pf::Simulation& s = *sim->impl;
     return guarded(s.log(), "pf_fill_box", [&] {
         if (!lo || !hi) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_fill_box: lo and hi must not be NULL");
@@ -156,13 +158,13 @@ pf_result pf_fill_box(pf_sim* sim, const float lo[3], const float hi[3], const f
     });
 }
 
-pf_result pf_clear_particles(pf_sim* sim) {
-    PF_CHECK_SIM(sim, "pf_clear_particles");
+pf_result pf_clear_particles(pf_sim* handle) {
+    PF_ENTRY(sim, handle, "pf_clear_particles");
     return sim->impl->clear_particles();
 }
 
-pf_result pf_step(pf_sim* sim, float frame_dt) {
-    PF_CHECK_SIM(sim, "pf_step");
+pf_result pf_step(pf_sim* handle, float frame_dt) {
+    PF_ENTRY(sim, handle, "pf_step");
     pf::Simulation& s = *sim->impl;
     if (!(std::isfinite(frame_dt) && frame_dt > 0.0f && frame_dt <= 1.0f)) {
         return s.log().error(PF_ERROR_INVALID_ARGUMENT,
@@ -171,8 +173,8 @@ pf_result pf_step(pf_sim* sim, float frame_dt) {
     return guarded(s.log(), "pf_step", [&] { return s.step(frame_dt); });
 }
 
-pf_result pf_push(pf_sim* sim, const float center[3], float radius, const float dv[3]) {
-    PF_CHECK_SIM(sim, "pf_push");
+pf_result pf_push(pf_sim* handle, const float center[3], float radius, const float dv[3]) {
+    PF_ENTRY(sim, handle, "pf_push");
     pf::Simulation& s = *sim->impl;
     if (!center || !dv) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_push: center and dv must not be NULL");
     for (int a = 0; a < 3; ++a) {
@@ -184,15 +186,15 @@ pf_result pf_push(pf_sim* sim, const float center[3], float radius, const float 
     return guarded(s.log(), "pf_push", [&] { return s.push(center, radius, dv); });
 }
 
-pf_result pf_set_features(pf_sim* sim, uint32_t features) {
-    PF_CHECK_SIM(sim, "pf_set_features");
+pf_result pf_set_features(pf_sim* handle, uint32_t features) {
+    PF_ENTRY(sim, handle, "pf_set_features");
     pf::Simulation& s = *sim->impl;
     if (pf_result r = pf::validate_features(features, s.log(), "pf_set_features"); r != PF_OK) return r;
     return guarded(s.log(), "pf_set_features", [&] { return s.set_features(features, "pf_set_features"); });
 }
 
-pf_result pf_get_features(const pf_sim* sim, uint32_t* out) {
-    PF_CHECK_SIM(sim, "pf_get_features");
+pf_result pf_get_features(const pf_sim* handle, uint32_t* out) {
+    PF_ENTRY(sim, handle, "pf_get_features");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_features: out must not be NULL");
     *out = sim->impl->features();
     return PF_OK;
@@ -214,59 +216,59 @@ pf_obstacle pf_default_obstacle(void) {
     return o;
 }
 
-pf_result pf_add_force_field(pf_sim* sim, const pf_force_field* field, uint32_t* out_id) {
-    PF_CHECK_SIM(sim, "pf_add_force_field");
+pf_result pf_add_force_field(pf_sim* handle, const pf_force_field* field, uint32_t* out_id) {
+    PF_ENTRY(sim, handle, "pf_add_force_field");
     pf::Simulation& s = *sim->impl;
     if (!field) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_force_field: field must not be NULL");
     if (pf_result r = pf::validate_force_field(*field, s.log(), "pf_add_force_field"); r != PF_OK) return r;
     return guarded(s.log(), "pf_add_force_field", [&] { return s.add_force_field(*field, out_id); });
 }
 
-pf_result pf_set_force_field(pf_sim* sim, uint32_t id, const pf_force_field* field) {
-    PF_CHECK_SIM(sim, "pf_set_force_field");
+pf_result pf_set_force_field(pf_sim* handle, uint32_t id, const pf_force_field* field) {
+    PF_ENTRY(sim, handle, "pf_set_force_field");
     pf::Simulation& s = *sim->impl;
     if (!field) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_force_field: field must not be NULL");
     if (pf_result r = pf::validate_force_field(*field, s.log(), "pf_set_force_field"); r != PF_OK) return r;
     return guarded(s.log(), "pf_set_force_field", [&] { return s.set_force_field(id, *field); });
 }
 
-pf_result pf_remove_force_field(pf_sim* sim, uint32_t id) {
-    PF_CHECK_SIM(sim, "pf_remove_force_field");
+pf_result pf_remove_force_field(pf_sim* handle, uint32_t id) {
+    PF_ENTRY(sim, handle, "pf_remove_force_field");
     pf::Simulation& s = *sim->impl;
     return guarded(s.log(), "pf_remove_force_field", [&] { return s.remove_force_field(id); });
 }
 
-pf_result pf_add_obstacle(pf_sim* sim, const pf_obstacle* obstacle, uint32_t* out_id) {
-    PF_CHECK_SIM(sim, "pf_add_obstacle");
+pf_result pf_add_obstacle(pf_sim* handle, const pf_obstacle* obstacle, uint32_t* out_id) {
+    PF_ENTRY(sim, handle, "pf_add_obstacle");
     pf::Simulation& s = *sim->impl;
     if (!obstacle) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_obstacle: obstacle must not be NULL");
     if (pf_result r = pf::validate_obstacle(*obstacle, s.log(), "pf_add_obstacle"); r != PF_OK) return r;
     return guarded(s.log(), "pf_add_obstacle", [&] { return s.add_obstacle(*obstacle, out_id); });
 }
 
-pf_result pf_set_obstacle(pf_sim* sim, uint32_t id, const pf_obstacle* obstacle) {
-    PF_CHECK_SIM(sim, "pf_set_obstacle");
+pf_result pf_set_obstacle(pf_sim* handle, uint32_t id, const pf_obstacle* obstacle) {
+    PF_ENTRY(sim, handle, "pf_set_obstacle");
     pf::Simulation& s = *sim->impl;
     if (!obstacle) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_obstacle: obstacle must not be NULL");
     if (pf_result r = pf::validate_obstacle(*obstacle, s.log(), "pf_set_obstacle"); r != PF_OK) return r;
     return guarded(s.log(), "pf_set_obstacle", [&] { return s.set_obstacle(id, *obstacle); });
 }
 
-pf_result pf_remove_obstacle(pf_sim* sim, uint32_t id) {
-    PF_CHECK_SIM(sim, "pf_remove_obstacle");
+pf_result pf_remove_obstacle(pf_sim* handle, uint32_t id) {
+    PF_ENTRY(sim, handle, "pf_remove_obstacle");
     pf::Simulation& s = *sim->impl;
     return guarded(s.log(), "pf_remove_obstacle", [&] { return s.remove_obstacle(id); });
 }
 
-pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out) {
-    PF_CHECK_SIM(sim, "pf_get_params");
+pf_result pf_get_params(const pf_sim* handle, pf_sim_params* out) {
+    PF_ENTRY(sim, handle, "pf_get_params");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_params: out must not be NULL");
     *out = sim->impl->params();
     return PF_OK;
 }
 
-pf_result pf_set_params(pf_sim* sim, const pf_sim_params* params) {
-    PF_CHECK_SIM(sim, "pf_set_params");
+pf_result pf_set_params(pf_sim* handle, const pf_sim_params* params) {
+    PF_ENTRY(sim, handle, "pf_set_params");
     pf::Simulation& s = *sim->impl;
     if (!params) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_params: params must not be NULL");
     return guarded(s.log(), "pf_set_params", [&] {
@@ -276,8 +278,8 @@ pf_result pf_set_params(pf_sim* sim, const pf_sim_params* params) {
     });
 }
 
-pf_result pf_read_particles(pf_sim* sim, uint32_t first, uint32_t count, float* xyz, float* vel) {
-    PF_CHECK_SIM(sim, "pf_read_particles");
+pf_result pf_read_particles(pf_sim* handle, uint32_t first, uint32_t count, float* xyz, float* vel) {
+    PF_ENTRY(sim, handle, "pf_read_particles");
     pf::Simulation& s = *sim->impl;
     if (uint64_t(first) + count > s.particle_count()) {
         return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_read_particles: range [" + std::to_string(first) + ", " +
@@ -288,36 +290,36 @@ pf_result pf_read_particles(pf_sim* sim, uint32_t first, uint32_t count, float* 
     return guarded(s.log(), "pf_read_particles", [&] { return s.read_particles(first, count, xyz, vel); });
 }
 
-pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out) {
-    PF_CHECK_SIM(sim, "pf_get_gl_buffers");
+pf_result pf_get_gl_buffers(const pf_sim* handle, pf_gl_buffers* out) {
+    PF_ENTRY(sim, handle, "pf_get_gl_buffers");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_gl_buffers: out must not be NULL");
     sim->impl->gl_buffers(*out);
     return PF_OK;
 }
 
-pf_result pf_get_stats(const pf_sim* sim, pf_stats* out) {
-    PF_CHECK_SIM(sim, "pf_get_stats");
+pf_result pf_get_stats(const pf_sim* handle, pf_stats* out) {
+    PF_ENTRY(sim, handle, "pf_get_stats");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_stats: out must not be NULL");
     sim->impl->stats(*out);
     if (sim->renderer) sim->renderer->stats(*out);
     return PF_OK;
 }
 
-pf_result pf_clear_flags(pf_sim* sim) {
-    PF_CHECK_SIM(sim, "pf_clear_flags");
+pf_result pf_clear_flags(pf_sim* handle) {
+    PF_ENTRY(sim, handle, "pf_clear_flags");
     sim->impl->clear_flags();
     return PF_OK;
 }
 
-pf_result pf_get_pass_count(const pf_sim* sim, uint32_t* out) {
-    PF_CHECK_SIM(sim, "pf_get_pass_count");
+pf_result pf_get_pass_count(const pf_sim* handle, uint32_t* out) {
+    PF_ENTRY(sim, handle, "pf_get_pass_count");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_pass_count: out must not be NULL");
     *out = sim->impl->pass_count();
     return PF_OK;
 }
 
-pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_stats* out) {
-    PF_CHECK_SIM(sim, "pf_get_pass_stats");
+pf_result pf_get_pass_stats(const pf_sim* handle, uint32_t index, pf_pass_stats* out) {
+    PF_ENTRY(sim, handle, "pf_get_pass_stats");
     const pf::Simulation& s = *sim->impl;
     if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_pass_stats: out must not be NULL");
     if (index >= s.pass_count()) {

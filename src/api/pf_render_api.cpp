@@ -15,7 +15,6 @@ namespace {
 using pf::enum_bits;
 
 using pf::guarded;
-using pf::live;
 
 std::string str(double v) {
     char buf[32];
@@ -140,9 +139,10 @@ pf_particle_params resolve(const pf_particle_params& in, float cell_size) {
 
 // Shared head of both entry points: handle, pointers, camera; makes the renderer on first use.
 template <typename Params, typename Draw>
-pf_result render_call(pf_sim* sim, const char* fn, const pf_camera* camera, const pf_render_target* target,
+pf_result render_call(pf_sim* handle, const char* fn, const pf_camera* camera, const pf_render_target* target,
                       const Params* params, Params defaults, Draw&& draw) {
-    if (!live(sim)) return pf::Log{}.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": invalid pf_sim");
+    pf::SimEntry* const sim = pf::entry(handle);
+    if (!sim) return pf::invalid_handle(handle, fn);
     pf::Simulation& s = *sim->impl;
     const Validator v{s.log(), fn};
     if (!camera) return v.bad("camera must not be NULL");

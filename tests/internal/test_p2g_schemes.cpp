@@ -42,7 +42,7 @@ protected:
         EXPECT_TRUE(handle);
         if (!handle) return {};
         EXPECT_EQ(pf_add_particles(handle.get(), pos_.data(), vel_.data(), kParticles), PF_OK);
-        Simulation& sim = *handle->impl;
+        Simulation& sim = *pf::entry(handle)->impl;
         EXPECT_EQ(sim.run_substep_for_test(0.01f), PF_OK);
         EXPECT_EQ(sim.runner().binding_errors(), 0u);
         const std::vector<uint32_t> words = sim.read_grid(GridBuffer::face_accum);
@@ -120,7 +120,7 @@ TEST_F(P2gSchemes, FixedPointIsBitIdenticalRunToRunAndFloatIsReported) {
     // Which path the float scheme took here: native atomics if the GL has the extension.
     SimPtr probe = create(test_desc(4, 4, 4));
     ASSERT_TRUE(probe);
-    const gl::Api& gl = probe->impl->api();
+    const gl::Api& gl = pf::entry(probe)->impl->api();
     GLint count = 0;
     gl.GetIntegerv(GL_NUM_EXTENSIONS, &count);
     bool native = false;
