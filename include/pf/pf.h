@@ -46,6 +46,7 @@ typedef enum pf_result {
     PF_ERROR_CAPACITY = 5,             /**< the request would exceed max_particles */
     PF_ERROR_INVALID_STATE = 6,        /**< the call is not valid in the simulation's current state */
     PF_ERROR_GL = 7,                   /**< the GL reported an error during the call */
+    PF_NOT_READY = 8,                  /**< not an error: pf_poll_particles' copy is still in flight */
     PF_RESULT_FORCE32 = 0x7fffffff
 } pf_result;
 
@@ -397,6 +398,24 @@ PF_API pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_st
  *  default). The logger is copied; it may be called from any thread that makes such a call.
  *  Any thread. */
 PF_API void pf_set_global_logger(const pf_logger* logger);
+
+/* ---- asynchronous readback (docs/integration.md §2) ------------------------------------------ */
+
+/** Most pf_request_particles requests one simulation holds in flight at once. */
+#define PF_MAX_PARTICLE_REQUESTS 16
+
+/** Starts copying particles [first, first+count) as they are now (after the last pf_step) into a
+ *  buffer of pflip's, on the GPU, without waiting; *out_ticket names the request for
+ *  pf_poll_particles. The copy is fenced and flushed; with GL 4.4 / ARB_buffer_storage its buffer
+ *  is persistently mapped. Later steps do not change what a request returns.
+ *  PF_ERROR_INVALID_ARGUMENT for a NULL out_ticket or a range beyond the live particles;
+ *  PF_ERROR_CAPACITY when PF_MAX_PARTICLE_REQUESTS are in flight. Nothing changes on error. */
+PF_API pf_result pf_request_particles(pf_sim* sim, uint32_t first, uint32_t count, uint32_t* out_ticket);
+/** Collects a request without ever waiting: PF_NOT_READY (nothing written) while the GPU has not
+ *  finished the copy; PF_OK once it has: 3 floats per particle written to xyz and vel (either may
+ *  be NULL, both NULL discards the data) and the ticket released. PF_ERROR_INVALID_ARGUMENT (logged)
+ *  for a ticket not in flight: never issued, already collected, or another simulation's. */
+PF_API pf_result pf_poll_particles(pf_sim* sim, uint32_t ticket, float* xyz, float* vel);
 
 /* ---- effects (docs/design.md §9) --------------------------------------------------------------- */
 

@@ -74,6 +74,8 @@ _PROTOTYPES = {
     "pf_get_params": (t.c_enum, [_sim, _P(t.SimParams)]),
     "pf_set_params": (t.c_enum, [_sim, _P(t.SimParams)]),
     "pf_read_particles": (t.c_enum, [_sim, ctypes.c_uint32, ctypes.c_uint32, _f3, _f3]),
+    "pf_request_particles": (t.c_enum, [_sim, ctypes.c_uint32, ctypes.c_uint32, _P(ctypes.c_uint32)]),
+    "pf_poll_particles": (t.c_enum, [_sim, ctypes.c_uint32, _f3, _f3]),
     "pf_get_gl_buffers": (t.c_enum, [_sim, _P(t.GlBuffers)]),
     "pf_get_stats": (t.c_enum, [_sim, _P(t.Stats)]),
     "pf_clear_flags": (t.c_enum, [_sim]),

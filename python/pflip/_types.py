@@ -19,6 +19,7 @@ class Result(enum.IntEnum):
     ERROR_CAPACITY = 5
     ERROR_INVALID_STATE = 6
     ERROR_GL = 7
+    NOT_READY = 8
 
 
 class LogLevel(enum.IntEnum):
@@ -116,6 +117,7 @@ class ObstacleShape(enum.IntEnum):
 
 MAX_FORCE_FIELDS = 16
 MAX_OBSTACLES = 16
+MAX_PARTICLE_REQUESTS = 16  # pf_request_particles in flight per simulation
 
 
 class DepthConvention(enum.IntEnum):
@@ -417,4 +419,5 @@ C_ENUMS = {
     Feature: "PF_FEATURE_", ForceFieldType: "PF_FORCE_FIELD_", ObstacleShape: "PF_OBSTACLE_",
 }
 C_CONSTANTS = {"PF_PASS_COUNT": PASS_COUNT, "PF_RENDER_PASS_COUNT": RENDER_PASS_COUNT,
-               "PF_MAX_FORCE_FIELDS": MAX_FORCE_FIELDS, "PF_MAX_OBSTACLES": MAX_OBSTACLES}
+               "PF_MAX_FORCE_FIELDS": MAX_FORCE_FIELDS, "PF_MAX_OBSTACLES": MAX_OBSTACLES,
+               "PF_MAX_PARTICLE_REQUESTS": MAX_PARTICLE_REQUESTS}

@@ -33,6 +33,7 @@ const char* pf_result_string(pf_result r) {
         case PF_ERROR_CAPACITY: return "capacity exceeded";
         case PF_ERROR_INVALID_STATE: return "invalid state";
         case PF_ERROR_GL: return "OpenGL error";
+        case PF_NOT_READY: return "not ready";
         default: return "unknown result";
     }
 }
@@ -288,6 +289,25 @@ pf_result pf_read_particles(pf_sim* handle, uint32_t first, uint32_t count, floa
     }
     if (count == 0 || (!xyz && !vel)) return PF_OK;
     return guarded(s.log(), "pf_read_particles", [&] { return s.read_particles(first, count, xyz, vel); });
+}
+
+pf_result pf_request_particles(pf_sim* handle, uint32_t first, uint32_t count, uint32_t* out_ticket) {
+    PF_ENTRY(sim, handle, "pf_request_particles");
+    pf::Simulation& s = *sim->impl;
+    if (!out_ticket)
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_request_particles: out_ticket must not be NULL");
+    if (uint64_t(first) + count > s.particle_count()) {
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_request_particles: range [" + std::to_string(first) + ", " +
+                                                            std::to_string(uint64_t(first) + count) + ") exceeds the " +
+                                                            std::to_string(s.particle_count()) + " live particles");
+    }
+    return guarded(s.log(), "pf_request_particles", [&] { return s.request_particles(first, count, out_ticket); });
+}
+
+pf_result pf_poll_particles(pf_sim* handle, uint32_t ticket, float* xyz, float* vel) {
+    PF_ENTRY(sim, handle, "pf_poll_particles");
+    pf::Simulation& s = *sim->impl;
+    return guarded(s.log(), "pf_poll_particles", [&] { return s.poll_particles(ticket, xyz, vel); });
 }
 
 pf_result pf_get_gl_buffers(const pf_sim* handle, pf_gl_buffers* out) {

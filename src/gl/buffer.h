@@ -20,6 +20,15 @@ public:
         label_object(gl, GL_BUFFER, id_, label);
     }
     ~Buffer() { reset(); }
+    // Takes ownership of buffer `id` (made and allocated by the caller, e.g. with glBufferStorage).
+    static Buffer adopt(const Api& gl, GLuint id, size_t bytes, const char* label) {
+        Buffer b;
+        b.gl_ = &gl;
+        b.id_ = id;
+        b.bytes_ = bytes;
+        label_object(gl, GL_BUFFER, id, label);
+        return b;
+    }
     Buffer(Buffer&& o) noexcept { *this = std::move(o); }
     Buffer& operator=(Buffer&& o) noexcept {
         if (this != &o) {

@@ -122,6 +122,7 @@ pf_result Simulation::init() {
     status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY, "status");
     for (auto& b : readback_) b = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_STREAM_READ, "status_readback");
     runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM);
+    requests_ = std::make_unique<ParticleReadback>(gl_);
     const uint64_t metric_items = std::max<uint64_t>(uint64_t(cells_), desc_.max_particles);
     metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 32, GL_DYNAMIC_COPY, "metrics_partials");
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
@@ -779,6 +780,16 @@ pf_result Simulation::read_particles(uint32_t first, uint32_t count, float* xyz,
         }
     }
     return PF_OK;
+}
+
+pf_result Simulation::request_particles(uint32_t first, uint32_t count, uint32_t* ticket) {
+    gl::StateGuard guard(gl_, gl_state_);
+    return requests_->request(pos_, vel_, first, count, ticket, log_);
+}
+
+pf_result Simulation::poll_particles(uint32_t ticket, float* xyz, float* vel) {
+    gl::StateGuard guard(gl_, gl_state_);
+    return requests_->poll(ticket, xyz, vel, log_);
 }
 
 void Simulation::gl_buffers(pf_gl_buffers& out) const {

@@ -15,6 +15,7 @@
 #include "sim/effects/force_fields/force_fields.h"
 #include "sim/effects/obstacles/obstacles.h"
 #include "sim/effects/registry.h"
+#include "sim/particle_readback.h"
 #include "sim/pass_runner.h"
 #include "sim/sim_uniforms.h"
 #include "sim/solvers/pressure_solver.h"
@@ -51,6 +52,10 @@ public:
     pf_result set_obstacle(uint32_t id, const pf_obstacle& obstacle);
     pf_result remove_obstacle(uint32_t id);
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
+    // pf_request_particles / pf_poll_particles (range checked by the API).
+    pf_result request_particles(uint32_t first, uint32_t count, uint32_t* ticket);
+    pf_result poll_particles(uint32_t ticket, float* xyz, float* vel);
+    const ParticleReadback& particle_requests() const { return *requests_; }
     void gl_buffers(pf_gl_buffers& out) const;
     void stats(pf_stats& out) const;
     // Entries of the runtime per-pass statistics list.
@@ -144,6 +149,7 @@ private:
 
     // particles
     gl::Buffer pos_, vel_;
+    std::unique_ptr<ParticleReadback> requests_;  // pf_request_particles
     gl::Buffer affine_;  // APIC: 3 vec4 per particle slot (c_x, c_y, c_z); allocated on first use
     uint32_t particle_count_ = 0;
     // grid
