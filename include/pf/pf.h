@@ -417,6 +417,31 @@ PF_API pf_result pf_request_particles(pf_sim* sim, uint32_t first, uint32_t coun
  *  for a ticket not in flight: never issued, already collected, or another simulation's. */
 PF_API pf_result pf_poll_particles(pf_sim* sim, uint32_t ticket, float* xyz, float* vel);
 
+/* ---- snapshots (docs/integration.md §2) ---------------------------------------------------- */
+
+/* A snapshot holds everything that determines a simulation's next steps: its particles
+ * (positions, velocities, APIC affine vectors), parameters, features, the effects' objects with
+ * their ids, the pressure the next solve starts from, and the step logic's own state (CFL speed
+ * estimate, fixed-point P2G range, solver history). Restoring it into the simulation that saved it,
+ * or one created with the same grid_size, cell_size, origin, max_speed, density and
+ * fill_particles_per_cell, continues bit for bit as the original did from the save (with fixed-point
+ * P2G, the default; the substep counts must match too, which they do when each frame's GPU work
+ * finishes before the next pf_step, as when the engine waits for vsync). Snapshots are for the same
+ * build on the same machine: they carry a magic, a format number, their size and a checksum, and
+ * anything else is refused. pf_stats.steps is not restored (it counts pf_step calls). */
+
+/** Bytes pf_save_snapshot needs now (it changes with the particle count, APIC, the effects'
+ *  objects). PF_ERROR_INVALID_ARGUMENT for a NULL out. */
+PF_API pf_result pf_snapshot_size(const pf_sim* sim, size_t* out);
+/** Writes the snapshot (pf_snapshot_size bytes) to buffer; waits for the GPU (a checkpoint, not a
+ *  per-frame call). PF_ERROR_INVALID_ARGUMENT for a NULL buffer or a size below pf_snapshot_size. */
+PF_API pf_result pf_save_snapshot(pf_sim* sim, void* buffer, size_t size);
+/** Replaces the simulation's state by a snapshot's. PF_ERROR_INVALID_ARGUMENT, logged, for a NULL
+ *  buffer, a buffer shorter than the snapshot it starts, a wrong magic, format or checksum (a
+ *  corrupted buffer), or a snapshot of a simulation with another grid (see above) or with more
+ *  particles than max_particles; on any error nothing changes. */
+PF_API pf_result pf_restore_snapshot(pf_sim* sim, const void* buffer, size_t size);
+
 /* ---- effects (docs/design.md §9) --------------------------------------------------------------- */
 
 /** Turns effects on or off (a set of PF_FEATURE_* bits). Builds only the programs and buffers of

@@ -310,6 +310,30 @@ pf_result pf_poll_particles(pf_sim* handle, uint32_t ticket, float* xyz, float* 
     return guarded(s.log(), "pf_poll_particles", [&] { return s.poll_particles(ticket, xyz, vel); });
 }
 
+pf_result pf_snapshot_size(const pf_sim* handle, size_t* out) {
+    PF_ENTRY(sim, handle, "pf_snapshot_size");
+    pf::Simulation& s = *sim->impl;
+    if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_snapshot_size: out must not be NULL");
+    return guarded(s.log(), "pf_snapshot_size", [&] {
+        *out = s.snapshot_size();
+        return PF_OK;
+    });
+}
+
+pf_result pf_save_snapshot(pf_sim* handle, void* buffer, size_t size) {
+    PF_ENTRY(sim, handle, "pf_save_snapshot");
+    pf::Simulation& s = *sim->impl;
+    if (!buffer) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_save_snapshot: buffer must not be NULL");
+    return guarded(s.log(), "pf_save_snapshot", [&] { return s.save_snapshot(buffer, size); });
+}
+
+pf_result pf_restore_snapshot(pf_sim* handle, const void* buffer, size_t size) {
+    PF_ENTRY(sim, handle, "pf_restore_snapshot");
+    pf::Simulation& s = *sim->impl;
+    if (!buffer) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_restore_snapshot: buffer must not be NULL");
+    return guarded(s.log(), "pf_restore_snapshot", [&] { return s.restore_snapshot(buffer, size); });
+}
+
 pf_result pf_get_gl_buffers(const pf_sim* handle, pf_gl_buffers* out) {
     PF_ENTRY(sim, handle, "pf_get_gl_buffers");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_gl_buffers: out must not be NULL");

@@ -26,7 +26,6 @@ using gl::ProgramId;
 // a 31-bit sum. Each overflow read back widens the range by 2 bits, up to 2^10 (2M particles per
 // sample, velocity resolution max_speed / 1024 per particle).
 constexpr int kWeightScaleBits = 20;
-constexpr uint32_t kMaxP2gRangeShift = 10;
 
 struct GlFunctionLoader {
     pf_gl_get_proc_address_fn fn;

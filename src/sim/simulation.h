@@ -54,6 +54,11 @@ public:
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
     // pf_request_particles / pf_poll_particles (range checked by the API).
     pf_result request_particles(uint32_t first, uint32_t count, uint32_t* ticket);
+    // Snapshots (src/sim/snapshot.cpp): exact size, save (size checked), restore (all checked
+    // first; on any error nothing changes).
+    size_t snapshot_size() const;
+    pf_result save_snapshot(void* buffer, size_t size);
+    pf_result restore_snapshot(const void* buffer, size_t size);
     pf_result poll_particles(uint32_t ticket, float* xyz, float* vel);
     const ParticleReadback& particle_requests() const { return *requests_; }
     void gl_buffers(pf_gl_buffers& out) const;
@@ -91,6 +96,15 @@ public:
 
 private:
     explicit Simulation(const pf_sim_desc& desc);
+    // Snapshot pieces: the host part (descriptor check, params, CPU step state, effects), its
+    // GPU part's size, and waiting for the status readbacks in flight.
+    struct SnapshotState;
+    std::vector<uint8_t> snapshot_host_state() const;
+    bool snapshot_has_affine() const;
+    size_t snapshot_gpu_bytes(uint32_t particles, bool affine) const;
+    void drain_status();
+    // Widest fixed-point P2G range: 2^(20 - 10) per unit weight (design.md §4.2).
+    static constexpr uint32_t kMaxP2gRangeShift = 10;
     pf_result init();
     // The solver for params.pressure_solver, made and initialised on first use (kept after).
     pf_result solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out);

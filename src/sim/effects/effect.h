@@ -4,7 +4,8 @@
 // owns its programs, buffers and statistics entries, and makes them only when its feature is
 // first turned on (init), so an effect that is off costs nothing: no program is built, no pass
 // dispatched, no statistics entry listed. Adding an effect: a class here, a feature bit in
-// pf.h, one case in make_effect (registry.cpp), and its passes at the stages it needs.
+// pf.h, one case in make_effect (registry.cpp), its passes at the stages it needs, and its host
+// state in snapshots (save_state / restore_state).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -14,6 +15,7 @@
 #include "gl/gl.h"
 #include "pf/pf.h"
 #include "sim/pass_runner.h"
+#include "sim/snapshot_io.h"
 
 namespace pf {
 
@@ -51,6 +53,13 @@ public:
     // True while it does work on the liquid (adds energy): PF_FLAG_ENERGY_GAINED then takes its
     // reference after the last such step instead of before it.
     virtual bool does_work() const { return false; }
+    // Snapshots (pf_save_snapshot): appends the host state that determines later steps (its
+    // object list, ids included), whether or not the effect is on. Its GPU state is uploaded
+    // from that state, so it is not saved.
+    virtual void save_state(ByteWriter& out) const = 0;
+    // Reads what save_state wrote and validates it (errors logged, prefixed with fn); replaces
+    // the host state and marks it for upload only if all of it is valid, else changes nothing.
+    virtual pf_result restore_state(ByteReader& in, const Log& log, const char* fn) = 0;
 };
 
 }  // namespace pf

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "api/validate.h"
 #include "common/slots.h"
 #include "effects/obstacles/obstacle_shapes.h"
 
@@ -67,6 +68,19 @@ void ObstaclesEffect::run(EffectStage stage, PassRunner& runner, const EffectBuf
                     {},
                     count});
     }
+}
+
+void ObstaclesEffect::save_state(ByteWriter& out) const { list_.save(out); }
+
+pf_result ObstaclesEffect::restore_state(ByteReader& in, const Log& log, const char* fn) {
+    List staged;
+    const Log silent;  // one message for the whole list below
+    const std::string error =
+        List::load(in, staged, [&](const pf_obstacle& item) { return validate_obstacle(item, silent, fn) == PF_OK; });
+    if (!error.empty()) return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": obstacles in the snapshot: " + error);
+    list_ = std::move(staged);
+    dirty_ = true;
+    return PF_OK;
 }
 
 }  // namespace pf
