@@ -10,6 +10,25 @@
  * call on the same pf_sim must find that context (or one sharing its objects) current.
  * Each call restores the GL state it touches (program, buffer bindings, query state).
  */
+/**
+ * @file pf.h
+ * @brief The public C API of pflip (all of it).
+ *
+ * @defgroup pf_lifecycle Lifecycle
+ * @brief Versions, result codes, loggers, descriptors, pf_create / pf_destroy, handles, the
+ *        global logger and the threading rules.
+ *
+ * @defgroup pf_simulation Simulation
+ * @brief Step parameters, particles, stepping, effects (force fields, obstacles),
+ *        asynchronous readback and snapshots.
+ *
+ * @defgroup pf_rendering Rendering
+ * @brief Drawing the liquid into the engine's frame (screen-space fluid, debug particles) and
+ *        the particle buffers for engines that draw them themselves.
+ *
+ * @defgroup pf_stats Statistics
+ * @brief Counters, GPU timings, accuracy metrics, flags and the per-pass statistics list.
+ */
 #ifndef PF_PF_H
 #define PF_PF_H
 
@@ -20,6 +39,9 @@
 extern "C" {
 #endif
 
+/** @def PF_API
+ *  Marks the library's exported functions (dllexport/dllimport on Windows, default visibility
+ *  with GCC and Clang). */
 #if defined(_WIN32) && defined(PF_SHARED)
 #  ifdef PF_BUILDING_LIBRARY
 #    define PF_API __declspec(dllexport)
@@ -36,6 +58,8 @@ extern "C" {
    PF_VERSION_STRING, generated from the CMake project version. */
 #include <pf/pf_version.h>
 
+/** @addtogroup pf_lifecycle
+ *  @{ */
 /** Result codes. Values are stable across versions. */
 typedef enum pf_result {
     PF_OK = 0,                         /**< success */
@@ -63,8 +87,8 @@ typedef void (*pf_log_fn)(void* user, pf_log_level level, pf_result code, const 
 
 /** Logger: fn may be NULL (messages are dropped); user is passed back unchanged. */
 typedef struct pf_logger {
-    pf_log_fn fn;
-    void* user;
+    pf_log_fn fn;                 /**< called for each message; NULL drops them */
+    void* user;                   /**< passed back to fn unchanged */
 } pf_logger;
 
 /** Any GL function pointer, as returned by eglGetProcAddress / glfwGetProcAddress. */
@@ -72,6 +96,10 @@ typedef void (*pf_gl_proc)(void);
 /** The engine's GL loader: returns the entry point called name, or NULL. */
 typedef pf_gl_proc (*pf_gl_get_proc_address_fn)(const char* name);
 
+/** @} */
+
+/** @addtogroup pf_simulation
+ *  @{ */
 /** How particles are splatted onto the grid (P2G). */
 typedef enum pf_p2g {
     PF_P2G_FIXED_POINT = 0,  /**< 32-bit fixed-point integer atomics: bit-identical run to run,
@@ -179,6 +207,10 @@ enum {
     PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES /**< every known feature bit */
 };
 
+/** @} */
+
+/** @addtogroup pf_lifecycle
+ *  @{ */
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
 typedef struct pf_sim_desc {
     uint32_t grid_size[3];        /**< cells per axis, each 1..1024; default 32^3 */
@@ -202,6 +234,10 @@ typedef struct pf_sim_desc {
 /** Opaque simulation handle. Several may live in one GL context. */
 typedef struct pf_sim pf_sim;
 
+/** @} */
+
+/** @addtogroup pf_stats
+ *  @{ */
 /** Passes timed and counted by pf_get_stats. */
 typedef enum pf_pass {
     PF_PASS_CLEAR = 0,            /**< zero the grid accumulators */
@@ -311,6 +347,10 @@ typedef struct pf_pass_stats {
     uint32_t dispatches;          /**< compute dispatches in the last pf_step (0: did not run) */
 } pf_pass_stats;
 
+/** @} */
+
+/** @addtogroup pf_rendering
+ *  @{ */
 /** The simulation's particle buffers, for engines that draw particles themselves. pf_step
  *  ends with glMemoryBarrier(VERTEX_ATTRIB_ARRAY | SHADER_STORAGE | BUFFER_UPDATE), so
  *  they may be read as vertex attributes, storage buffers or copied right after it. */
@@ -321,6 +361,10 @@ typedef struct pf_gl_buffers {
     uint32_t stride;              /**< bytes between particles: 16 */
 } pf_gl_buffers;
 
+/** @} */
+
+/** @addtogroup pf_lifecycle
+ *  @{ */
 /** Library version, PF_VERSION of the build. */
 PF_API uint32_t pf_version(void);
 /** Short English text for a result code; never NULL. */
@@ -343,6 +387,10 @@ PF_API pf_result pf_create(const pf_sim_desc* desc, pf_sim** out);
  *  already destroyed or not made by pf_create (nothing is read through it). */
 PF_API pf_result pf_destroy(pf_sim* sim);
 
+/** @} */
+
+/** @addtogroup pf_simulation
+ *  @{ */
 /** Append n particles; xyz is 3n floats (world positions inside the domain), vel 3n floats or NULL
  *  (zero). All or nothing: on any error nothing is added. */
 PF_API pf_result pf_add_particles(pf_sim* sim, const float* xyz, const float* vel, uint32_t n);
@@ -366,6 +414,10 @@ PF_API pf_result pf_read_particles(pf_sim* sim, uint32_t first, uint32_t count, 
 /** The GL buffers holding particles; valid until pf_destroy. Read them, do not resize or delete. */
 PF_API pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out);
 
+/** @} */
+
+/** @addtogroup pf_stats
+ *  @{ */
 /** Counters and per-pass GPU timings (no stall: timings are from the newest finished step). */
 PF_API pf_result pf_get_stats(const pf_sim* sim, pf_stats* out);
 /** Clear the sticky PF_FLAG_* bits. */
@@ -376,6 +428,10 @@ PF_API pf_result pf_get_pass_count(const pf_sim* sim, uint32_t* out);
 PF_API pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_stats* out);
 
 
+/** @} */
+
+/** @addtogroup pf_lifecycle
+ *  @{ */
 /* ---- handles, the global logger and threading (docs/integration.md §5, §6) ----------------- */
 
 /* Handles. A pf_sim* is an id, not a pointer: it names a slot of a process-wide registry of live
@@ -399,6 +455,10 @@ PF_API pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_st
  *  Any thread. */
 PF_API void pf_set_global_logger(const pf_logger* logger);
 
+/** @} */
+
+/** @addtogroup pf_simulation
+ *  @{ */
 /* ---- asynchronous readback (docs/integration.md §2) ------------------------------------------ */
 
 /** Most pf_request_particles requests one simulation holds in flight at once. */
@@ -476,7 +536,7 @@ typedef enum pf_force_field_type {
 
 /** One force field. Start from pf_default_force_field(). */
 typedef struct pf_force_field {
-    pf_force_field_type type;
+    pf_force_field_type type;     /**< which kind of field (the fields below it uses) */
     float position[3];            /**< POINT: the centre; VORTEX: a point on the axis (world m) */
     float vector[3];              /**< DIRECTIONAL: acceleration (m/s^2) or, with drag > 0, the wind velocity
                                        (m/s); VORTEX: the axis direction (non-zero, normalised internally) */
@@ -511,7 +571,7 @@ typedef enum pf_obstacle_shape {
  *  particles that end a substep inside are pushed out along the distance gradient. Start from
  *  pf_default_obstacle(). */
 typedef struct pf_obstacle {
-    pf_obstacle_shape shape;
+    pf_obstacle_shape shape;      /**< which shape (the size fields below it uses) */
     float position[3];            /**< centre, world m */
     float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
                                        (0, 0, 0, 0) means the identity */
@@ -532,6 +592,10 @@ PF_API pf_result pf_set_obstacle(pf_sim* sim, uint32_t id, const pf_obstacle* ob
 /** Removes obstacle `id` (PF_ERROR_INVALID_ARGUMENT if there is none). */
 PF_API pf_result pf_remove_obstacle(pf_sim* sim, uint32_t id);
 
+/** @} */
+
+/** @addtogroup pf_rendering
+ *  @{ */
 /* ---- rendering into the engine's frame ----------------------------------------------------- */
 
 /** How the engine maps depth: the projection matrix plus the clip-space depth range. */
@@ -549,7 +613,7 @@ typedef struct pf_camera {
     int32_t viewport[4];         /**< x, y, width, height in target pixels (width, height 1..16384) */
     float near_plane;            /**< eye distance of the near plane, > 0; nothing nearer is drawn */
     float far_plane;             /**< eye distance of the far plane, > near_plane; nothing farther is drawn */
-    pf_depth_convention depth_convention;
+    pf_depth_convention depth_convention; /**< how proj maps depth */
 } pf_camera;
 
 /** Where pflip draws, and the engine's scene it draws over. All objects stay the engine's:
@@ -583,7 +647,7 @@ typedef enum pf_ssf_path {
 /** Look and quality of pf_render_ssf. Start from pf_default_ssf_params(). */
 typedef struct pf_ssf_params {
     float particle_radius;       /**< sphere radius in metres, > 0; 0 = default (0.5 cell size) */
-    pf_ssf_filter filter;
+    pf_ssf_filter filter;        /**< depth smoothing filter */
     uint32_t filter_radius;      /**< filter half-width in pixels, 1..64; 0 = default 8 */
     uint32_t filter_iterations;  /**< filter applications, 1..16; 0 = default 1 (bilateral) / 2 (narrow range) */
     float filter_depth_range;    /**< depth difference in metres treated as the same surface, > 0;
@@ -594,7 +658,7 @@ typedef struct pf_ssf_params {
     float specular;              /**< strength of the sun highlight, >= 0 */
     float shininess;             /**< Blinn-Phong exponent of the highlight, 1..10000 */
     float light_direction[3];    /**< world direction towards the sun (normalised internally), non-zero */
-    pf_ssf_path path;
+    pf_ssf_path path;            /**< compute or raster path (same image) */
 } pf_ssf_params;
 
 /** What colours the debug sprites of pf_render_particles. */
@@ -611,7 +675,7 @@ typedef enum pf_particle_color {
 /** Debug particle view. Start from pf_default_particle_params(). */
 typedef struct pf_particle_params {
     float particle_radius;       /**< sprite radius in metres; 0 = default (0.5 cell size) */
-    pf_particle_color color_by;
+    pf_particle_color color_by;  /**< what the colour shows */
     float range[2];              /**< value mapped to color_low .. color_high (range[0] != range[1]) */
     float color_low[3];          /**< RGB at range[0] */
     float color_high[3];         /**< RGB at range[1] */
@@ -634,11 +698,17 @@ PF_API pf_result pf_render_ssf(pf_sim* sim, const pf_camera* camera, const pf_re
 PF_API pf_result pf_render_particles(pf_sim* sim, const pf_camera* camera, const pf_render_target* target,
                                      const pf_particle_params* params);
 
+/** @} */
+
+/** @addtogroup pf_simulation
+ *  @{ */
 /* ---- interaction ---------------------------------------------------------------------------- */
 
 /** Adds velocity dv (m/s) to the particles within radius of center, falling off smoothly to 0 at
  *  the rim (splashes, a hand in the water). Takes effect at once on the GPU; speeds stay <= max_speed. */
 PF_API pf_result pf_push(pf_sim* sim, const float center[3], float radius, const float dv[3]);
+
+/** @} */
 
 #ifdef __cplusplus
 }
