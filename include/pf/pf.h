@@ -1,9 +1,19 @@
 /*
  * pflip — real-time PIC/FLIP liquid simulation on the GPU (OpenGL 4.3 compute).
  *
- * The one public header. Pure C99; every struct may be zero-initialised and then filled,
- * but start from pf_default_*() so new fields get sensible values. Every entry point
- * validates its arguments, returns a pf_result and reports failures through the logger.
+ * The one public header. Pure C99. Start every struct from pf_default_*(), which also sets its
+ * struct_size (the ABI rules below); a zero-initialised struct (struct_size 0) means the
+ * defaults for every field left zero. Every entry point validates its arguments, returns a
+ * pf_result and reports failures through the logger.
+ *
+ * ABI rules (docs/integration.md §7). The structs that may grow (pf_sim_desc, pf_sim_params,
+ * pf_stats, pf_ssf_params, pf_particle_params) start with uint32_t struct_size: sizeof the struct
+ * as the caller compiled it, set by the header-inline pf_default_*() (through pf_init_*()). New
+ * fields are only ever appended, so the library reads the first struct_size bytes a caller
+ * compiled against an older header passes and takes the defaults for the rest, and writes no
+ * more than struct_size bytes of an output struct (struct_size 0 on output: this header's size).
+ * pf_sim_desc.header_version, set to PF_VERSION by pf_default_sim_desc(), lets pf_create refuse a
+ * header of another major.minor version than the library's.
  *
  * GL contract: pflip never creates a GL context. pf_create() loads GL entry points through
  * the engine's get_proc_address and uses the context current at that moment; every later
@@ -144,10 +154,15 @@ typedef enum pf_advection {
     PF_ADVECTION_FORCE32 = 0x7fffffff
 } pf_advection;
 
-/** Parameters that may change between steps (pf_set_params). Fields marked "0 = default"
- *  take their default when zero; gravity, flip_ratio, separation and volume_correction take zero
- *  literally. */
+/** Parameters that may change between steps (pf_set_params). Start from pf_default_sim_params().
+ *  Fields marked "0 = default" take their default when zero; with struct_size set, gravity,
+ *  flip_ratio, separation and volume_correction take zero literally (with struct_size 0, every
+ *  zero field takes its default). */
 typedef struct pf_sim_params {
+    uint32_t struct_size;         /**< sizeof(pf_sim_params) as the caller compiled it (pf_default_sim_params()
+                                       sets it); 0: a zero-initialised struct, in which every field (each
+                                       element of an array) that is 0 takes its default, gravity, flip_ratio,
+                                       separation and volume_correction included */
     float gravity[3];             /**< body acceleration in m/s^2; default (0, -9.81, 0) */
     float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 (ignored with
                                        PF_TRANSFER_APIC) */
@@ -213,6 +228,12 @@ enum {
  *  @{ */
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
 typedef struct pf_sim_desc {
+    uint32_t struct_size;         /**< sizeof(pf_sim_desc) as the caller compiled it (pf_default_sim_desc()
+                                       sets it); 0: a zero-initialised struct, every zero field takes its
+                                       default (params by the pf_sim_params rule) */
+    uint32_t header_version;      /**< PF_VERSION of the header the caller compiled against (set by
+                                       pf_default_sim_desc()); pf_create refuses another major.minor than
+                                       pf_version()'s. 0: not checked (bindings without the C header) */
     uint32_t grid_size[3];        /**< cells per axis, each 1..1024; default 32^3 */
     float cell_size;              /**< cell edge in metres, 1e-5..1e5; default 0.05 */
     float origin[3];              /**< world position of the grid's minimum corner; the whole domain must lie
@@ -288,6 +309,8 @@ enum {
 
 /** Measurements. GPU figures lag a few frames (read without stalling). */
 typedef struct pf_stats {
+    uint32_t struct_size;             /**< in: sizeof(pf_stats) as the caller compiled it (0: this header's);
+                                           out: the bytes pf_get_stats wrote */
     uint32_t particle_count;          /**< live particles */
     uint32_t max_particles;           /**< capacity */
     uint64_t steps;                   /**< pf_step calls so far */
@@ -372,15 +395,35 @@ PF_API const char* pf_result_string(pf_result result);
 /** Stable short name of a pass ("p2g", "pressure_solve", ...); "unknown" if out of range. */
 PF_API const char* pf_pass_name(pf_pass pass);
 
-/** Default step parameters. */
-PF_API pf_sim_params pf_default_sim_params(void);
-/** The step parameters of a quality preset; PF_ERROR_INVALID_ARGUMENT (out untouched) for an
+/** Writes the default step parameters for a caller whose pf_sim_params is struct_size bytes
+ *  (its struct_size field set to that): the first struct_size bytes only. PF_ERROR_INVALID_ARGUMENT
+ *  for a NULL out or a struct_size below 4 or not a multiple of 4. Any thread. */
+PF_API pf_result pf_init_sim_params(pf_sim_params* out, uint32_t struct_size);
+/** Default step parameters, struct_size set to this header's sizeof. Any thread. */
+static inline pf_sim_params pf_default_sim_params(void) {
+    pf_sim_params p;
+    pf_init_sim_params(&p, (uint32_t)sizeof p);
+    return p;
+}
+/** The step parameters of a quality preset, written as pf_get_params writes (out->struct_size bytes;
+ *  0: this header's); PF_ERROR_INVALID_ARGUMENT (out untouched) for an
  *  unknown quality or a NULL out. */
 PF_API pf_result pf_quality_params(pf_quality quality, pf_sim_params* out);
-/** Default descriptor (32^3 grid of 5 cm cells); the caller still sets gl_get_proc_address. */
-PF_API pf_sim_desc pf_default_sim_desc(void);
+/** Writes the default descriptor for a caller whose pf_sim_desc is struct_size bytes (see
+ *  pf_init_sim_params); header_version is left 0. Any thread. */
+PF_API pf_result pf_init_sim_desc(pf_sim_desc* out, uint32_t struct_size);
+/** Default descriptor (32^3 grid of 5 cm cells), struct_size and header_version set for this header;
+ *  the caller still sets gl_get_proc_address. Any thread. */
+static inline pf_sim_desc pf_default_sim_desc(void) {
+    pf_sim_desc d;
+    pf_init_sim_desc(&d, (uint32_t)sizeof d);
+    d.header_version = PF_VERSION;
+    return d;
+}
 
-/** Create a simulation in the current GL context. *out is set only on PF_OK. */
+/** Create a simulation in the current GL context. *out is set only on PF_OK.
+ *  PF_ERROR_INVALID_ARGUMENT (logged) also for a desc->header_version of another major.minor than
+ *  the library's, or a struct_size that is not 0, at least 8 and a multiple of 4. */
 PF_API pf_result pf_create(const pf_sim_desc* desc, pf_sim** out);
 /** Destroy a simulation and every GL object it made. Needs its context current. PF_OK (NULL is
  *  ignored: PF_OK too); PF_ERROR_INVALID_ARGUMENT, logged through the global logger, for a handle
@@ -403,7 +446,8 @@ PF_API pf_result pf_clear_particles(pf_sim* sim);
 /** Advance by frame_dt seconds (0 < frame_dt <= 1) in CFL-limited substeps. */
 PF_API pf_result pf_step(pf_sim* sim, float frame_dt);
 
-/** Current step parameters. */
+/** Current step parameters: out->struct_size bytes are written (0: this header's size), and
+ *  out->struct_size is set to the bytes written. */
 PF_API pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out);
 /** Replace the step parameters; validated as in pf_create, nothing changes on error. */
 PF_API pf_result pf_set_params(pf_sim* sim, const pf_sim_params* params);
@@ -418,7 +462,8 @@ PF_API pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out);
 
 /** @addtogroup pf_stats
  *  @{ */
-/** Counters and per-pass GPU timings (no stall: timings are from the newest finished step). */
+/** Counters and per-pass GPU timings (no stall: timings are from the newest finished step).
+ *  out->struct_size bytes are written (0: this header's size); out->struct_size is set to them. */
 PF_API pf_result pf_get_stats(const pf_sim* sim, pf_stats* out);
 /** Clear the sticky PF_FLAG_* bits. */
 PF_API pf_result pf_clear_flags(pf_sim* sim);
@@ -646,6 +691,8 @@ typedef enum pf_ssf_path {
 
 /** Look and quality of pf_render_ssf. Start from pf_default_ssf_params(). */
 typedef struct pf_ssf_params {
+    uint32_t struct_size;        /**< sizeof(pf_ssf_params) as the caller compiled it (pf_default_ssf_params()
+                                      sets it); 0: every zero field takes its default */
     float particle_radius;       /**< sphere radius in metres, > 0; 0 = default (0.5 cell size) */
     pf_ssf_filter filter;        /**< depth smoothing filter */
     uint32_t filter_radius;      /**< filter half-width in pixels, 1..64; 0 = default 8 */
@@ -674,6 +721,9 @@ typedef enum pf_particle_color {
 
 /** Debug particle view. Start from pf_default_particle_params(). */
 typedef struct pf_particle_params {
+    uint32_t struct_size;        /**< sizeof(pf_particle_params) as the caller compiled it
+                                      (pf_default_particle_params() sets it); 0: every zero field takes its
+                                      default */
     float particle_radius;       /**< sprite radius in metres; 0 = default (0.5 cell size) */
     pf_particle_color color_by;  /**< what the colour shows */
     float range[2];              /**< value mapped to color_low .. color_high (range[0] != range[1]) */
@@ -681,10 +731,23 @@ typedef struct pf_particle_params {
     float color_high[3];         /**< RGB at range[1] */
 } pf_particle_params;
 
-/** Default liquid look: clear water, bilateral filter, compute path. */
-PF_API pf_ssf_params pf_default_ssf_params(void);
-/** Default debug view: coloured by speed 0..3 m/s, blue to white. */
-PF_API pf_particle_params pf_default_particle_params(void);
+/** Writes the default liquid look for a caller whose pf_ssf_params is struct_size bytes (see
+ *  pf_init_sim_params). Any thread. */
+PF_API pf_result pf_init_ssf_params(pf_ssf_params* out, uint32_t struct_size);
+/** Writes the default debug view for a caller whose pf_particle_params is struct_size bytes. Any thread. */
+PF_API pf_result pf_init_particle_params(pf_particle_params* out, uint32_t struct_size);
+/** Default liquid look: clear water, bilateral filter, compute path. Any thread. */
+static inline pf_ssf_params pf_default_ssf_params(void) {
+    pf_ssf_params p;
+    pf_init_ssf_params(&p, (uint32_t)sizeof p);
+    return p;
+}
+/** Default debug view: coloured by speed 0..3 m/s, blue to white. Any thread. */
+static inline pf_particle_params pf_default_particle_params(void) {
+    pf_particle_params p;
+    pf_init_particle_params(&p, (uint32_t)sizeof p);
+    return p;
+}
 /** Stable short name of a render pass ("thickness", "smooth", ...); "unknown" if out of range. */
 PF_API const char* pf_render_pass_name(pf_render_pass pass);
 

@@ -180,7 +180,9 @@ class SimParams(_Struct):
     @classmethod
     def default(cls):
         """pf_default_sim_params()."""
-        return _lib().pf_default_sim_params()
+        out = cls()
+        _lib().pf_init_sim_params(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     @classmethod
     def quality(cls, quality):
@@ -193,6 +195,7 @@ class SimParams(_Struct):
         return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("gravity", ctypes.c_float * 3),
         ("flip_ratio", ctypes.c_float),
         ("pressure_iterations", ctypes.c_uint32),
@@ -220,9 +223,13 @@ class SimDesc(_Struct):
     @classmethod
     def default(cls):
         """pf_default_sim_desc()."""
-        return _lib().pf_default_sim_desc()
+        out = cls()
+        _lib().pf_init_sim_desc(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("header_version", ctypes.c_uint32),  # 0: not checked (no C header here)
         ("grid_size", ctypes.c_uint32 * 3),
         ("cell_size", ctypes.c_float),
         ("origin", ctypes.c_float * 3),
@@ -242,6 +249,7 @@ class SimDesc(_Struct):
 class Stats(_Struct):
     """pf_stats."""
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("particle_count", ctypes.c_uint32),
         ("max_particles", ctypes.c_uint32),
         ("steps", ctypes.c_uint64),
@@ -321,9 +329,12 @@ class SsfParams(_Struct):
     @classmethod
     def default(cls):
         """pf_default_ssf_params()."""
-        return _lib().pf_default_ssf_params()
+        out = cls()
+        _lib().pf_init_ssf_params(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("particle_radius", ctypes.c_float),
         ("filter", c_enum),
         ("filter_radius", ctypes.c_uint32),
@@ -345,9 +356,12 @@ class ParticleParams(_Struct):
     @classmethod
     def default(cls):
         """pf_default_particle_params()."""
-        return _lib().pf_default_particle_params()
+        out = cls()
+        _lib().pf_init_particle_params(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("particle_radius", ctypes.c_float),
         ("color_by", c_enum),
         ("range", ctypes.c_float * 2),

@@ -5,6 +5,7 @@
 #include <new>
 #include <string>
 
+#include "api/abi.h"
 #include "api/handle.h"
 #include "api/validate.h"
 #include "pf/pf.h"
@@ -46,8 +47,10 @@ const char* pf_pass_name(pf_pass pass) {
     return (pass >= 0 && pass < PF_PASS_COUNT) ? kNames[pass] : "unknown";
 }
 
-pf_sim_params pf_default_sim_params(void) {
+namespace {
+pf_sim_params full_default_params() {
     pf_sim_params p{};
+    p.struct_size = uint32_t(sizeof p);
     p.gravity[1] = -9.81f;
     p.flip_ratio = 0.95f;
     p.pressure_iterations = 40;
@@ -65,11 +68,39 @@ pf_sim_params pf_default_sim_params(void) {
     return p;
 }
 
+pf_sim_desc full_default_desc() {
+    pf_sim_desc d{};
+    d.struct_size = uint32_t(sizeof d);
+    d.grid_size[0] = d.grid_size[1] = d.grid_size[2] = 32;
+    d.cell_size = 0.05f;
+    d.max_particles = 262144;
+    d.max_speed = 100.0f;
+    d.density = 1000.0f;
+    d.fill_particles_per_cell = 8;
+    d.fill_jitter = 0.8f;
+    d.seed = 1;
+    d.params = full_default_params();
+    return d;
+}
+}  // namespace
+
+pf_result pf_init_sim_params(pf_sim_params* out, uint32_t struct_size) {
+    return pf::init_struct(out, struct_size, full_default_params(), "pf_init_sim_params");
+}
+
+pf_result pf_init_sim_desc(pf_sim_desc* out, uint32_t struct_size) {
+    // Written as this build's layout, truncated: right for every caller while pf_sim_params has
+    // not grown since struct_size was introduced (only fields after params can be missing). When
+    // it grows, an older caller's params end earlier and its tail must be written where read_desc
+    // reads it (after the caller's params).
+    return pf::init_struct(out, struct_size, full_default_desc(), "pf_init_sim_desc");
+}
+
 pf_result pf_quality_params(pf_quality quality, pf_sim_params* out) {
     if (!out || pf::enum_bits(quality) >= PF_QUALITY_COUNT) {
         return pf::global_error(PF_ERROR_INVALID_ARGUMENT, "pf_quality_params: unknown quality or NULL out");
     }
-    pf_sim_params p = pf_default_sim_params();
+    pf_sim_params p = full_default_params();
     switch (quality) {
         case PF_QUALITY_FAST: break;  // the defaults are the original's scheme
         case PF_QUALITY_BALANCED:  // converged pressure; separation's active-set rounds cost 3-5x: off
@@ -84,32 +115,19 @@ pf_result pf_quality_params(pf_quality quality, pf_sim_params* out) {
             break;
         default: break;
     }
-    *out = p;
-    return PF_OK;
-}
-
-pf_sim_desc pf_default_sim_desc(void) {
-    pf_sim_desc d{};
-    d.grid_size[0] = d.grid_size[1] = d.grid_size[2] = 32;
-    d.cell_size = 0.05f;
-    d.max_particles = 262144;
-    d.max_speed = 100.0f;
-    d.density = 1000.0f;
-    d.fill_particles_per_cell = 8;
-    d.fill_jitter = 0.8f;
-    d.seed = 1;
-    d.params = pf_default_sim_params();
-    return d;
+    return pf::write_output(out, p, pf::Log(pf::global_logger()), "pf_quality_params");
 }
 
 pf_result pf_create(const pf_sim_desc* desc, pf_sim** out) {
-    if (!desc || !out) {
-        if (desc) return pf::Log(desc->logger).error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
-        return pf::global_error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
-    }
-    const pf::Log log(desc->logger);
+    if (!desc) return pf::global_error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
+    // The caller's layout is known only after struct_size: its logger is read with the rest.
+    pf_sim_desc read{};
+    if (pf_result r = pf::read_desc(desc, read, pf::Log(pf::global_logger())); r != PF_OK) return r;
+    const pf::Log log(read.logger);
+    if (!out) return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
+    if (pf_result r = pf::check_header_version(read.header_version, log); r != PF_OK) return r;
     return guarded(log, "pf_create", [&] {
-        const pf_sim_desc resolved = pf::resolve_desc(*desc);
+        const pf_sim_desc resolved = pf::resolve_desc(read);
         if (pf_result r = pf::validate_desc(resolved, log); r != PF_OK) return r;
         auto entry = std::make_unique<pf::SimEntry>();
         if (pf_result r = pf::Simulation::create(resolved, entry->impl); r != PF_OK) return r;
@@ -264,8 +282,7 @@ pf_result pf_remove_obstacle(pf_sim* handle, uint32_t id) {
 pf_result pf_get_params(const pf_sim* handle, pf_sim_params* out) {
     PF_ENTRY(sim, handle, "pf_get_params");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_params: out must not be NULL");
-    *out = sim->impl->params();
-    return PF_OK;
+    return pf::write_output(out, sim->impl->params(), sim->impl->log(), "pf_get_params");
 }
 
 pf_result pf_set_params(pf_sim* handle, const pf_sim_params* params) {
@@ -273,7 +290,10 @@ pf_result pf_set_params(pf_sim* handle, const pf_sim_params* params) {
     pf::Simulation& s = *sim->impl;
     if (!params) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_params: params must not be NULL");
     return guarded(s.log(), "pf_set_params", [&] {
-        const pf_sim_params resolved = pf::resolve_params(*params);
+        pf_sim_params read{};
+        if (pf_result r = pf::read_input(params, pf_default_sim_params(), read, s.log(), "pf_set_params"); r != PF_OK)
+            return r;
+        const pf_sim_params resolved = pf::resolve_params(read);
         if (pf_result r = pf::validate_params(resolved, s.log(), "pf_set_params"); r != PF_OK) return r;
         return s.set_params(resolved);
     });
@@ -344,9 +364,13 @@ pf_result pf_get_gl_buffers(const pf_sim* handle, pf_gl_buffers* out) {
 pf_result pf_get_stats(const pf_sim* handle, pf_stats* out) {
     PF_ENTRY(sim, handle, "pf_get_stats");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_stats: out must not be NULL");
-    sim->impl->stats(*out);
-    if (sim->renderer) sim->renderer->stats(*out);
-    return PF_OK;
+    if (!pf::valid_struct_size(pf::struct_size_of(out)))
+        return pf::write_output(out, pf_stats{}, sim->impl->log(), "pf_get_stats");  // logs the bad size
+    pf_stats full{};
+    sim->impl->stats(full);
+    if (sim->renderer) sim->renderer->stats(full);
+    full.struct_size = uint32_t(sizeof full);
+    return pf::write_output(out, full, sim->impl->log(), "pf_get_stats");
 }
 
 pf_result pf_clear_flags(pf_sim* handle) {
