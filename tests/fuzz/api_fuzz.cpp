@@ -102,9 +102,20 @@ struct Rng {
 // ---- the documented rules (include/pf/pf.h), as the model predicts them ----------------------
 bool finite3(const float v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
-// "0 = default" fields take their default; the rest are literal.
+// A zero-initialised struct (struct_size 0) takes the default for each zero 4-byte field; then
+// the "0 = default" fields take their default; the rest are literal (pf.h ABI rules).
 pf_sim_params resolve(pf_sim_params p) {
     const pf_sim_params d = pf_default_sim_params();
+    if (p.struct_size == 0) {
+        static_assert(sizeof(pf_sim_params) % 4 == 0, "4-byte fields");
+        uint32_t words[sizeof(pf_sim_params) / 4], defaults[sizeof(pf_sim_params) / 4];
+        std::memcpy(words, &p, sizeof p);
+        std::memcpy(defaults, &d, sizeof d);
+        for (size_t w = 1; w < sizeof(pf_sim_params) / 4; ++w)
+            if (words[w] == 0) words[w] = defaults[w];
+        std::memcpy(&p, words, sizeof p);
+    }
+    p.struct_size = uint32_t(sizeof p);
     if (p.pressure_iterations == 0) p.pressure_iterations = d.pressure_iterations;
     if (p.jacobi_omega == 0.0f) p.jacobi_omega = d.jacobi_omega;
     if (p.cfl == 0.0f) p.cfl = d.cfl;
