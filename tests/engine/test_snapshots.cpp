@@ -225,6 +225,23 @@ TEST_F(Snapshots, BadBuffersAreRefusedAndChangeNothing) {
         const std::vector<uint8_t> b = save(other.get());
         cases.push_back({"another grid", b, b.size(), "another grid"});
     }
+    {
+        // Well-formed (checksum recomputed) but impossible: a particle far outside the domain.
+        std::vector<uint8_t> b = good;
+        pf_stats st{};
+        ASSERT_EQ(pf_get_stats(s, &st), PF_OK);
+        // Layout tail: positions, velocities, APIC affine (this scene is APIC), pressure (16^3 cells).
+        const size_t pos_at = b.size() - 16u * 16u * 16u * 4u - size_t(st.particle_count) * (16 + 16 + 48);
+        const float far = 1e9f;
+        std::memcpy(b.data() + pos_at, &far, 4);
+        uint64_t h = 1469598103934665603ull;  // FNV-1a 64 of everything after the 40-byte header
+        for (size_t i = 40; i < b.size(); ++i) {
+            h ^= b[i];
+            h *= 1099511628211ull;
+        }
+        std::memcpy(b.data() + 24, &h, 8);
+        cases.push_back({"a particle outside the domain", b, b.size(), "outside the domain"});
+    }
     for (const Case& c : cases) {
         SCOPED_TRACE(c.what);
         clear_log();
