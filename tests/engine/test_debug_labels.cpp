@@ -239,6 +239,17 @@ TEST_F(DebugLabels, LoaderWithoutKhrDebugRunsUnlabelledAndIdentical) {
     std::string label_with, label_without;
     run(without_debug, without, ms_without, groups_without, label_without);
     run(get_proc, with, ms_with, groups_with, label_with);
+    // What the markers add per dispatch on this GL: one push and one pop (printed, not asserted).
+    {
+        constexpr int kPairs = 20000;
+        const auto t0 = std::chrono::steady_clock::now();
+        for (int i = 0; i < kPairs; ++i) {
+            glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, "pflip/p2g");
+            glPopDebugGroup();
+        }
+        const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
+        std::printf("  one debug group push + pop: %.3f us\n", us / kPairs);
+    }
     EXPECT_TRUE(groups_without.empty()) << groups_without.size() << " groups pushed without the entry points";
     EXPECT_EQ(label_without, "");
     EXPECT_FALSE(groups_with.empty());
