@@ -7,7 +7,7 @@
 #                 the engine's own GLAD: linking both proves they do not clash.
 find_package(Python3 REQUIRED COMPONENTS Interpreter)
 
-set(PF_GLAD_EXTENSIONS "GL_KHR_debug,GL_NV_shader_atomic_float,GL_ARB_gl_spirv")
+set(PF_GLAD_EXTENSIONS "GL_KHR_debug,GL_NV_shader_atomic_float,GL_ARB_gl_spirv,GL_ARB_buffer_storage")
 
 function(pf_generate_glad name out_dir extra_args)
   set(stamp "${out_dir}/stamp.txt")

@@ -11,6 +11,7 @@ packages=(
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri mesa-utils
   libgtest-dev glslang-tools libglm-dev libstb-dev nlohmann-json3-dev libcli11-dev
   libglfw3-dev libimgui-dev xvfb xauth ffmpeg
+  doxygen  # the API reference, built by the docs.doxygen test with warnings as errors
   clang libclang-rt-14-dev  # the libFuzzer stage of scripts/test.sh (scripts/test_fuzz.sh)
 )
 missing=()

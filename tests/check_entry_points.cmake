@@ -1,6 +1,8 @@
 # Fails if library code calls a GL function missing from src/gl/entry_points.inc (then
 # pf_create would not check for it and a loader lacking it would crash).
 file(READ "${SRC}/gl/entry_points.inc" list)
+# Entry points called only after testing their pointer (KHR_debug markers) are listed apart.
+file(READ "${SRC}/gl/entry_points_optional.inc" optional)
 file(GLOB_RECURSE sources "${SRC}/*.cpp" "${SRC}/*.h")
 set(missing "")
 set(calls 0)
@@ -11,7 +13,8 @@ foreach(f IN LISTS sources)
     string(REGEX REPLACE "^gl_?(->|\\.)([A-Za-z0-9_]+)\\($" "\\2" name "${call}")
     math(EXPR calls "${calls} + 1")
     string(FIND "${list}" "PF_GL(${name})" at)
-    if(at EQUAL -1)
+    string(FIND "${optional}" "PF_GL_OPTIONAL(${name})" at_optional)
+    if(at EQUAL -1 AND at_optional EQUAL -1)
       list(APPEND missing "${name} (${f})")
     endif()
   endforeach()

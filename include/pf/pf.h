@@ -1,14 +1,43 @@
 /*
  * pflip — real-time PIC/FLIP liquid simulation on the GPU (OpenGL 4.3 compute).
  *
- * The one public header. Pure C99; every struct may be zero-initialised and then filled,
- * but start from pf_default_*() so new fields get sensible values. Every entry point
- * validates its arguments, returns a pf_result and reports failures through the logger.
+ * The one public header. Pure C99. Start every struct from pf_default_*(), which also sets its
+ * struct_size (the ABI rules below); a zero-initialised struct (struct_size 0) means the
+ * defaults for every field left zero. Every entry point validates its arguments, returns a
+ * pf_result and reports failures through the logger.
+ *
+ * ABI rules (docs/integration.md §7). The structs that may grow (pf_sim_desc, pf_sim_params,
+ * pf_stats, pf_ssf_params, pf_particle_params) start with uint32_t struct_size: sizeof the struct
+ * as the caller compiled it, set by the header-inline pf_default_*() (through pf_init_*()). New
+ * fields are only ever appended, so the library reads the first struct_size bytes a caller
+ * compiled against an older header passes and takes the defaults for the rest, and writes no
+ * more than struct_size bytes of an output struct (struct_size 0 on output: this header's size).
+ * pf_sim_desc.header_version, set to PF_VERSION by pf_default_sim_desc(), lets pf_create refuse a
+ * header of another major.minor version than the library's.
  *
  * GL contract: pflip never creates a GL context. pf_create() loads GL entry points through
  * the engine's get_proc_address and uses the context current at that moment; every later
  * call on the same pf_sim must find that context (or one sharing its objects) current.
  * Each call restores the GL state it touches (program, buffer bindings, query state).
+ */
+/**
+ * @file pf.h
+ * @brief The public C API of pflip (all of it).
+ *
+ * @defgroup pf_lifecycle Lifecycle
+ * @brief Versions, result codes, loggers, descriptors, pf_create / pf_destroy, handles, the
+ *        global logger and the threading rules.
+ *
+ * @defgroup pf_simulation Simulation
+ * @brief Step parameters, particles, stepping, effects (force fields, obstacles),
+ *        asynchronous readback and snapshots.
+ *
+ * @defgroup pf_rendering Rendering
+ * @brief Drawing the liquid into the engine's frame (screen-space fluid, debug particles) and
+ *        the particle buffers for engines that draw them themselves.
+ *
+ * @defgroup pf_stats Statistics
+ * @brief Counters, GPU timings, accuracy metrics, flags and the per-pass statistics list.
  */
 #ifndef PF_PF_H
 #define PF_PF_H
@@ -20,6 +49,9 @@
 extern "C" {
 #endif
 
+/** @def PF_API
+ *  Marks the library's exported functions (dllexport/dllimport on Windows, default visibility
+ *  with GCC and Clang). */
 #if defined(_WIN32) && defined(PF_SHARED)
 #  ifdef PF_BUILDING_LIBRARY
 #    define PF_API __declspec(dllexport)
@@ -36,6 +68,8 @@ extern "C" {
    PF_VERSION_STRING, generated from the CMake project version. */
 #include <pf/pf_version.h>
 
+/** @addtogroup pf_lifecycle
+ *  @{ */
 /** Result codes. Values are stable across versions. */
 typedef enum pf_result {
     PF_OK = 0,                         /**< success */
@@ -46,6 +80,7 @@ typedef enum pf_result {
     PF_ERROR_CAPACITY = 5,             /**< the request would exceed max_particles */
     PF_ERROR_INVALID_STATE = 6,        /**< the call is not valid in the simulation's current state */
     PF_ERROR_GL = 7,                   /**< the GL reported an error during the call */
+    PF_NOT_READY = 8,                  /**< not an error: pf_poll_particles' copy is still in flight */
     PF_RESULT_FORCE32 = 0x7fffffff
 } pf_result;
 
@@ -62,8 +97,8 @@ typedef void (*pf_log_fn)(void* user, pf_log_level level, pf_result code, const 
 
 /** Logger: fn may be NULL (messages are dropped); user is passed back unchanged. */
 typedef struct pf_logger {
-    pf_log_fn fn;
-    void* user;
+    pf_log_fn fn;                 /**< called for each message; NULL drops them */
+    void* user;                   /**< passed back to fn unchanged */
 } pf_logger;
 
 /** Any GL function pointer, as returned by eglGetProcAddress / glfwGetProcAddress. */
@@ -71,6 +106,10 @@ typedef void (*pf_gl_proc)(void);
 /** The engine's GL loader: returns the entry point called name, or NULL. */
 typedef pf_gl_proc (*pf_gl_get_proc_address_fn)(const char* name);
 
+/** @} */
+
+/** @addtogroup pf_simulation
+ *  @{ */
 /** How particles are splatted onto the grid (P2G). */
 typedef enum pf_p2g {
     PF_P2G_FIXED_POINT = 0,  /**< 32-bit fixed-point integer atomics: bit-identical run to run,
@@ -120,10 +159,15 @@ typedef enum pf_advection {
     PF_ADVECTION_FORCE32 = 0x7fffffff
 } pf_advection;
 
-/** Parameters that may change between steps (pf_set_params). Fields marked "0 = default"
- *  take their default when zero; gravity, flip_ratio, separation and volume_correction take zero
- *  literally. */
+/** Parameters that may change between steps (pf_set_params). Start from pf_default_sim_params().
+ *  Fields marked "0 = default" take their default when zero; with struct_size set, gravity,
+ *  flip_ratio, separation and volume_correction take zero literally (with struct_size 0, every
+ *  zero field takes its default). */
 typedef struct pf_sim_params {
+    uint32_t struct_size;         /**< sizeof(pf_sim_params) as the caller compiled it (pf_default_sim_params()
+                                       sets it); 0: a zero-initialised struct, in which every field (each
+                                       element of an array) that is 0 takes its default, gravity, flip_ratio,
+                                       separation and volume_correction included */
     float gravity[3];             /**< body acceleration in m/s^2; default (0, -9.81, 0) */
     float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 (ignored with
                                        PF_TRANSFER_APIC) */
@@ -192,8 +236,18 @@ enum {
                      PF_FEATURE_SINKS | PF_FEATURE_DOMAIN_MOTION /**< every known feature bit */
 };
 
+/** @} */
+
+/** @addtogroup pf_lifecycle
+ *  @{ */
 /** Everything pf_create needs. Start from pf_default_sim_desc(). */
 typedef struct pf_sim_desc {
+    uint32_t struct_size;         /**< sizeof(pf_sim_desc) as the caller compiled it (pf_default_sim_desc()
+                                       sets it); 0: a zero-initialised struct, every zero field takes its
+                                       default (params by the pf_sim_params rule) */
+    uint32_t header_version;      /**< PF_VERSION of the header the caller compiled against (set by
+                                       pf_default_sim_desc()); pf_create refuses another major.minor than
+                                       pf_version()'s. 0: not checked (bindings without the C header) */
     uint32_t grid_size[3];        /**< cells per axis, each 1..1024; default 32^3 */
     float cell_size;              /**< cell edge in metres, 1e-5..1e5; default 0.05 */
     float origin[3];              /**< world position of the grid's minimum corner; the whole domain must lie
@@ -215,6 +269,10 @@ typedef struct pf_sim_desc {
 /** Opaque simulation handle. Several may live in one GL context. */
 typedef struct pf_sim pf_sim;
 
+/** @} */
+
+/** @addtogroup pf_stats
+ *  @{ */
 /** Passes timed and counted by pf_get_stats. */
 typedef enum pf_pass {
     PF_PASS_CLEAR = 0,            /**< zero the grid accumulators */
@@ -268,6 +326,8 @@ enum {
 
 /** Measurements. GPU figures lag a few frames (read without stalling). */
 typedef struct pf_stats {
+    uint32_t struct_size;             /**< in: sizeof(pf_stats) as the caller compiled it (0: this header's);
+                                           out: the bytes pf_get_stats wrote */
     uint32_t particle_count;          /**< live particles; with PF_FEATURE_EMITTERS or PF_FEATURE_SINKS on,
                                            where the GPU decides the count, those at the end of step
                                            metrics_step (read back a few steps late) */
@@ -329,6 +389,10 @@ typedef struct pf_pass_stats {
     uint32_t dispatches;          /**< compute dispatches in the last pf_step (0: did not run) */
 } pf_pass_stats;
 
+/** @} */
+
+/** @addtogroup pf_rendering
+ *  @{ */
 /** The simulation's particle buffers, for engines that draw particles themselves. pf_step
  *  ends with glMemoryBarrier(VERTEX_ATTRIB_ARRAY | SHADER_STORAGE | BUFFER_UPDATE), so
  *  they may be read as vertex attributes, storage buffers or copied right after it. */
@@ -345,6 +409,10 @@ typedef struct pf_gl_buffers {
                                        instanced once per particle); kept current on the GPU */
 } pf_gl_buffers;
 
+/** @} */
+
+/** @addtogroup pf_lifecycle
+ *  @{ */
 /** Library version, PF_VERSION of the build. */
 PF_API uint32_t pf_version(void);
 /** Short English text for a result code; never NULL. */
@@ -352,19 +420,45 @@ PF_API const char* pf_result_string(pf_result result);
 /** Stable short name of a pass ("p2g", "pressure_solve", ...); "unknown" if out of range. */
 PF_API const char* pf_pass_name(pf_pass pass);
 
-/** Default step parameters. */
-PF_API pf_sim_params pf_default_sim_params(void);
-/** The step parameters of a quality preset; PF_ERROR_INVALID_ARGUMENT (out untouched) for an
+/** Writes the default step parameters for a caller whose pf_sim_params is struct_size bytes
+ *  (its struct_size field set to that): the first struct_size bytes only. PF_ERROR_INVALID_ARGUMENT
+ *  for a NULL out or a struct_size below 4 or not a multiple of 4. Any thread. */
+PF_API pf_result pf_init_sim_params(pf_sim_params* out, uint32_t struct_size);
+/** Default step parameters, struct_size set to this header's sizeof. Any thread. */
+static inline pf_sim_params pf_default_sim_params(void) {
+    pf_sim_params p;
+    pf_init_sim_params(&p, (uint32_t)sizeof p);
+    return p;
+}
+/** The step parameters of a quality preset, written as pf_get_params writes (out->struct_size bytes;
+ *  0: this header's); PF_ERROR_INVALID_ARGUMENT (out untouched) for an
  *  unknown quality or a NULL out. */
 PF_API pf_result pf_quality_params(pf_quality quality, pf_sim_params* out);
-/** Default descriptor (32^3 grid of 5 cm cells); the caller still sets gl_get_proc_address. */
-PF_API pf_sim_desc pf_default_sim_desc(void);
+/** Writes the default descriptor for a caller whose pf_sim_desc is struct_size bytes (see
+ *  pf_init_sim_params); header_version is left 0. Any thread. */
+PF_API pf_result pf_init_sim_desc(pf_sim_desc* out, uint32_t struct_size);
+/** Default descriptor (32^3 grid of 5 cm cells), struct_size and header_version set for this header;
+ *  the caller still sets gl_get_proc_address. Any thread. */
+static inline pf_sim_desc pf_default_sim_desc(void) {
+    pf_sim_desc d;
+    pf_init_sim_desc(&d, (uint32_t)sizeof d);
+    d.header_version = PF_VERSION;
+    return d;
+}
 
-/** Create a simulation in the current GL context. *out is set only on PF_OK. */
+/** Create a simulation in the current GL context. *out is set only on PF_OK.
+ *  PF_ERROR_INVALID_ARGUMENT (logged) also for a desc->header_version of another major.minor than
+ *  the library's, or a struct_size that is not 0, at least 8 and a multiple of 4. */
 PF_API pf_result pf_create(const pf_sim_desc* desc, pf_sim** out);
-/** Destroy a simulation and every GL object it made; NULL is ignored. Needs its context current. */
-PF_API void pf_destroy(pf_sim* sim);
+/** Destroy a simulation and every GL object it made. Needs its context current. PF_OK (NULL is
+ *  ignored: PF_OK too); PF_ERROR_INVALID_ARGUMENT, logged through the global logger, for a handle
+ *  already destroyed or not made by pf_create (nothing is read through it). */
+PF_API pf_result pf_destroy(pf_sim* sim);
 
+/** @} */
+
+/** @addtogroup pf_simulation
+ *  @{ */
 /** Append n particles; xyz is 3n floats (world positions inside the domain), vel 3n floats or NULL
  *  (zero). All or nothing: on any error nothing is added. With PF_FEATURE_EMITTERS or
  *  PF_FEATURE_SINKS on (the GPU decides the live count) this and pf_fill_box wait for the GPU. */
@@ -378,7 +472,8 @@ PF_API pf_result pf_clear_particles(pf_sim* sim);
 /** Advance by frame_dt seconds (0 < frame_dt <= 1) in CFL-limited substeps. */
 PF_API pf_result pf_step(pf_sim* sim, float frame_dt);
 
-/** Current step parameters. */
+/** Current step parameters: out->struct_size bytes are written (0: this header's size), and
+ *  out->struct_size is set to the bytes written. */
 PF_API pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out);
 /** Replace the step parameters; validated as in pf_create, nothing changes on error. */
 PF_API pf_result pf_set_params(pf_sim* sim, const pf_sim_params* params);
@@ -392,7 +487,12 @@ PF_API pf_result pf_get_particle_count(pf_sim* sim, uint32_t* out);
 /** The GL buffers holding particles; valid until pf_destroy. Read them, do not resize or delete. */
 PF_API pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out);
 
-/** Counters and per-pass GPU timings (no stall: timings are from the newest finished step). */
+/** @} */
+
+/** @addtogroup pf_stats
+ *  @{ */
+/** Counters and per-pass GPU timings (no stall: timings are from the newest finished step).
+ *  out->struct_size bytes are written (0: this header's size); out->struct_size is set to them. */
 PF_API pf_result pf_get_stats(const pf_sim* sim, pf_stats* out);
 /** Clear the sticky PF_FLAG_* bits. */
 PF_API pf_result pf_clear_flags(pf_sim* sim);
@@ -401,6 +501,82 @@ PF_API pf_result pf_get_pass_count(const pf_sim* sim, uint32_t* out);
 /** Entry `index` (< pf_get_pass_count) of the per-pass statistics list; no stall. */
 PF_API pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_stats* out);
 
+
+/** @} */
+
+/** @addtogroup pf_lifecycle
+ *  @{ */
+/* ---- handles, the global logger and threading (docs/integration.md §5, §6) ----------------- */
+
+/* Handles. A pf_sim* is an id, not a pointer: it names a slot of a process-wide registry of live
+ * simulations and that slot's generation. Every call looks its handle up first, so a destroyed
+ * handle (or any value pf_create did not return) gives PF_ERROR_INVALID_ARGUMENT and a message to
+ * the global logger, never undefined behaviour; a slot reused by a later simulation has a new
+ * generation, so an old handle does not reach it. The registry (and the global logger) is the
+ * library's only global state, guarded by a mutex; each simulation's state is its own.
+ *
+ * Threading. pflip starts no threads. Calls on one simulation must come from the thread on which
+ * its GL context (or one sharing its objects) is current, one at a time: every call taking a
+ * pf_sim*, pf_create and pf_destroy included. Calls on different simulations in different
+ * contexts may run on different threads at once. A call on a handle must not race with
+ * pf_destroy of that handle on another thread. These may be called from any thread at any time:
+ * pf_version, pf_result_string, pf_pass_name, pf_render_pass_name, pf_set_global_logger and the
+ * pf_default_* and pf_quality_params functions. */
+
+/** Sets the logger of messages that belong to no simulation: calls on invalid handles, a NULL
+ *  pf_create descriptor, pf_quality_params errors. NULL removes it (messages are dropped, the
+ *  default). The logger is copied; it may be called from any thread that makes such a call.
+ *  Any thread. */
+PF_API void pf_set_global_logger(const pf_logger* logger);
+
+/** @} */
+
+/** @addtogroup pf_simulation
+ *  @{ */
+/* ---- asynchronous readback (docs/integration.md §2) ------------------------------------------ */
+
+/** Most pf_request_particles requests one simulation holds in flight at once. */
+#define PF_MAX_PARTICLE_REQUESTS 16
+
+/** Starts copying particles [first, first+count) as they are now (after the last pf_step) into a
+ *  buffer of pflip's, on the GPU, without waiting; *out_ticket names the request for
+ *  pf_poll_particles. The copy is fenced and flushed; with GL 4.4 / ARB_buffer_storage its buffer
+ *  is persistently mapped. Later steps do not change what a request returns.
+ *  PF_ERROR_INVALID_ARGUMENT for a NULL out_ticket or a range beyond the live particles (with
+ *  PF_FEATURE_EMITTERS or PF_FEATURE_SINKS on, beyond pf_gl_buffers.count, the upper bound the
+ *  host knows without waiting: entries past the GPU's live count are then not particles);
+ *  PF_ERROR_CAPACITY when PF_MAX_PARTICLE_REQUESTS are in flight. Nothing changes on error. */
+PF_API pf_result pf_request_particles(pf_sim* sim, uint32_t first, uint32_t count, uint32_t* out_ticket);
+/** Collects a request without ever waiting: PF_NOT_READY (nothing written) while the GPU has not
+ *  finished the copy; PF_OK once it has: 3 floats per particle written to xyz and vel (either may
+ *  be NULL, both NULL discards the data) and the ticket released. PF_ERROR_INVALID_ARGUMENT (logged)
+ *  for a ticket not in flight: never issued, already collected, or another simulation's. */
+PF_API pf_result pf_poll_particles(pf_sim* sim, uint32_t ticket, float* xyz, float* vel);
+
+/* ---- snapshots (docs/integration.md §2) ---------------------------------------------------- */
+
+/* A snapshot holds everything that determines a simulation's next steps: its particles
+ * (positions, velocities, APIC affine vectors), parameters, features, the effects' objects with
+ * their ids, the pressure the next solve starts from, and the step logic's own state (CFL speed
+ * estimate, fixed-point P2G range, solver history). Restoring it into the simulation that saved it,
+ * or one created with the same grid_size, cell_size, origin, max_speed, density and
+ * fill_particles_per_cell, continues bit for bit as the original did from the save (with fixed-point
+ * P2G, the default; the substep counts must match too, which they do when each frame's GPU work
+ * finishes before the next pf_step, as when the engine waits for vsync). Snapshots are for the same
+ * build on the same machine: they carry a magic, a format number, their size and a checksum, and
+ * anything else is refused. pf_stats.steps is not restored (it counts pf_step calls). */
+
+/** Bytes pf_save_snapshot needs now (it changes with the particle count, APIC, the effects'
+ *  objects). PF_ERROR_INVALID_ARGUMENT for a NULL out. */
+PF_API pf_result pf_snapshot_size(const pf_sim* sim, size_t* out);
+/** Writes the snapshot (pf_snapshot_size bytes) to buffer; waits for the GPU (a checkpoint, not a
+ *  per-frame call). PF_ERROR_INVALID_ARGUMENT for a NULL buffer or a size below pf_snapshot_size. */
+PF_API pf_result pf_save_snapshot(pf_sim* sim, void* buffer, size_t size);
+/** Replaces the simulation's state by a snapshot's. PF_ERROR_INVALID_ARGUMENT, logged, for a NULL
+ *  buffer, a buffer shorter than the snapshot it starts, a wrong magic, format or checksum (a
+ *  corrupted buffer), or a snapshot of a simulation with another grid (see above) or with more
+ *  particles than max_particles; on any error nothing changes. */
+PF_API pf_result pf_restore_snapshot(pf_sim* sim, const void* buffer, size_t size);
 
 /* ---- effects (docs/design.md §9) --------------------------------------------------------------- */
 
@@ -440,7 +616,7 @@ typedef enum pf_force_field_type {
 
 /** One force field. Start from pf_default_force_field(). */
 typedef struct pf_force_field {
-    pf_force_field_type type;
+    pf_force_field_type type;     /**< which kind of field (the fields below it uses) */
     float position[3];            /**< POINT: the centre; VORTEX: a point on the axis (world m) */
     float vector[3];              /**< DIRECTIONAL: acceleration (m/s^2) or, with drag > 0, the wind velocity
                                        (m/s); VORTEX: the axis direction (non-zero, normalised internally) */
@@ -479,7 +655,7 @@ typedef enum pf_obstacle_shape {
  *  is driven by the engine: pf_set_obstacle each frame with its pose and velocities. Start from
  *  pf_default_obstacle(). */
 typedef struct pf_obstacle {
-    pf_obstacle_shape shape;
+    pf_obstacle_shape shape;      /**< which shape (the size fields below it uses) */
     float position[3];            /**< centre, world m */
     float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
                                        (0, 0, 0, 0) means the identity */
@@ -544,7 +720,7 @@ typedef enum pf_rate_unit {
  *  the GPU after the live ones, without any readback; when max_particles is reached emission
  *  stops there and PF_FLAG_EMITTERS_FULL is raised. Start from pf_default_emitter(). */
 typedef struct pf_emitter {
-    pf_emitter_shape shape;
+    pf_emitter_shape shape;       /**< box, sphere or disc */
     float position[3];            /**< centre, world m; the whole shape must lie inside the domain */
     float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
                                        (0, 0, 0, 0) means the identity */
@@ -552,7 +728,7 @@ typedef struct pf_emitter {
     float radius;                 /**< SPHERE, DISC: radius in m, > 0 */
     float velocity[3];            /**< of the new particles, m/s; |velocity| <= desc.max_speed */
     float rate;                   /**< >= 0 (0 pauses the emitter), in rate_unit */
-    pf_rate_unit rate_unit;
+    pf_rate_unit rate_unit;       /**< particles or m^3 per second */
 } pf_emitter;
 
 /** Default emitter: a sphere of radius 0.1 m at the origin emitting nothing (rate 0) at rest. */
@@ -582,7 +758,7 @@ typedef enum pf_sink_shape {
  *  duplicated). It may reach outside the domain (a drain cut by the floor). Start from
  *  pf_default_sink(). */
 typedef struct pf_sink {
-    pf_sink_shape shape;
+    pf_sink_shape shape;          /**< box or sphere */
     float position[3];            /**< centre, world m; the shape must overlap the domain */
     float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
                                        (0, 0, 0, 0) means the identity */
@@ -626,6 +802,10 @@ PF_API pf_result pf_set_domain_motion(pf_sim* sim, const pf_domain_motion* motio
 /** The domain motion last set (pf_default_domain_motion() if never). */
 PF_API pf_result pf_get_domain_motion(const pf_sim* sim, pf_domain_motion* out);
 
+/** @} */
+
+/** @addtogroup pf_rendering
+ *  @{ */
 /* ---- rendering into the engine's frame ----------------------------------------------------- */
 
 /** How the engine maps depth: the projection matrix plus the clip-space depth range. */
@@ -643,7 +823,7 @@ typedef struct pf_camera {
     int32_t viewport[4];         /**< x, y, width, height in target pixels (width, height 1..16384) */
     float near_plane;            /**< eye distance of the near plane, > 0; nothing nearer is drawn */
     float far_plane;             /**< eye distance of the far plane, > near_plane; nothing farther is drawn */
-    pf_depth_convention depth_convention;
+    pf_depth_convention depth_convention; /**< how proj maps depth */
 } pf_camera;
 
 /** Where pflip draws, and the engine's scene it draws over. All objects stay the engine's:
@@ -676,8 +856,10 @@ typedef enum pf_ssf_path {
 
 /** Look and quality of pf_render_ssf. Start from pf_default_ssf_params(). */
 typedef struct pf_ssf_params {
+    uint32_t struct_size;        /**< sizeof(pf_ssf_params) as the caller compiled it (pf_default_ssf_params()
+                                      sets it); 0: every zero field takes its default */
     float particle_radius;       /**< sphere radius in metres, > 0; 0 = default (0.5 cell size) */
-    pf_ssf_filter filter;
+    pf_ssf_filter filter;        /**< depth smoothing filter */
     uint32_t filter_radius;      /**< filter half-width in pixels, 1..64; 0 = default 8 */
     uint32_t filter_iterations;  /**< filter applications, 1..16; 0 = default 1 (bilateral) / 2 (narrow range) */
     float filter_depth_range;    /**< depth difference in metres treated as the same surface, > 0;
@@ -688,7 +870,7 @@ typedef struct pf_ssf_params {
     float specular;              /**< strength of the sun highlight, >= 0 */
     float shininess;             /**< Blinn-Phong exponent of the highlight, 1..10000 */
     float light_direction[3];    /**< world direction towards the sun (normalised internally), non-zero */
-    pf_ssf_path path;
+    pf_ssf_path path;            /**< compute or raster path (same image) */
 } pf_ssf_params;
 
 /** What colours the debug sprites of pf_render_particles. */
@@ -704,17 +886,33 @@ typedef enum pf_particle_color {
 
 /** Debug particle view. Start from pf_default_particle_params(). */
 typedef struct pf_particle_params {
+    uint32_t struct_size;        /**< sizeof(pf_particle_params) as the caller compiled it
+                                      (pf_default_particle_params() sets it); 0: every zero field takes its
+                                      default */
     float particle_radius;       /**< sprite radius in metres; 0 = default (0.5 cell size) */
-    pf_particle_color color_by;
+    pf_particle_color color_by;  /**< what the colour shows */
     float range[2];              /**< value mapped to color_low .. color_high (range[0] != range[1]) */
     float color_low[3];          /**< RGB at range[0] */
     float color_high[3];         /**< RGB at range[1] */
 } pf_particle_params;
 
-/** Default liquid look: clear water, bilateral filter, compute path. */
-PF_API pf_ssf_params pf_default_ssf_params(void);
-/** Default debug view: coloured by speed 0..3 m/s, blue to white. */
-PF_API pf_particle_params pf_default_particle_params(void);
+/** Writes the default liquid look for a caller whose pf_ssf_params is struct_size bytes (see
+ *  pf_init_sim_params). Any thread. */
+PF_API pf_result pf_init_ssf_params(pf_ssf_params* out, uint32_t struct_size);
+/** Writes the default debug view for a caller whose pf_particle_params is struct_size bytes. Any thread. */
+PF_API pf_result pf_init_particle_params(pf_particle_params* out, uint32_t struct_size);
+/** Default liquid look: clear water, bilateral filter, compute path. Any thread. */
+static inline pf_ssf_params pf_default_ssf_params(void) {
+    pf_ssf_params p;
+    pf_init_ssf_params(&p, (uint32_t)sizeof p);
+    return p;
+}
+/** Default debug view: coloured by speed 0..3 m/s, blue to white. Any thread. */
+static inline pf_particle_params pf_default_particle_params(void) {
+    pf_particle_params p;
+    pf_init_particle_params(&p, (uint32_t)sizeof p);
+    return p;
+}
 /** Stable short name of a render pass ("thickness", "smooth", ...); "unknown" if out of range. */
 PF_API const char* pf_render_pass_name(pf_render_pass pass);
 
@@ -728,11 +926,17 @@ PF_API pf_result pf_render_ssf(pf_sim* sim, const pf_camera* camera, const pf_re
 PF_API pf_result pf_render_particles(pf_sim* sim, const pf_camera* camera, const pf_render_target* target,
                                      const pf_particle_params* params);
 
+/** @} */
+
+/** @addtogroup pf_simulation
+ *  @{ */
 /* ---- interaction ---------------------------------------------------------------------------- */
 
 /** Adds velocity dv (m/s) to the particles within radius of center, falling off smoothly to 0 at
  *  the rim (splashes, a hand in the water). Takes effect at once on the GPU; speeds stay <= max_speed. */
 PF_API pf_result pf_push(pf_sim* sim, const float center[3], float radius, const float dv[3]);
+
+/** @} */
 
 #ifdef __cplusplus
 }

@@ -19,6 +19,7 @@ class Result(enum.IntEnum):
     ERROR_CAPACITY = 5
     ERROR_INVALID_STATE = 6
     ERROR_GL = 7
+    NOT_READY = 8
 
 
 class LogLevel(enum.IntEnum):
@@ -140,6 +141,7 @@ MAX_FORCE_FIELDS = 16
 MAX_OBSTACLES = 16
 MAX_EMITTERS = 16
 MAX_SINKS = 16
+MAX_PARTICLE_REQUESTS = 16  # pf_request_particles in flight per simulation
 
 
 class DepthConvention(enum.IntEnum):
@@ -202,7 +204,9 @@ class SimParams(_Struct):
     @classmethod
     def default(cls):
         """pf_default_sim_params()."""
-        return _lib().pf_default_sim_params()
+        out = cls()
+        _lib().pf_init_sim_params(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     @classmethod
     def quality(cls, quality):
@@ -215,6 +219,7 @@ class SimParams(_Struct):
         return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("gravity", ctypes.c_float * 3),
         ("flip_ratio", ctypes.c_float),
         ("pressure_iterations", ctypes.c_uint32),
@@ -242,9 +247,13 @@ class SimDesc(_Struct):
     @classmethod
     def default(cls):
         """pf_default_sim_desc()."""
-        return _lib().pf_default_sim_desc()
+        out = cls()
+        _lib().pf_init_sim_desc(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("header_version", ctypes.c_uint32),  # 0: not checked (no C header here)
         ("grid_size", ctypes.c_uint32 * 3),
         ("cell_size", ctypes.c_float),
         ("origin", ctypes.c_float * 3),
@@ -264,6 +273,7 @@ class SimDesc(_Struct):
 class Stats(_Struct):
     """pf_stats."""
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("particle_count", ctypes.c_uint32),
         ("max_particles", ctypes.c_uint32),
         ("steps", ctypes.c_uint64),
@@ -344,9 +354,12 @@ class SsfParams(_Struct):
     @classmethod
     def default(cls):
         """pf_default_ssf_params()."""
-        return _lib().pf_default_ssf_params()
+        out = cls()
+        _lib().pf_init_ssf_params(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("particle_radius", ctypes.c_float),
         ("filter", c_enum),
         ("filter_radius", ctypes.c_uint32),
@@ -368,9 +381,12 @@ class ParticleParams(_Struct):
     @classmethod
     def default(cls):
         """pf_default_particle_params()."""
-        return _lib().pf_default_particle_params()
+        out = cls()
+        _lib().pf_init_particle_params(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("particle_radius", ctypes.c_float),
         ("color_by", c_enum),
         ("range", ctypes.c_float * 2),
@@ -522,4 +538,5 @@ C_ENUMS = {
 }
 C_CONSTANTS = {"PF_PASS_COUNT": PASS_COUNT, "PF_RENDER_PASS_COUNT": RENDER_PASS_COUNT,
                "PF_MAX_FORCE_FIELDS": MAX_FORCE_FIELDS, "PF_MAX_OBSTACLES": MAX_OBSTACLES,
-               "PF_MAX_EMITTERS": MAX_EMITTERS, "PF_MAX_SINKS": MAX_SINKS}
+               "PF_MAX_EMITTERS": MAX_EMITTERS, "PF_MAX_SINKS": MAX_SINKS,
+               "PF_MAX_PARTICLE_REQUESTS": MAX_PARTICLE_REQUESTS}

@@ -21,6 +21,13 @@ _PY_LEVEL = {t.LogLevel.ERROR: logging.ERROR, t.LogLevel.WARNING: logging.WARNIN
 # holds their address, so they must never be freed.
 _orphaned_callbacks = []
 
+class Snapshot(bytes):
+    """The bytes of pf_save_snapshot, with the force fields and obstacles as Simulation lists them."""
+
+    force_fields = {}
+    obstacles = {}
+
+
 PassStats = collections.namedtuple("PassStats", "name group gpu_ms dispatches")
 PassStats.__doc__ = "One entry of pf_get_pass_stats: name, group (a Pass), gpu_ms, dispatches."
 
@@ -125,6 +132,7 @@ class Simulation:
         self._obstacles = {}     # id -> Obstacle
         self._emitters = {}      # id -> Emitter
         self._sinks = {}         # id -> Sink
+        self._requests = {}      # ticket -> particle count of pf_request_particles in flight
         handle = ctypes.c_void_p()
         self._check("pf_create", lib.pf_create(ctypes.byref(d), ctypes.byref(handle)))
         self._handle = handle
@@ -209,6 +217,55 @@ class Simulation:
         vel = np.empty((count, 3), np.float32) if velocities else None
         self._call("pf_read_particles", ctypes.c_uint32(first), ctypes.c_uint32(count), _ptr(xyz), _ptr(vel))
         return xyz, vel
+
+    def request_particles(self, first=0, count=None):
+        """pf_request_particles: starts a fenced copy of particles [first, first + count) as they
+        are now and returns its ticket at once (count defaults to every live particle from first)."""
+        if count is None:
+            count = max(self.particle_count - first, 0)
+        ticket = ctypes.c_uint32()
+        self._call("pf_request_particles", ctypes.c_uint32(first), ctypes.c_uint32(count), ctypes.byref(ticket))
+        self._requests[ticket.value] = count
+        return ticket.value
+
+    def poll_particles(self, ticket, positions=True, velocities=True):
+        """pf_poll_particles, never waiting: None while the copy is in flight, else (positions,
+        velocities) as in read_particles, and the ticket is released."""
+        if ticket not in self._requests:
+            raise PflipError("pf_poll_particles", t.Result.ERROR_INVALID_ARGUMENT, f"ticket {ticket} is not in flight")
+        count = self._requests[ticket]
+        xyz = np.empty((count, 3), np.float32) if positions else None
+        vel = np.empty((count, 3), np.float32) if velocities else None
+        if self._handle is None:
+            raise PflipError("pf_poll_particles", t.Result.ERROR_INVALID_STATE, "the simulation is closed")
+        self._errors = []
+        code = lib.pf_poll_particles(self._handle, ctypes.c_uint32(ticket), _ptr(xyz), _ptr(vel))
+        if code == t.Result.NOT_READY:
+            return None
+        self._check("pf_poll_particles", code)
+        del self._requests[ticket]
+        return xyz, vel
+
+    def save_snapshot(self):
+        """pf_save_snapshot: everything that determines the next steps, as bytes (waits for the GPU)."""
+        size = ctypes.c_size_t()
+        self._call("pf_snapshot_size", ctypes.byref(size))
+        buf = ctypes.create_string_buffer(size.value)
+        self._call("pf_save_snapshot", buf, ctypes.c_size_t(size.value))
+        snap = Snapshot(buf.raw)
+        snap.force_fields = dict(self._force_fields)  # the Python-side mirrors of the object lists
+        snap.obstacles = dict(self._obstacles)
+        return snap
+
+    def restore_snapshot(self, data):
+        """pf_restore_snapshot: back to the state save_snapshot returned; a damaged or foreign
+        snapshot raises PflipError and changes nothing."""
+        raw = bytes(data)
+        buf = ctypes.create_string_buffer(raw, len(raw))
+        self._call("pf_restore_snapshot", buf, ctypes.c_size_t(len(raw)))
+        if isinstance(data, Snapshot):  # plain bytes leave the force_fields / obstacles mirrors as they are
+            self._force_fields = dict(data.force_fields)
+            self._obstacles = dict(data.obstacles)
 
     @property
     def particle_count(self):

@@ -1,6 +1,9 @@
-// The opaque pf_sim handle: a liveness tag, the simulation and its renderer (made by the first
-// render call). Internal; tests include it to reach pf::Simulation behind a handle made by
-// pf_create.
+// The pf_sim handles: generation-checked ids kept in a process-wide registry (the one global
+// state of the library besides the global logger, both guarded by one mutex). A handle is not a
+// pointer: it encodes a registry slot and that slot's generation, so a destroyed handle, a
+// handle from another slot's earlier life or any stray value is recognised without reading
+// freed memory. Internal; tests include it to reach pf::Simulation behind a handle made by
+// pf_create (pf::entry).
 #pragma once
 #include <cstdint>
 #include <exception>
@@ -12,20 +15,39 @@
 #include "sim/simulation.h"
 
 namespace pf {
-constexpr uint32_t kLiveMagic = 0x70666c69u;  // "pfli": catches NULL-ish and destroyed handles
-}
 
-struct pf_sim {
-    uint32_t magic = pf::kLiveMagic;
-    std::unique_ptr<pf::Simulation> impl;
+// What a live handle names: the simulation and its renderer (made by the first render call).
+struct SimEntry {
+    std::unique_ptr<Simulation> impl;
     // Declared after impl so it is destroyed first: it uses the simulation's GL loader.
-    std::unique_ptr<pf::Renderer> renderer;
+    std::unique_ptr<Renderer> renderer;
 };
 
-namespace pf {
+// Registers `entry` and returns its new handle (never NULL).
+pf_sim* register_sim(std::unique_ptr<SimEntry> entry);
+// The entry a live handle names, nullptr for NULL, destroyed or unknown handles. The entry
+// stays valid until the handle is unregistered (pf_destroy, on the simulation's own thread).
+SimEntry* entry(const pf_sim* handle);
+template <typename Deleter>
+SimEntry* entry(const std::unique_ptr<pf_sim, Deleter>& handle) {
+    return entry(handle.get());
+}
+// Removes a live handle and hands back its entry (nullptr if the handle was not live).
+std::unique_ptr<SimEntry> unregister_sim(const pf_sim* handle);
+// Live handles (tests).
+uint32_t live_sim_count();
 
-// A handle made by pf_create and not yet destroyed (as far as can be told).
-inline bool live(const pf_sim* sim) { return sim && sim->magic == kLiveMagic && sim->impl; }
+// The logger of pf_set_global_logger (copied under the registry's lock).
+pf_logger global_logger();
+void set_global_logger(const pf_logger* logger);
+// Logs through the global logger and returns `code`.
+pf_result global_error(pf_result code, const std::string& message);
+// PF_ERROR_INVALID_ARGUMENT for a call `fn` on a handle that is NULL or not live (logged globally).
+inline pf_result invalid_handle(const pf_sim* handle, const char* fn) {
+    return global_error(PF_ERROR_INVALID_ARGUMENT,
+                        std::string(fn) + (handle ? ": invalid pf_sim (destroyed, or not made by pf_create)"
+                                                  : ": sim must not be NULL"));
+}
 
 // Runs an entry point's body so that no exception crosses the C boundary.
 template <typename Fn>

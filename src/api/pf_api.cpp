@@ -5,20 +5,19 @@
 #include <new>
 #include <string>
 
+#include "api/abi.h"
 #include "api/handle.h"
 #include "api/validate.h"
 #include "pf/pf.h"
 
 namespace {
-const pf::Log kSilent{};
-
 using pf::guarded;
-using pf::live;
 
-#define PF_CHECK_SIM(sim, fn)                                                                  \
-    do {                                                                                       \
-        if (!live(sim)) return kSilent.error(PF_ERROR_INVALID_ARGUMENT, fn ": invalid pf_sim"); \
-    } while (0)
+// The entry a live handle names, as `var`; otherwise the call returns PF_ERROR_INVALID_ARGUMENT
+// after logging through the global logger (a dead handle has no simulation, hence no logger).
+#define PF_ENTRY(var, handle, fn)                     \
+    pf::SimEntry* const var = pf::entry(handle);      \
+    if (!var) return pf::invalid_handle(handle, fn)
 }  // namespace
 
 extern "C" {
@@ -35,6 +34,7 @@ const char* pf_result_string(pf_result r) {
         case PF_ERROR_CAPACITY: return "capacity exceeded";
         case PF_ERROR_INVALID_STATE: return "invalid state";
         case PF_ERROR_GL: return "OpenGL error";
+        case PF_NOT_READY: return "not ready";
         default: return "unknown result";
     }
 }
@@ -47,8 +47,10 @@ const char* pf_pass_name(pf_pass pass) {
     return (pass >= 0 && pass < PF_PASS_COUNT) ? kNames[pass] : "unknown";
 }
 
-pf_sim_params pf_default_sim_params(void) {
+namespace {
+pf_sim_params full_default_params() {
     pf_sim_params p{};
+    p.struct_size = uint32_t(sizeof p);
     p.gravity[1] = -9.81f;
     p.flip_ratio = 0.95f;
     p.pressure_iterations = 40;
@@ -66,11 +68,39 @@ pf_sim_params pf_default_sim_params(void) {
     return p;
 }
 
+pf_sim_desc full_default_desc() {
+    pf_sim_desc d{};
+    d.struct_size = uint32_t(sizeof d);
+    d.grid_size[0] = d.grid_size[1] = d.grid_size[2] = 32;
+    d.cell_size = 0.05f;
+    d.max_particles = 262144;
+    d.max_speed = 100.0f;
+    d.density = 1000.0f;
+    d.fill_particles_per_cell = 8;
+    d.fill_jitter = 0.8f;
+    d.seed = 1;
+    d.params = full_default_params();
+    return d;
+}
+}  // namespace
+
+pf_result pf_init_sim_params(pf_sim_params* out, uint32_t struct_size) {
+    return pf::init_struct(out, struct_size, full_default_params(), "pf_init_sim_params");
+}
+
+pf_result pf_init_sim_desc(pf_sim_desc* out, uint32_t struct_size) {
+    // Written as this build's layout, truncated: right for every caller while pf_sim_params has
+    // not grown since struct_size was introduced (only fields after params can be missing). When
+    // it grows, an older caller's params end earlier and its tail must be written where read_desc
+    // reads it (after the caller's params).
+    return pf::init_struct(out, struct_size, full_default_desc(), "pf_init_sim_desc");
+}
+
 pf_result pf_quality_params(pf_quality quality, pf_sim_params* out) {
     if (!out || pf::enum_bits(quality) >= PF_QUALITY_COUNT) {
-        return kSilent.error(PF_ERROR_INVALID_ARGUMENT, "pf_quality_params: unknown quality or NULL out");
+        return pf::global_error(PF_ERROR_INVALID_ARGUMENT, "pf_quality_params: unknown quality or NULL out");
     }
-    pf_sim_params p = pf_default_sim_params();
+    pf_sim_params p = full_default_params();
     switch (quality) {
         case PF_QUALITY_FAST: break;  // the defaults are the original's scheme
         case PF_QUALITY_BALANCED:  // converged pressure; separation's active-set rounds cost 3-5x: off
@@ -85,48 +115,39 @@ pf_result pf_quality_params(pf_quality quality, pf_sim_params* out) {
             break;
         default: break;
     }
-    *out = p;
-    return PF_OK;
-}
-
-pf_sim_desc pf_default_sim_desc(void) {
-    pf_sim_desc d{};
-    d.grid_size[0] = d.grid_size[1] = d.grid_size[2] = 32;
-    d.cell_size = 0.05f;
-    d.max_particles = 262144;
-    d.max_speed = 100.0f;
-    d.density = 1000.0f;
-    d.fill_particles_per_cell = 8;
-    d.fill_jitter = 0.8f;
-    d.seed = 1;
-    d.params = pf_default_sim_params();
-    return d;
+    return pf::write_output(out, p, pf::Log(pf::global_logger()), "pf_quality_params");
 }
 
 pf_result pf_create(const pf_sim_desc* desc, pf_sim** out) {
-    if (!desc || !out) {
-        const pf::Log log = desc ? pf::Log(desc->logger) : kSilent;
-        return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
-    }
-    const pf::Log log(desc->logger);
+    if (!desc) return pf::global_error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
+    // The caller's layout is known only after struct_size: its logger is read with the rest.
+    pf_sim_desc read{};
+    if (pf_result r = pf::read_desc(desc, read, pf::Log(pf::global_logger())); r != PF_OK) return r;
+    const pf::Log log(read.logger);
+    if (!out) return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_create: desc and out must not be NULL");
+    if (pf_result r = pf::check_header_version(read.header_version, log); r != PF_OK) return r;
     return guarded(log, "pf_create", [&] {
-        const pf_sim_desc resolved = pf::resolve_desc(*desc);
+        const pf_sim_desc resolved = pf::resolve_desc(read);
         if (pf_result r = pf::validate_desc(resolved, log); r != PF_OK) return r;
-        auto sim = std::make_unique<pf_sim>();
-        if (pf_result r = pf::Simulation::create(resolved, sim->impl); r != PF_OK) return r;
-        *out = sim.release();
+        auto entry = std::make_unique<pf::SimEntry>();
+        if (pf_result r = pf::Simulation::create(resolved, entry->impl); r != PF_OK) return r;
+        *out = pf::register_sim(std::move(entry));
         return PF_OK;
     });
 }
 
-void pf_destroy(pf_sim* sim) {
-    if (!live(sim)) return;
-    sim->magic = 0;
-    delete sim;
+pf_result pf_destroy(pf_sim* handle) {
+    if (!handle) return PF_OK;
+    std::unique_ptr<pf::SimEntry> entry = pf::unregister_sim(handle);
+    if (!entry) return pf::invalid_handle(handle, "pf_destroy");
+    entry.reset();  // deletes its GL objects: the context must be current
+    return PF_OK;
 }
 
-pf_result pf_add_particles(pf_sim* sim, const float* xyz, const float* vel, uint32_t n) {
-    PF_CHECK_SIM(sim, "pf_add_particles");
+void pf_set_global_logger(const pf_logger* logger) { pf::set_global_logger(logger); }
+
+pf_result pf_add_particles(pf_sim* handle, const float* xyz, const float* vel, uint32_t n) {
+    PF_ENTRY(sim, handle, "pf_add_particles");
     pf::Simulation& s = *sim->impl;
     return guarded(s.log(), "pf_add_particles", [&] {
         if (n == 0) return PF_OK;
@@ -142,8 +163,8 @@ pf_result pf_add_particles(pf_sim* sim, const float* xyz, const float* vel, uint
     });
 }
 
-pf_result pf_fill_box(pf_sim* sim, const float lo[3], const float hi[3], const float vel[3]) {
-    PF_CHECK_SIM(sim, "pf_fill_box");
+pf_result pf_fill_box(pf_sim* handle, const float lo[3], const float hi[3], const float vel[3]) {
+    PF_ENTRY(sim, handle, "pf_fill_box");
     pf::Simulation& s = *sim->impl;
     return guarded(s.log(), "pf_fill_box", [&] {
         if (!lo || !hi) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_fill_box: lo and hi must not be NULL");
@@ -157,13 +178,13 @@ pf_result pf_fill_box(pf_sim* sim, const float lo[3], const float hi[3], const f
     });
 }
 
-pf_result pf_clear_particles(pf_sim* sim) {
-    PF_CHECK_SIM(sim, "pf_clear_particles");
+pf_result pf_clear_particles(pf_sim* handle) {
+    PF_ENTRY(sim, handle, "pf_clear_particles");
     return sim->impl->clear_particles();
 }
 
-pf_result pf_step(pf_sim* sim, float frame_dt) {
-    PF_CHECK_SIM(sim, "pf_step");
+pf_result pf_step(pf_sim* handle, float frame_dt) {
+    PF_ENTRY(sim, handle, "pf_step");
     pf::Simulation& s = *sim->impl;
     if (!(std::isfinite(frame_dt) && frame_dt > 0.0f && frame_dt <= 1.0f)) {
         return s.log().error(PF_ERROR_INVALID_ARGUMENT,
@@ -172,8 +193,8 @@ pf_result pf_step(pf_sim* sim, float frame_dt) {
     return guarded(s.log(), "pf_step", [&] { return s.step(frame_dt); });
 }
 
-pf_result pf_push(pf_sim* sim, const float center[3], float radius, const float dv[3]) {
-    PF_CHECK_SIM(sim, "pf_push");
+pf_result pf_push(pf_sim* handle, const float center[3], float radius, const float dv[3]) {
+    PF_ENTRY(sim, handle, "pf_push");
     pf::Simulation& s = *sim->impl;
     if (!center || !dv) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_push: center and dv must not be NULL");
     for (int a = 0; a < 3; ++a) {
@@ -185,15 +206,15 @@ pf_result pf_push(pf_sim* sim, const float center[3], float radius, const float 
     return guarded(s.log(), "pf_push", [&] { return s.push(center, radius, dv); });
 }
 
-pf_result pf_set_features(pf_sim* sim, uint32_t features) {
-    PF_CHECK_SIM(sim, "pf_set_features");
+pf_result pf_set_features(pf_sim* handle, uint32_t features) {
+    PF_ENTRY(sim, handle, "pf_set_features");
     pf::Simulation& s = *sim->impl;
     if (pf_result r = pf::validate_features(features, s.log(), "pf_set_features"); r != PF_OK) return r;
     return guarded(s.log(), "pf_set_features", [&] { return s.set_features(features, "pf_set_features"); });
 }
 
-pf_result pf_get_features(const pf_sim* sim, uint32_t* out) {
-    PF_CHECK_SIM(sim, "pf_get_features");
+pf_result pf_get_features(const pf_sim* handle, uint32_t* out) {
+    PF_ENTRY(sim, handle, "pf_get_features");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_features: out must not be NULL");
     *out = sim->impl->features();
     return PF_OK;
@@ -216,46 +237,46 @@ pf_obstacle pf_default_obstacle(void) {
     return o;
 }
 
-pf_result pf_add_force_field(pf_sim* sim, const pf_force_field* field, uint32_t* out_id) {
-    PF_CHECK_SIM(sim, "pf_add_force_field");
+pf_result pf_add_force_field(pf_sim* handle, const pf_force_field* field, uint32_t* out_id) {
+    PF_ENTRY(sim, handle, "pf_add_force_field");
     pf::Simulation& s = *sim->impl;
     if (!field) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_force_field: field must not be NULL");
     if (pf_result r = pf::validate_force_field(*field, s.log(), "pf_add_force_field"); r != PF_OK) return r;
     return guarded(s.log(), "pf_add_force_field", [&] { return s.add_force_field(*field, out_id); });
 }
 
-pf_result pf_set_force_field(pf_sim* sim, uint32_t id, const pf_force_field* field) {
-    PF_CHECK_SIM(sim, "pf_set_force_field");
+pf_result pf_set_force_field(pf_sim* handle, uint32_t id, const pf_force_field* field) {
+    PF_ENTRY(sim, handle, "pf_set_force_field");
     pf::Simulation& s = *sim->impl;
     if (!field) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_force_field: field must not be NULL");
     if (pf_result r = pf::validate_force_field(*field, s.log(), "pf_set_force_field"); r != PF_OK) return r;
     return guarded(s.log(), "pf_set_force_field", [&] { return s.set_force_field(id, *field); });
 }
 
-pf_result pf_remove_force_field(pf_sim* sim, uint32_t id) {
-    PF_CHECK_SIM(sim, "pf_remove_force_field");
+pf_result pf_remove_force_field(pf_sim* handle, uint32_t id) {
+    PF_ENTRY(sim, handle, "pf_remove_force_field");
     pf::Simulation& s = *sim->impl;
     return guarded(s.log(), "pf_remove_force_field", [&] { return s.remove_force_field(id); });
 }
 
-pf_result pf_add_obstacle(pf_sim* sim, const pf_obstacle* obstacle, uint32_t* out_id) {
-    PF_CHECK_SIM(sim, "pf_add_obstacle");
+pf_result pf_add_obstacle(pf_sim* handle, const pf_obstacle* obstacle, uint32_t* out_id) {
+    PF_ENTRY(sim, handle, "pf_add_obstacle");
     pf::Simulation& s = *sim->impl;
     if (!obstacle) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_obstacle: obstacle must not be NULL");
     if (pf_result r = pf::validate_obstacle(*obstacle, s.log(), "pf_add_obstacle"); r != PF_OK) return r;
     return guarded(s.log(), "pf_add_obstacle", [&] { return s.add_obstacle(*obstacle, out_id); });
 }
 
-pf_result pf_set_obstacle(pf_sim* sim, uint32_t id, const pf_obstacle* obstacle) {
-    PF_CHECK_SIM(sim, "pf_set_obstacle");
+pf_result pf_set_obstacle(pf_sim* handle, uint32_t id, const pf_obstacle* obstacle) {
+    PF_ENTRY(sim, handle, "pf_set_obstacle");
     pf::Simulation& s = *sim->impl;
     if (!obstacle) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_obstacle: obstacle must not be NULL");
     if (pf_result r = pf::validate_obstacle(*obstacle, s.log(), "pf_set_obstacle"); r != PF_OK) return r;
     return guarded(s.log(), "pf_set_obstacle", [&] { return s.set_obstacle(id, *obstacle); });
 }
 
-pf_result pf_remove_obstacle(pf_sim* sim, uint32_t id) {
-    PF_CHECK_SIM(sim, "pf_remove_obstacle");
+pf_result pf_remove_obstacle(pf_sim* handle, uint32_t id) {
+    PF_ENTRY(sim, handle, "pf_remove_obstacle");
     pf::Simulation& s = *sim->impl;
     return guarded(s.log(), "pf_remove_obstacle", [&] { return s.remove_obstacle(id); });
 }
@@ -279,46 +300,46 @@ pf_sink pf_default_sink(void) {
     return k;
 }
 
-pf_result pf_add_emitter(pf_sim* sim, const pf_emitter* emitter, uint32_t* out_id) {
-    PF_CHECK_SIM(sim, "pf_add_emitter");
+pf_result pf_add_emitter(pf_sim* handle, const pf_emitter* emitter, uint32_t* out_id) {
+    PF_ENTRY(sim, handle, "pf_add_emitter");
     pf::Simulation& s = *sim->impl;
     if (!emitter) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_emitter: emitter must not be NULL");
     if (pf_result r = pf::validate_emitter(*emitter, s.desc(), s.log(), "pf_add_emitter"); r != PF_OK) return r;
     return guarded(s.log(), "pf_add_emitter", [&] { return s.add_emitter(*emitter, out_id); });
 }
 
-pf_result pf_set_emitter(pf_sim* sim, uint32_t id, const pf_emitter* emitter) {
-    PF_CHECK_SIM(sim, "pf_set_emitter");
+pf_result pf_set_emitter(pf_sim* handle, uint32_t id, const pf_emitter* emitter) {
+    PF_ENTRY(sim, handle, "pf_set_emitter");
     pf::Simulation& s = *sim->impl;
     if (!emitter) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_emitter: emitter must not be NULL");
     if (pf_result r = pf::validate_emitter(*emitter, s.desc(), s.log(), "pf_set_emitter"); r != PF_OK) return r;
     return guarded(s.log(), "pf_set_emitter", [&] { return s.set_emitter(id, *emitter); });
 }
 
-pf_result pf_remove_emitter(pf_sim* sim, uint32_t id) {
-    PF_CHECK_SIM(sim, "pf_remove_emitter");
+pf_result pf_remove_emitter(pf_sim* handle, uint32_t id) {
+    PF_ENTRY(sim, handle, "pf_remove_emitter");
     pf::Simulation& s = *sim->impl;
     return guarded(s.log(), "pf_remove_emitter", [&] { return s.remove_emitter(id); });
 }
 
-pf_result pf_add_sink(pf_sim* sim, const pf_sink* sink, uint32_t* out_id) {
-    PF_CHECK_SIM(sim, "pf_add_sink");
+pf_result pf_add_sink(pf_sim* handle, const pf_sink* sink, uint32_t* out_id) {
+    PF_ENTRY(sim, handle, "pf_add_sink");
     pf::Simulation& s = *sim->impl;
     if (!sink) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_sink: sink must not be NULL");
     if (pf_result r = pf::validate_sink(*sink, s.desc(), s.log(), "pf_add_sink"); r != PF_OK) return r;
     return guarded(s.log(), "pf_add_sink", [&] { return s.add_sink(*sink, out_id); });
 }
 
-pf_result pf_set_sink(pf_sim* sim, uint32_t id, const pf_sink* sink) {
-    PF_CHECK_SIM(sim, "pf_set_sink");
+pf_result pf_set_sink(pf_sim* handle, uint32_t id, const pf_sink* sink) {
+    PF_ENTRY(sim, handle, "pf_set_sink");
     pf::Simulation& s = *sim->impl;
     if (!sink) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_sink: sink must not be NULL");
     if (pf_result r = pf::validate_sink(*sink, s.desc(), s.log(), "pf_set_sink"); r != PF_OK) return r;
     return guarded(s.log(), "pf_set_sink", [&] { return s.set_sink(id, *sink); });
 }
 
-pf_result pf_remove_sink(pf_sim* sim, uint32_t id) {
-    PF_CHECK_SIM(sim, "pf_remove_sink");
+pf_result pf_remove_sink(pf_sim* handle, uint32_t id) {
+    PF_ENTRY(sim, handle, "pf_remove_sink");
     pf::Simulation& s = *sim->impl;
     return guarded(s.log(), "pf_remove_sink", [&] { return s.remove_sink(id); });
 }
@@ -329,8 +350,8 @@ pf_domain_motion pf_default_domain_motion(void) {
     return m;
 }
 
-pf_result pf_set_domain_motion(pf_sim* sim, const pf_domain_motion* motion) {
-    PF_CHECK_SIM(sim, "pf_set_domain_motion");
+pf_result pf_set_domain_motion(pf_sim* handle, const pf_domain_motion* motion) {
+    PF_ENTRY(sim, handle, "pf_set_domain_motion");
     pf::Simulation& s = *sim->impl;
     if (!motion) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_domain_motion: motion must not be NULL");
     if (pf_result r = pf::validate_domain_motion(*motion, s.log(), "pf_set_domain_motion"); r != PF_OK) return r;
@@ -338,15 +359,15 @@ pf_result pf_set_domain_motion(pf_sim* sim, const pf_domain_motion* motion) {
     return PF_OK;
 }
 
-pf_result pf_get_domain_motion(const pf_sim* sim, pf_domain_motion* out) {
-    PF_CHECK_SIM(sim, "pf_get_domain_motion");
+pf_result pf_get_domain_motion(const pf_sim* handle, pf_domain_motion* out) {
+    PF_ENTRY(sim, handle, "pf_get_domain_motion");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_domain_motion: out must not be NULL");
     *out = sim->impl->domain_motion_state();
     return PF_OK;
 }
 
-pf_result pf_get_particle_count(pf_sim* sim, uint32_t* out) {
-    PF_CHECK_SIM(sim, "pf_get_particle_count");
+pf_result pf_get_particle_count(pf_sim* handle, uint32_t* out) {
+    PF_ENTRY(sim, handle, "pf_get_particle_count");
     pf::Simulation& s = *sim->impl;
     if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_particle_count: out must not be NULL");
     return guarded(s.log(), "pf_get_particle_count", [&] {
@@ -355,33 +376,35 @@ pf_result pf_get_particle_count(pf_sim* sim, uint32_t* out) {
     });
 }
 
-pf_result pf_get_obstacle_force(const pf_sim* sim, uint32_t id, pf_obstacle_force* out) {
-    PF_CHECK_SIM(sim, "pf_get_obstacle_force");
+pf_result pf_get_obstacle_force(const pf_sim* handle, uint32_t id, pf_obstacle_force* out) {
+    PF_ENTRY(sim, handle, "pf_get_obstacle_force");
     const pf::Simulation& s = *sim->impl;
     if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_obstacle_force: out must not be NULL");
     return guarded(s.log(), "pf_get_obstacle_force", [&] { return s.obstacle_force(id, *out); });
 }
 
-pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out) {
-    PF_CHECK_SIM(sim, "pf_get_params");
+pf_result pf_get_params(const pf_sim* handle, pf_sim_params* out) {
+    PF_ENTRY(sim, handle, "pf_get_params");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_params: out must not be NULL");
-    *out = sim->impl->params();
-    return PF_OK;
+    return pf::write_output(out, sim->impl->params(), sim->impl->log(), "pf_get_params");
 }
 
-pf_result pf_set_params(pf_sim* sim, const pf_sim_params* params) {
-    PF_CHECK_SIM(sim, "pf_set_params");
+pf_result pf_set_params(pf_sim* handle, const pf_sim_params* params) {
+    PF_ENTRY(sim, handle, "pf_set_params");
     pf::Simulation& s = *sim->impl;
     if (!params) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_params: params must not be NULL");
     return guarded(s.log(), "pf_set_params", [&] {
-        const pf_sim_params resolved = pf::resolve_params(*params);
+        pf_sim_params read{};
+        if (pf_result r = pf::read_input(params, pf_default_sim_params(), read, s.log(), "pf_set_params"); r != PF_OK)
+            return r;
+        const pf_sim_params resolved = pf::resolve_params(read);
         if (pf_result r = pf::validate_params(resolved, s.log(), "pf_set_params"); r != PF_OK) return r;
         return s.set_params(resolved);
     });
 }
 
-pf_result pf_read_particles(pf_sim* sim, uint32_t first, uint32_t count, float* xyz, float* vel) {
-    PF_CHECK_SIM(sim, "pf_read_particles");
+pf_result pf_read_particles(pf_sim* handle, uint32_t first, uint32_t count, float* xyz, float* vel) {
+    PF_ENTRY(sim, handle, "pf_read_particles");
     pf::Simulation& s = *sim->impl;
     const uint32_t live = s.live_count();
     if (uint64_t(first) + count > live) {
@@ -393,36 +416,83 @@ pf_result pf_read_particles(pf_sim* sim, uint32_t first, uint32_t count, float* 
     return guarded(s.log(), "pf_read_particles", [&] { return s.read_particles(first, count, xyz, vel); });
 }
 
-pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out) {
-    PF_CHECK_SIM(sim, "pf_get_gl_buffers");
+pf_result pf_request_particles(pf_sim* handle, uint32_t first, uint32_t count, uint32_t* out_ticket) {
+    PF_ENTRY(sim, handle, "pf_request_particles");
+    pf::Simulation& s = *sim->impl;
+    if (!out_ticket)
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_request_particles: out_ticket must not be NULL");
+    if (uint64_t(first) + count > s.particle_count()) {
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_request_particles: range [" + std::to_string(first) + ", " +
+                                                            std::to_string(uint64_t(first) + count) + ") exceeds the " +
+                                                            std::to_string(s.particle_count()) + " live particles");
+    }
+    return guarded(s.log(), "pf_request_particles", [&] { return s.request_particles(first, count, out_ticket); });
+}
+
+pf_result pf_poll_particles(pf_sim* handle, uint32_t ticket, float* xyz, float* vel) {
+    PF_ENTRY(sim, handle, "pf_poll_particles");
+    pf::Simulation& s = *sim->impl;
+    return guarded(s.log(), "pf_poll_particles", [&] { return s.poll_particles(ticket, xyz, vel); });
+}
+
+pf_result pf_snapshot_size(const pf_sim* handle, size_t* out) {
+    PF_ENTRY(sim, handle, "pf_snapshot_size");
+    pf::Simulation& s = *sim->impl;
+    if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_snapshot_size: out must not be NULL");
+    return guarded(s.log(), "pf_snapshot_size", [&] {
+        *out = s.snapshot_size();
+        return PF_OK;
+    });
+}
+
+pf_result pf_save_snapshot(pf_sim* handle, void* buffer, size_t size) {
+    PF_ENTRY(sim, handle, "pf_save_snapshot");
+    pf::Simulation& s = *sim->impl;
+    if (!buffer) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_save_snapshot: buffer must not be NULL");
+    return guarded(s.log(), "pf_save_snapshot", [&] { return s.save_snapshot(buffer, size); });
+}
+
+pf_result pf_restore_snapshot(pf_sim* handle, const void* buffer, size_t size) {
+    PF_ENTRY(sim, handle, "pf_restore_snapshot");
+    pf::Simulation& s = *sim->impl;
+    if (!buffer) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_restore_snapshot: buffer must not be NULL");
+    return guarded(s.log(), "pf_restore_snapshot", [&] { return s.restore_snapshot(buffer, size); });
+}
+
+pf_result pf_get_gl_buffers(const pf_sim* handle, pf_gl_buffers* out) {
+    PF_ENTRY(sim, handle, "pf_get_gl_buffers");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_gl_buffers: out must not be NULL");
     sim->impl->gl_buffers(*out);
     return PF_OK;
 }
 
-pf_result pf_get_stats(const pf_sim* sim, pf_stats* out) {
-    PF_CHECK_SIM(sim, "pf_get_stats");
+pf_result pf_get_stats(const pf_sim* handle, pf_stats* out) {
+    PF_ENTRY(sim, handle, "pf_get_stats");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_stats: out must not be NULL");
-    sim->impl->stats(*out);
-    if (sim->renderer) sim->renderer->stats(*out);
-    return PF_OK;
+    if (!pf::valid_struct_size(pf::struct_size_of(out)))
+        return pf::write_output(out, pf_stats{}, sim->impl->log(), "pf_get_stats");  // logs the bad size
+    pf_stats full{};
+    sim->impl->stats(full);
+    if (sim->renderer) sim->renderer->stats(full);
+    full.struct_size = uint32_t(sizeof full);
+    return pf::write_output(out, full, sim->impl->log(), "pf_get_stats");
 }
 
-pf_result pf_clear_flags(pf_sim* sim) {
-    PF_CHECK_SIM(sim, "pf_clear_flags");
+pf_result pf_clear_flags(pf_sim* handle) {
+    PF_ENTRY(sim, handle, "pf_clear_flags");
     sim->impl->clear_flags();
     return PF_OK;
 }
 
-pf_result pf_get_pass_count(const pf_sim* sim, uint32_t* out) {
-    PF_CHECK_SIM(sim, "pf_get_pass_count");
+pf_result pf_get_pass_count(const pf_sim* handle, uint32_t* out) {
+    PF_ENTRY(sim, handle, "pf_get_pass_count");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_pass_count: out must not be NULL");
     *out = sim->impl->pass_count();
     return PF_OK;
 }
 
-pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_stats* out) {
-    PF_CHECK_SIM(sim, "pf_get_pass_stats");
+pf_result pf_get_pass_stats(const pf_sim* handle, uint32_t index, pf_pass_stats* out) {
+    PF_ENTRY(sim, handle, "pf_get_pass_stats");
     const pf::Simulation& s = *sim->impl;
     if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_pass_stats: out must not be NULL");
     if (index >= s.pass_count()) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <type_traits>
 
+#include "api/abi.h"
 #include "api/handle.h"
 #include "api/validate.h"
 #include "pf/pf.h"
@@ -15,7 +16,6 @@ namespace {
 using pf::enum_bits;
 
 using pf::guarded;
-using pf::live;
 
 std::string str(double v) {
     char buf[32];
@@ -140,15 +140,20 @@ pf_particle_params resolve(const pf_particle_params& in, float cell_size) {
 
 // Shared head of both entry points: handle, pointers, camera; makes the renderer on first use.
 template <typename Params, typename Draw>
-pf_result render_call(pf_sim* sim, const char* fn, const pf_camera* camera, const pf_render_target* target,
+pf_result render_call(pf_sim* handle, const char* fn, const pf_camera* camera, const pf_render_target* target,
                       const Params* params, Params defaults, Draw&& draw) {
-    if (!live(sim)) return pf::Log{}.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": invalid pf_sim");
+    pf::SimEntry* const sim = pf::entry(handle);
+    if (!sim) return pf::invalid_handle(handle, fn);
     pf::Simulation& s = *sim->impl;
     const Validator v{s.log(), fn};
     if (!camera) return v.bad("camera must not be NULL");
     if (!target) return v.bad("target must not be NULL");
     if (pf_result r = v.camera(*camera); r != PF_OK) return r;
-    const Params resolved = resolve(params ? *params : defaults, s.desc().cell_size);
+    Params read = defaults;
+    if (params) {
+        if (pf_result r = pf::read_input(params, defaults, read, s.log(), fn); r != PF_OK) return r;
+    }
+    const Params resolved = resolve(read, s.desc().cell_size);
     return guarded(s.log(), fn, [&] {
         if constexpr (std::is_same_v<Params, pf_ssf_params>) {
             if (pf_result r = v.ssf(resolved); r != PF_OK) return r;
@@ -160,12 +165,9 @@ pf_result render_call(pf_sim* sim, const char* fn, const pf_camera* camera, cons
     });
 }
 
-}  // namespace
-
-extern "C" {
-
-pf_ssf_params pf_default_ssf_params(void) {
+pf_ssf_params full_default_ssf_params() {
     pf_ssf_params p{};
+    p.struct_size = uint32_t(sizeof p);
     p.filter = PF_SSF_FILTER_BILATERAL;
     // Per metre: about a metre of liquid keeps 55% red, 82% green, 90% blue (clear water, tinted).
     p.absorption[0] = 0.6f;
@@ -182,8 +184,9 @@ pf_ssf_params pf_default_ssf_params(void) {
     return p;
 }
 
-pf_particle_params pf_default_particle_params(void) {
+pf_particle_params full_default_particle_params() {
     pf_particle_params p{};
+    p.struct_size = uint32_t(sizeof p);
     p.color_by = PF_PARTICLE_COLOR_SPEED;
     p.range[0] = 0.0f;
     p.range[1] = 3.0f;
@@ -192,6 +195,18 @@ pf_particle_params pf_default_particle_params(void) {
     p.color_low[2] = 0.9f;
     p.color_high[0] = p.color_high[1] = p.color_high[2] = 1.0f;
     return p;
+}
+
+}  // namespace
+
+extern "C" {
+
+pf_result pf_init_ssf_params(pf_ssf_params* out, uint32_t struct_size) {
+    return pf::init_struct(out, struct_size, full_default_ssf_params(), "pf_init_ssf_params");
+}
+
+pf_result pf_init_particle_params(pf_particle_params* out, uint32_t struct_size) {
+    return pf::init_struct(out, struct_size, full_default_particle_params(), "pf_init_particle_params");
 }
 
 const char* pf_render_pass_name(pf_render_pass pass) {

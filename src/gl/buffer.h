@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "gl/debug.h"
 #include "gl/gl.h"
 
 namespace pf::gl {
@@ -10,13 +11,24 @@ namespace pf::gl {
 class Buffer {
 public:
     Buffer() = default;
-    Buffer(const Api& gl, size_t bytes, GLenum usage) : gl_(&gl), bytes_(bytes) {
+    // `label` names it for debuggers ("pflip/<label>", src/gl/debug.h).
+    Buffer(const Api& gl, size_t bytes, GLenum usage, const char* label) : gl_(&gl), bytes_(bytes) {
         gl.GenBuffers(1, &id_);
         // COPY_WRITE is a binding the state guard restores; allocation needs some target.
         gl.BindBuffer(GL_COPY_WRITE_BUFFER, id_);
         gl.BufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, usage);
+        label_object(gl, GL_BUFFER, id_, label);
     }
     ~Buffer() { reset(); }
+    // Takes ownership of buffer `id` (made and allocated by the caller, e.g. with glBufferStorage).
+    static Buffer adopt(const Api& gl, GLuint id, size_t bytes, const char* label) {
+        Buffer b;
+        b.gl_ = &gl;
+        b.id_ = id;
+        b.bytes_ = bytes;
+        label_object(gl, GL_BUFFER, id, label);
+        return b;
+    }
     Buffer(Buffer&& o) noexcept { *this = std::move(o); }
     Buffer& operator=(Buffer&& o) noexcept {
         if (this != &o) {

@@ -1,5 +1,7 @@
 #include "gl/program.h"
 
+#include "gl/debug.h"
+
 namespace pf::gl {
 
 namespace {
@@ -94,6 +96,7 @@ GLuint ProgramCache::get(ProgramId id, std::string& error) {
     if (slot) return slot;
     const ProgramInfo& info = program_info(id);
     slot = build_program(gl_, program_stages(info), info.id, error);
+    label_object(gl_, GL_PROGRAM, slot, info.id);
     return slot;
 }
 

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "common/render_slots.h"
+#include "gl/debug.h"
 #include "gl/render_state_guard.h"
 #include "sim/simulation.h"
 
@@ -33,10 +34,14 @@ int gl_version(const gl::Api& gl) {
     return major * 10 + minor;
 }
 
-// Scope of one timed pass.
+// Scope of one timed pass, inside the debug group "pflip/<render pass name>".
 struct TimedPass {
     gl::TimerRing& timers;
-    TimedPass(gl::TimerRing& t, pf_render_pass pass) : timers(t) { timers.begin_pass(pass); }
+    gl::DebugGroup group;
+    TimedPass(gl::TimerRing& t, pf_render_pass pass, const gl::Api& gl)
+        : timers(t), group(gl, (std::string("pflip/") + pf_render_pass_name(pass)).c_str()) {
+        timers.begin_pass(pass);
+    }
     ~TimedPass() { timers.end_pass(); }
 };
 }  // namespace
@@ -63,7 +68,7 @@ pf_result Renderer::begin(const char* fn, const pf_camera& camera, const pf_rend
         if (GLenum(origin) == kUpperLeft) y_sign = -1.0f;
     }
     if (!uniforms_.id()) {  // first call: objects every pass uses
-        uniforms_ = gl::Buffer(gl_, sizeof(RenderUniforms), GL_DYNAMIC_DRAW);
+        uniforms_ = gl::Buffer(gl_, sizeof(RenderUniforms), GL_DYNAMIC_DRAW, "render_uniforms");
         vao_ = gl::Object(gl_, gl::ObjectKind::vertex_array);
         nearest_ = gl::Object(gl_, gl::ObjectKind::sampler);
         linear_ = gl::Object(gl_, gl::ObjectKind::sampler);
@@ -75,9 +80,11 @@ pf_result Renderer::begin(const char* fn, const pf_camera& camera, const pf_rend
             gl_.SamplerParameteri(s->id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
             gl_.SamplerParameteri(s->id(), GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
             gl_.SamplerParameteri(s->id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+            gl::label_object(gl_, GL_SAMPLER, s->id(), s == &linear_ ? "sampler_linear" : "sampler_nearest");
         }
         // Instanced sprites: one vec4 position and one vec4 velocity per particle.
         gl_.BindVertexArray(vao_.id());
+        gl::label_object(gl_, GL_VERTEX_ARRAY, vao_.id(), "particle_sprites");
         for (GLuint a : {GLuint(PF_ATTR_POSITION), GLuint(PF_ATTR_VELOCITY)}) {
             gl_.EnableVertexAttribArray(a);
             gl_.VertexAttribFormat(a, 4, GL_FLOAT, GL_FALSE, 0);
@@ -157,6 +164,7 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
     const auto started = std::chrono::steady_clock::now();
     gl::StateGuard guard(gl_, guard_options_);
     gl::RenderStateGuard render_guard(gl_);
+    const gl::DebugGroup debug_group(gl_, fn[10] == 's' ? "pflip/render_ssf" : "pflip/render_particles");
     TargetInfo info;
     float y_sign = 1.0f;
     if (pf_result r = begin(fn, camera, target, true, info, y_sign); r != PF_OK) return r;
@@ -220,7 +228,7 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
 // converts any colour format into the RGBA16F copy. With GL_FRAMEBUFFER_SRGB on, an sRGB scene
 // is decoded to linear on the way, as sampling it would be.
 void Renderer::pass_scene_copy(const pf_camera& camera, const pf_render_target& target, bool depth) {
-    TimedPass timed(timers_, PF_RENDER_PASS_SCENE_COPY);
+    TimedPass timed(timers_, PF_RENDER_PASS_SCENE_COPY, gl_);
     const GLuint read = targets_->framebuffer(SsfTargets::copy_read);
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, read);
     gl_.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.scene_color, 0);
@@ -237,7 +245,7 @@ void Renderer::pass_scene_copy(const pf_camera& camera, const pf_render_target& 
 }
 
 void Renderer::pass_thickness(GLuint program, int w, int h) {
-    TimedPass timed(timers_, PF_RENDER_PASS_THICKNESS);
+    TimedPass timed(timers_, PF_RENDER_PASS_THICKNESS, gl_);
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets_->framebuffer(SsfTargets::thickness_fb));
     gl_.Viewport(0, 0, w, h);
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -252,7 +260,7 @@ void Renderer::pass_thickness(GLuint program, int w, int h) {
 }
 
 void Renderer::pass_depth(GLuint program, int w, int h) {
-    TimedPass timed(timers_, PF_RENDER_PASS_DEPTH);
+    TimedPass timed(timers_, PF_RENDER_PASS_DEPTH, gl_);
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets_->framebuffer(SsfTargets::depth_fb));
     gl_.Viewport(0, 0, w, h);
     const GLfloat no_liquid[4] = {float(PF_NO_LIQUID), 0.0f, 0.0f, 0.0f}, far_depth = 1.0f;
@@ -278,7 +286,7 @@ void Renderer::dispatch_particles(GLuint program) {
 }
 
 void Renderer::pass_splat_thickness(GLuint clear, GLuint splat, int w, int h) {
-    TimedPass timed(timers_, PF_RENDER_PASS_THICKNESS);
+    TimedPass timed(timers_, PF_RENDER_PASS_THICKNESS, gl_);
     const GLuint depth_bits = targets_->texture(SsfTargets::splat_depth_bits);
     const GLuint thickness_bits = targets_->texture(SsfTargets::splat_thickness_bits);
     gl_.BindImageTexture(PF_IMG_SPLAT_DEPTH, depth_bits, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
@@ -294,7 +302,7 @@ void Renderer::pass_splat_thickness(GLuint clear, GLuint splat, int w, int h) {
 }
 
 void Renderer::pass_splat_depth(GLuint splat, GLuint resolve, int w, int h) {
-    TimedPass timed(timers_, PF_RENDER_PASS_DEPTH);
+    TimedPass timed(timers_, PF_RENDER_PASS_DEPTH, gl_);
     dispatch_particles(splat);
     gl_.BindImageTexture(PF_IMG_RAW_DEPTH, targets_->texture(SsfTargets::raw_depth), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                          GL_R32F);
@@ -307,7 +315,7 @@ void Renderer::pass_splat_depth(GLuint splat, GLuint resolve, int w, int h) {
 // Alternating horizontal and vertical 1D passes, filter_iterations times, ping-ponging
 // between smooth_a and smooth_b. Returns the texture holding the surface to shade.
 SsfTargets::Texture Renderer::pass_smooth(GLuint program, const pf_ssf_params& params, int w, int h) {
-    TimedPass timed(timers_, PF_RENDER_PASS_SMOOTH);
+    TimedPass timed(timers_, PF_RENDER_PASS_SMOOTH, gl_);
     if (params.filter == PF_SSF_FILTER_NONE) return SsfTargets::raw_depth;
     const bool compute = params.path == PF_SSF_PATH_COMPUTE;
     gl_.UseProgram(program);
@@ -333,7 +341,7 @@ SsfTargets::Texture Renderer::pass_smooth(GLuint program, const pf_ssf_params& p
 
 void Renderer::pass_shade(GLuint program, const pf_ssf_params& params, SsfTargets::Texture depth, GLuint environment,
                           int w, int h) {
-    TimedPass timed(timers_, PF_RENDER_PASS_SHADE);
+    TimedPass timed(timers_, PF_RENDER_PASS_SHADE, gl_);
     bind_texture(PF_TEX_SCENE_COLOR, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_color), true);
     bind_texture(PF_TEX_LIQUID_DEPTH, GL_TEXTURE_2D, targets_->texture(depth), false);
     bind_texture(PF_TEX_THICKNESS, GL_TEXTURE_2D, targets_->texture(SsfTargets::thickness), false);
@@ -353,7 +361,7 @@ void Renderer::pass_shade(GLuint program, const pf_ssf_params& params, SsfTarget
 }
 
 void Renderer::pass_resolve(GLuint program, const pf_camera& camera, GLuint framebuffer) {
-    TimedPass timed(timers_, PF_RENDER_PASS_RESOLVE);
+    TimedPass timed(timers_, PF_RENDER_PASS_RESOLVE, gl_);
     gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
     gl_.Viewport(camera.viewport[0], camera.viewport[1], camera.viewport[2], camera.viewport[3]);
     // ALWAYS with writes on: the liquid already passed the scene-depth test; this only stores
@@ -375,6 +383,7 @@ pf_result Renderer::render_particles(const pf_camera& camera, const pf_render_ta
     const auto started = std::chrono::steady_clock::now();
     gl::StateGuard guard(gl_, guard_options_);
     gl::RenderStateGuard render_guard(gl_);
+    const gl::DebugGroup debug_group(gl_, fn[10] == 's' ? "pflip/render_ssf" : "pflip/render_particles");
     TargetInfo info;
     float y_sign = 1.0f;
     if (pf_result r = begin(fn, camera, target, false, info, y_sign); r != PF_OK) return r;
@@ -387,7 +396,7 @@ pf_result Renderer::render_particles(const pf_camera& camera, const pf_render_ta
     ++frames_;
     timers_.begin_step(frames_, 1);
     {
-        TimedPass timed(timers_, PF_RENDER_PASS_PARTICLES);
+        TimedPass timed(timers_, PF_RENDER_PASS_PARTICLES, gl_);
         upload(u);
         set_fixed_state();
         bind_particles();

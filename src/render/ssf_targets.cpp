@@ -1,21 +1,37 @@
 #include "render/ssf_targets.h"
 
+#include "gl/debug.h"
+
 namespace pf {
 
 namespace {
+constexpr const char* kTextureLabels[SsfTargets::texture_count] = {
+    "ssf_scene_color", "ssf_scene_depth", "ssf_thickness", "ssf_raw_depth", "ssf_depth_buffer", "ssf_smooth_a",
+    "ssf_smooth_b", "ssf_shaded_color", "ssf_shaded_depth", "ssf_splat_depth_bits", "ssf_splat_thickness_bits"};
+constexpr const char* kFramebufferLabels[SsfTargets::framebuffer_count] = {
+    "ssf_copy_read", "ssf_copy_draw", "ssf_thickness_fb", "ssf_depth_fb", "ssf_smooth_a_fb", "ssf_smooth_b_fb",
+    "ssf_shade_fb"};
 constexpr GLenum kFormats[SsfTargets::texture_count] = {
     GL_RGBA16F, 0 /* engine's depth format */, GL_R32F, GL_R32F, GL_DEPTH_COMPONENT32F,
     GL_R32F,    GL_R32F, GL_RGBA16F, GL_R32F, GL_R32UI, GL_R32UI};
 }  // namespace
 
 SsfTargets::SsfTargets(const gl::Api& gl) : gl_(gl) {
-    for (gl::Object& f : framebuffers_) f = gl::Object(gl_, gl::ObjectKind::framebuffer);
+    for (int f = 0; f < framebuffer_count; ++f) {
+        framebuffers_[f] = gl::Object(gl_, gl::ObjectKind::framebuffer);
+        if (!gl::has_debug_markers(gl_)) continue;
+        // A framebuffer name becomes an object (which a label needs) when first bound; the
+        // caller's RenderStateGuard restores the binding.
+        gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffers_[f].id());
+        gl::label_object(gl_, GL_FRAMEBUFFER, framebuffers_[f].id(), kFramebufferLabels[f]);
+    }
 }
 
 void SsfTargets::allocate(Texture t, GLenum format) {
     textures_[t] = gl::Object(gl_, gl::ObjectKind::texture);
     gl_.BindTexture(GL_TEXTURE_2D, textures_[t].id());
     gl_.TexStorage2D(GL_TEXTURE_2D, 1, format, width_, height_);
+    gl::label_object(gl_, GL_TEXTURE, textures_[t].id(), kTextureLabels[t]);
     gl_.BindTexture(GL_TEXTURE_2D, 0);
 }
 

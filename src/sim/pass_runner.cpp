@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "gl/debug.h"
+
 namespace pf {
 
 PassRunner::PassRunner(const gl::Api& gl, const Log& log, const gl::Buffer& uniforms, GLuint uniform_slot)
@@ -16,7 +18,7 @@ StatId PassRunner::add_stat(const std::string& name, pf_pass group) {
     for (size_t i = 0; i < stats_.size(); ++i) {
         if (stats_[i].name == name) return StatId(i);
     }
-    stats_.push_back(Stat{name, group, 0});
+    stats_.push_back(Stat{name, group, 0, "pflip/" + name});
     return StatId(stats_.size() - 1);
 }
 
@@ -100,6 +102,7 @@ void PassRunner::run(const Pass& pass) {
     gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (command ? GL_COMMAND_BARRIER_BIT : 0));
     if (command) records_written_ = false;
     if (writes_indirect_records(pass.program)) records_written_ = true;
+    const gl::DebugGroup debug_group(gl_, pass.stat < stats_.size() ? stats_[pass.stat].debug_group.c_str() : "pflip/pass");
     gl_.UseProgram(program);
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, uniform_slot_, uniforms_.id());
     for (const Bind& b : pass.binds) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b.slot, b.buffer->id());

@@ -33,6 +33,7 @@ public:
         std::string name;   // stable short name shown by pf_get_pass_stats ("p2g", "jacobi", ...)
         pf_pass group;      // the pf_stats.gpu_ms / dispatches slot it adds to
         uint32_t dispatches = 0;  // in the current (or last) step
+        std::string debug_group;  // "pflip/<name>": the KHR_debug group of its dispatches
     };
 
     PassRunner(const gl::Api& gl, const Log& log, const gl::Buffer& uniforms, GLuint uniform_slot);
@@ -59,7 +60,8 @@ public:
     // Copies `bytes` from src to dst on the GPU, after everything earlier passes wrote.
     void copy(const gl::Buffer& src, const gl::Buffer& dst, size_t bytes) { copy(src, 0, dst, 0, bytes); }
     void copy(const gl::Buffer& src, size_t src_offset, const gl::Buffer& dst, size_t dst_offset, size_t bytes);
-    // Runs one pass (the program must have been prepared). Timed and counted inside a step
+    // Runs one pass (the program must have been prepared) inside the debug group
+    // "pflip/<statistics entry name>" when the GL has KHR_debug (src/gl/debug.h). Timed and counted inside a step
     // (begin_step .. end_step), neither outside one (creation, pf_push, pf_clear_particles).
     void run(const Pass& pass);
 

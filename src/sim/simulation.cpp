@@ -8,6 +8,7 @@
 #include <string>
 
 #include "common/slots.h"
+#include "gl/debug.h"
 #include "gl/entry_points.h"
 #include "gl/state_guard.h"
 #include "sim/particle_fill.h"
@@ -26,7 +27,6 @@ using gl::ProgramId;
 // a 31-bit sum. Each overflow read back widens the range by 2 bits, up to 2^10 (2M particles per
 // sample, velocity resolution max_speed / 1024 per particle).
 constexpr int kWeightScaleBits = 20;
-constexpr uint32_t kMaxP2gRangeShift = 10;
 
 struct GlFunctionLoader {
     pf_gl_get_proc_address_fn fn;
@@ -108,23 +108,24 @@ pf_result Simulation::init() {
 
     gl::StateGuard guard(gl_, gl_state_);
     const size_t np = desc_.max_particles;
-    pos_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW);
-    vel_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW);
-    face_accum_ = gl::Buffer(gl_, size_t(faces_) * 8, GL_DYNAMIC_COPY);
-    face_vel_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY);
-    face_vel_old_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY);
-    for (auto& b : face_valid_) b = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY);
-    cell_count_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
-    cell_type_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
-    pressure_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
-    rhs_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY);
-    uniforms_ = gl::Buffer(gl_, sizeof(SimUniforms), GL_DYNAMIC_DRAW);
-    count_record_ = gl::Buffer(gl_, PF_COUNT_WORDS * 4, GL_DYNAMIC_COPY);
-    status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY);
-    for (auto& b : readback_) b = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_STREAM_READ);
+    pos_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW, "particle_pos");
+    vel_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW, "particle_vel");
+    face_accum_ = gl::Buffer(gl_, size_t(faces_) * 8, GL_DYNAMIC_COPY, "face_accum");
+    face_vel_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_vel");
+    face_vel_old_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_vel_old");
+    for (auto& b : face_valid_) b = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_valid");
+    cell_count_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY, "cell_count");
+    cell_type_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY, "cell_type");
+    pressure_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY, "pressure");
+    rhs_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY, "rhs");
+    uniforms_ = gl::Buffer(gl_, sizeof(SimUniforms), GL_DYNAMIC_DRAW, "sim_uniforms");
+    count_record_ = gl::Buffer(gl_, PF_COUNT_WORDS * 4, GL_DYNAMIC_COPY, "count_record");
+    status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY, "status");
+    for (auto& b : readback_) b = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_STREAM_READ, "status_readback");
     runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM);
+    requests_ = std::make_unique<ParticleReadback>(gl_);
     const uint64_t metric_items = std::max<uint64_t>(uint64_t(cells_), desc_.max_particles);
-    metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 32, GL_DYNAMIC_COPY);
+    metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 32, GL_DYNAMIC_COPY, "metrics_partials");
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
                           "pf_create: allocating " + std::to_string((np * 32 + size_t(faces_) * 24 + size_t(cells_) * 20) >> 20) +
@@ -243,7 +244,7 @@ pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const
                                                  "GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
                                                  "); lower max_particles");
     }
-    gl::Buffer made(gl_, size_t(bytes), GL_DYNAMIC_COPY);
+    gl::Buffer made(gl_, size_t(bytes), GL_DYNAMIC_COPY, "particle_affine");
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
                           std::string(fn) + ": allocating " + std::to_string(bytes >> 20) +
@@ -287,9 +288,12 @@ pf_result Simulation::prepare_sorted_gather(bool apic, const char* fn) {
                                                  "this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
                                                  "); lower max_particles or the grid size");
     }
-    gl::Buffer cell_slot(gl_, size_t(np) * 8, GL_DYNAMIC_COPY), unsorted(gl_, size_t(np) * 4, GL_DYNAMIC_COPY),
-        grid(gl_, size_t(np) * 16, GL_DYNAMIC_COPY), particles(gl_, size_t(np) * 16, GL_DYNAMIC_COPY),
-        scan(gl_, size_t(words) * 4, GL_DYNAMIC_COPY), counts(gl_, size_t(halves) * 4, GL_DYNAMIC_COPY);
+    gl::Buffer cell_slot(gl_, size_t(np) * 8, GL_DYNAMIC_COPY, "p2g_sort_cell_slot"),
+        unsorted(gl_, size_t(np) * 4, GL_DYNAMIC_COPY, "p2g_sort_unsorted"),
+        grid(gl_, size_t(np) * 16, GL_DYNAMIC_COPY, "p2g_sort_grid"),
+        particles(gl_, size_t(np) * 16, GL_DYNAMIC_COPY, "p2g_sort_particles"),
+        scan(gl_, size_t(words) * 4, GL_DYNAMIC_COPY, "p2g_sort_scan"),
+        counts(gl_, size_t(halves) * 4, GL_DYNAMIC_COPY, "p2g_sort_counts");
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
                           std::string(fn) + ": allocating " + std::to_string((np * 44 + words * 4 + halves * 4) >> 20) +
@@ -507,6 +511,7 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
 pf_result Simulation::step(float frame_dt) {
     const auto t0 = std::chrono::steady_clock::now();
     gl::StateGuard guard(gl_, gl_state_);
+    const gl::DebugGroup debug_group(gl_, "pflip/step");  // around the passes' own groups
     bool clamped = false;
     const uint32_t substeps = substeps_for(frame_dt, &clamped);
     if (clamped) raise_flags(PF_FLAG_SUBSTEPS_CLAMPED);
@@ -1036,6 +1041,16 @@ pf_result Simulation::read_particles(uint32_t first, uint32_t count, float* xyz,
         }
     }
     return PF_OK;
+}
+
+pf_result Simulation::request_particles(uint32_t first, uint32_t count, uint32_t* ticket) {
+    gl::StateGuard guard(gl_, gl_state_);
+    return requests_->request(pos_, vel_, first, count, ticket, log_);
+}
+
+pf_result Simulation::poll_particles(uint32_t ticket, float* xyz, float* vel) {
+    gl::StateGuard guard(gl_, gl_state_);
+    return requests_->poll(ticket, xyz, vel, log_);
 }
 
 void Simulation::gl_buffers(pf_gl_buffers& out) const {

@@ -18,6 +18,7 @@
 #include "sim/effects/obstacles/obstacles.h"
 #include "sim/effects/sinks/sinks.h"
 #include "sim/effects/registry.h"
+#include "sim/particle_readback.h"
 #include "sim/pass_runner.h"
 #include "sim/sim_uniforms.h"
 #include "sim/solvers/pressure_solver.h"
@@ -71,6 +72,15 @@ public:
     // pf_get_obstacle_force: the newest readback of obstacle `id` (never waits).
     pf_result obstacle_force(uint32_t id, pf_obstacle_force& out) const;
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
+    // pf_request_particles / pf_poll_particles (range checked by the API).
+    pf_result request_particles(uint32_t first, uint32_t count, uint32_t* ticket);
+    // Snapshots (src/sim/snapshot.cpp): exact size, save (size checked), restore (all checked
+    // first; on any error nothing changes).
+    size_t snapshot_size() const;
+    pf_result save_snapshot(void* buffer, size_t size);
+    pf_result restore_snapshot(const void* buffer, size_t size);
+    pf_result poll_particles(uint32_t ticket, float* xyz, float* vel);
+    const ParticleReadback& particle_requests() const { return *requests_; }
     void gl_buffers(pf_gl_buffers& out) const;
     void stats(pf_stats& out) const;
     // Entries of the runtime per-pass statistics list.
@@ -114,6 +124,15 @@ public:
 
 private:
     explicit Simulation(const pf_sim_desc& desc);
+    // Snapshot pieces: the host part (descriptor check, params, CPU step state, effects), its
+    // GPU part's size, and waiting for the status readbacks in flight.
+    struct SnapshotState;
+    std::vector<uint8_t> snapshot_host_state() const;
+    bool snapshot_has_affine() const;
+    size_t snapshot_gpu_bytes(uint32_t particles, bool affine) const;
+    void drain_status();
+    // Widest fixed-point P2G range: 2^(20 - 10) per unit weight (design.md §4.2).
+    static constexpr uint32_t kMaxP2gRangeShift = 10;
     pf_result init();
     // The solver for params.pressure_solver, made and initialised on first use (kept after).
     pf_result solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out);
@@ -194,6 +213,7 @@ private:
 
     // particles
     gl::Buffer pos_, vel_;
+    std::unique_ptr<ParticleReadback> requests_;  // pf_request_particles
     gl::Buffer affine_;  // APIC: 3 vec4 per particle slot (c_x, c_y, c_z); allocated on first use
     // Sorted-gather P2G, allocated on first use: per particle slot its half cell (2 x 2 x 2 per
     // cell) and its slot in it (uvec2); particle indices grouped by half cell in counting-atomic

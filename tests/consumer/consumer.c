@@ -36,6 +36,8 @@ static int run_one_step(void) {
     const float lo[3] = {0.0f, 0.0f, 0.0f}, hi[3] = {0.5f, 0.5f, 0.5f};
     float xyz[3] = {-1.0f, -1.0f, -1.0f};
     int rc = 0;
+    /* Output structs say how large the caller compiled them (pf.h ABI rules). */
+    before.struct_size = after.struct_size = (uint32_t)sizeof(pf_stats);
 
     desc.grid_size[0] = desc.grid_size[1] = desc.grid_size[2] = 16;
     desc.cell_size = 1.0f / 16.0f; /* a 1 m cube */

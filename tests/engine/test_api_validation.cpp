@@ -573,26 +573,29 @@ TEST_F(ApiValidation, SetParamsAcceptsBoundaryValues) {
 // ---------------------------------------------------------------------------------------------
 // Zero means default
 
-TEST_F(ApiValidation, ZeroedParamsTakeDefaultsButGravityAndFlipStayZero) {
+// A zero-initialised pf_sim_params (struct_size 0) means the defaults for every field, gravity,
+// flip_ratio, separation and volume_correction included (issue 9: it used to give gravity 0, pure
+// PIC and separation off). Zero gravity is asked for with struct_size set (pf_default_sim_params).
+TEST_F(ApiValidation, ZeroedParamsTakeEveryDefaultAndStructSizeMakesZeroLiteral) {
     const pf_sim_params def = pf_default_sim_params();
     const pf_sim_params zero{};
     ASSERT_EQ(pf_set_params(sim_.get(), &zero), PF_OK) << last_log();
     pf_sim_params got{};
     ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
-    EXPECT_EQ(got.pressure_iterations, def.pressure_iterations);
-    EXPECT_EQ(got.jacobi_omega, def.jacobi_omega);
-    EXPECT_EQ(got.cfl, def.cfl);
-    EXPECT_EQ(got.max_substeps, def.max_substeps);
-    EXPECT_EQ(got.extrapolation_layers, def.extrapolation_layers);
-    EXPECT_EQ(got.pressure_solver, def.pressure_solver);
-    EXPECT_EQ(got.pressure_tolerance, def.pressure_tolerance);
-    EXPECT_EQ(got.sor_omega, def.sor_omega);
-    EXPECT_EQ(got.gravity[0], 0.0f);
-    EXPECT_EQ(got.gravity[1], 0.0f);  // not the default -9.81
-    EXPECT_EQ(got.gravity[2], 0.0f);
-    EXPECT_EQ(got.flip_ratio, 0.0f);  // pure PIC, not the default 0.95
-    EXPECT_EQ(got.transfer, PF_TRANSFER_PIC_FLIP);
-    EXPECT_EQ(got.advection, PF_ADVECTION_EULER);
+    EXPECT_EQ(got.struct_size, uint32_t(sizeof(pf_sim_params)));
+    EXPECT_EQ(0, std::memcmp(&got, &def, sizeof got)) << params_str(got) << " vs " << params_str(def);
+    EXPECT_EQ(got.gravity[1], -9.81f);
+    EXPECT_EQ(got.flip_ratio, 0.95f);
+    EXPECT_EQ(got.separation, 1u);
+    EXPECT_EQ(got.volume_correction, 0.1f);
+    // With struct_size set, zero is literal: gravity 0, pure PIC.
+    pf_sim_params still = pf_default_sim_params();
+    still.gravity[1] = 0.0f;
+    still.flip_ratio = 0.0f;
+    ASSERT_EQ(pf_set_params(sim_.get(), &still), PF_OK) << last_log();
+    ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
+    EXPECT_EQ(got.gravity[1], 0.0f);
+    EXPECT_EQ(got.flip_ratio, 0.0f);
     // Observable: with zero gravity a liquid at rest stays at rest (default gravity would give
     // 9.81 m/s^2 * 1/60 s = 0.16 m/s after one frame). Bound: 1e-4 m/s.
     ParticleState before = read_all(sim_.get());
@@ -628,9 +631,11 @@ TEST_F(CreateValidation, ZeroedDescParamsTakeDefaults) {
     EXPECT_EQ(got.cfl, def.cfl);
     EXPECT_EQ(got.max_substeps, def.max_substeps);
     EXPECT_EQ(got.extrapolation_layers, def.extrapolation_layers);
-    EXPECT_EQ(got.gravity[1], 0.0f);
-    EXPECT_EQ(got.flip_ratio, 0.0f);
-    EXPECT_EQ(got.separation, 0u);  // taken literally: the original's plain Jacobi
+    // Zero-initialised (struct_size 0): every field takes its default.
+    EXPECT_EQ(got.gravity[1], -9.81f);
+    EXPECT_EQ(got.flip_ratio, 0.95f);
+    EXPECT_EQ(got.separation, 1u);
+    EXPECT_EQ(0, std::memcmp(&got, &def, sizeof got));
     EXPECT_EQ(pf_step(s.get(), kDt), PF_OK) << last_log();
 }
 

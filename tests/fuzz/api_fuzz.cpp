@@ -4,7 +4,8 @@
 //    (valid arguments -> PF_OK on a working GL; a broken one -> the documented error);
 //  - a failed call changes nothing (particles compared bit for bit before and after,
 //    parameters too); a successful one changes exactly what it says (added particles appear
-//    at the end as given, set_params reads back resolved, clear empties);
+//    at the end as given, set_params reads back resolved, clear empties; a polled particle request
+//    equals the blocking read; a snapshot restores what was saved, a damaged one changes nothing);
 //  - the particle count always equals the model's, and stepping keeps every particle finite
 //    and inside the domain;
 //  - effect objects (force fields, obstacles, emitters, sinks) and features: a hostile field is
@@ -105,9 +106,20 @@ struct Rng {
 // ---- the documented rules (include/pf/pf.h), as the model predicts them ----------------------
 bool finite3(const float v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 
-// "0 = default" fields take their default; the rest are literal.
+// A zero-initialised struct (struct_size 0) takes the default for each zero 4-byte field; then
+// the "0 = default" fields take their default; the rest are literal (pf.h ABI rules).
 pf_sim_params resolve(pf_sim_params p) {
     const pf_sim_params d = pf_default_sim_params();
+    if (p.struct_size == 0) {
+        static_assert(sizeof(pf_sim_params) % 4 == 0, "4-byte fields");
+        uint32_t words[sizeof(pf_sim_params) / 4], defaults[sizeof(pf_sim_params) / 4];
+        std::memcpy(words, &p, sizeof p);
+        std::memcpy(defaults, &d, sizeof d);
+        for (size_t w = 1; w < sizeof(pf_sim_params) / 4; ++w)
+            if (words[w] == 0) words[w] = defaults[w];
+        std::memcpy(&p, words, sizeof p);
+    }
+    p.struct_size = uint32_t(sizeof p);
     if (p.pressure_iterations == 0) p.pressure_iterations = d.pressure_iterations;
     if (p.jacobi_omega == 0.0f) p.jacobi_omega = d.jacobi_omega;
     if (p.cfl == 0.0f) p.cfl = d.cfl;
@@ -264,7 +276,7 @@ public:
         case 5: case 6: case 7: return step(s);
         case 8: return set_params(s);
         case 9: return push(s);
-        case 10: return read(s);
+        case 10: return g_.chance(0.5) ? read(s) : g_.chance(0.5) ? request(s) : checkpoint(s);
         case 11: return render(s);
         case 12: return queries(s);
         case 13: return g_.chance(0.2) ? clear(s) : add(s);
@@ -478,6 +490,64 @@ private:
         const pf_result r = pf_read_particles(s.sim, first, count, valid ? xyz.data() : nullptr, nullptr);
         CHECK(r == (valid ? PF_OK : PF_ERROR_INVALID_ARGUMENT), "pf_read_particles(%u, %u) of %u -> %s", first, count,
               s.count, pf_result_string(r));
+    }
+
+    // pf_request_particles / pf_poll_particles: a valid request polled to completion equals the
+    // blocking read; an invalid range or ticket is refused.
+    void request(Sim& s) {
+        const uint32_t first = g_.chance(0.1) ? uint32_t(g_.e()) : g_.below(s.count + 2);
+        const uint32_t count = g_.chance(0.1) ? uint32_t(g_.e()) : g_.below(s.count + 2);
+        const bool valid = uint64_t(first) + count <= s.count;
+        uint32_t ticket = 0;
+        trace("pf_request_particles %u %u", first, count);
+        const pf_result r = pf_request_particles(s.sim, first, count, &ticket);
+        CHECK(r == (valid ? PF_OK : PF_ERROR_INVALID_ARGUMENT), "pf_request_particles(%u, %u) of %u -> %s", first,
+              count, s.count, pf_result_string(r));
+        float dummy[3];
+        CHECK(pf_poll_particles(s.sim, ticket + (r == PF_OK ? 1000000u : 0u), dummy, dummy) == PF_ERROR_INVALID_ARGUMENT,
+              "a ticket never issued was accepted");
+        if (r != PF_OK) return;
+        std::vector<float> want(size_t(count) * 3), got(size_t(count) * 3, -1.0f);
+        CHECK(pf_read_particles(s.sim, first, count, want.data(), nullptr) == PF_OK, "read");
+        pf_result polled = PF_NOT_READY;
+        for (int i = 0; i < 1000000 && polled == PF_NOT_READY; ++i) {
+            polled = pf_poll_particles(s.sim, ticket, got.data(), nullptr);
+            if (i == 100) glFinish();
+        }
+        CHECK(polled == PF_OK, "pf_poll_particles -> %s", pf_result_string(polled));
+        CHECK(same_floats(want.data(), got.data(), want.size()), "the polled particles differ from the blocking read");
+    }
+
+    // Snapshots: a restore brings back the particles and parameters of the save; a damaged
+    // snapshot is refused and changes nothing.
+    void checkpoint(Sim& s) {
+        size_t size = 0;
+        CHECK(pf_snapshot_size(s.sim, &size) == PF_OK, "pf_snapshot_size");
+        std::vector<uint8_t> bytes(size);
+        trace("pf_save_snapshot %zu bytes", size);
+        CHECK(pf_save_snapshot(s.sim, bytes.data(), size) == PF_OK, "pf_save_snapshot");
+        const Snapshot saved = s.snapshot();
+        const uint32_t saved_count = s.count;
+        const pf_sim_params saved_params = s.params;
+        if (g_.chance(0.3)) {
+            const Snapshot before = s.snapshot();
+            size_t n = size;
+            if (g_.chance(0.5)) n = g_.below(uint32_t(size));  // truncated
+            else bytes[g_.below(uint32_t(size))] ^= uint8_t(1u << g_.below(8));  // one bit flipped
+            trace("pf_restore_snapshot damaged (%zu of %zu bytes)", n, size);
+            const pf_result r = pf_restore_snapshot(s.sim, bytes.data(), n);
+            expect_unchanged_on_failure(r, s, before, "pf_restore_snapshot");
+            CHECK(r == PF_ERROR_INVALID_ARGUMENT, "a damaged snapshot -> %s", pf_result_string(r));
+            return;
+        }
+        if (g_.chance(0.5)) step(s);
+        if (g_.chance(0.5)) add(s);
+        trace("pf_restore_snapshot");
+        const pf_result r = pf_restore_snapshot(s.sim, bytes.data(), size);
+        CHECK(r == PF_OK, "pf_restore_snapshot -> %s", pf_result_string(r));
+        s.count = saved_count;
+        s.params = saved_params;
+        CHECK(s.snapshot() == saved, "the restored simulation differs from the saved one");
     }
 
     void render(Sim& s) {

@@ -50,7 +50,7 @@ protected:
         SimPtr handle = create(d);
         EXPECT_TRUE(handle);
         if (!handle) return {NAN, NAN};
-        Simulation& sim = *handle->impl;
+        Simulation& sim = *pf::entry(handle)->impl;
 
         // Face velocities of the rotation about the origin: u = -w y on u faces, v = w x on v faces.
         std::vector<uint32_t> words(sim.read_grid(GridBuffer::face_vel).size(), 0u);

@@ -32,7 +32,7 @@ protected:
 TEST_F(ApicState, AffineVectorsStartAtZeroAndFollowTheTransfer) {
     SimPtr handle = create(test_desc(10, 10, 10, 0.05f));
     ASSERT_TRUE(handle);
-    Simulation& sim = *handle->impl;
+    Simulation& sim = *pf::entry(handle)->impl;
     const float lo[3] = {0.1f, 0.05f, 0.1f}, hi[3] = {0.35f, 0.3f, 0.3f}, v[3] = {0.4f, 0.0f, 0.0f};
     ASSERT_EQ(pf_fill_box(handle.get(), lo, hi, v), PF_OK);
     const uint32_t n = uint32_t(read_all(handle.get()).count());

@@ -30,7 +30,7 @@ TEST_F(EffectsPipeline, OffEffectsBuildNothingAndTurningOneOnBuildsOnlyItsProgra
     pf_sim_desc d = test_desc(12, 10, 8);
     SimPtr handle = create(d);
     ASSERT_TRUE(handle);
-    const PassRunner& r = handle->impl->runner();
+    const PassRunner& r = pf::entry(handle)->impl->runner();
     const float lo[3] = {0, 0, 0}, hi[3] = {0.6f, 0.5f, 0.8f};
     ASSERT_EQ(pf_fill_box(handle.get(), lo, hi, nullptr), PF_OK);
     for (int i = 0; i < 2; ++i) ASSERT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);
@@ -113,7 +113,7 @@ TEST_F(EffectsPipeline, EveryEffectPassBindsEverySlotItsProgramUses) {
         ASSERT_EQ(pf_set_params(handle.get(), &p), PF_OK) << last_log();
         ASSERT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);
     }
-    EXPECT_EQ(handle->impl->runner().binding_errors(), 0u) << last_log();
+    EXPECT_EQ(pf::entry(handle)->impl->runner().binding_errors(), 0u) << last_log();
     // Both the emitters and the sinks ran in every configuration.
     uint32_t n = 0;
     ASSERT_EQ(pf_get_pass_count(handle.get(), &n), PF_OK);

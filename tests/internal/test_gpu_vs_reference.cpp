@@ -162,7 +162,7 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
     ASSERT_TRUE(handle);
     ASSERT_EQ(pf_add_particles(handle.get(), sc.pos.data(), sc.vel.data(), uint32_t(sc.particles.pos.size())), PF_OK)
         << last_log();
-    Simulation& sim = *handle->impl;
+    Simulation& sim = *pf::entry(handle)->impl;
     if (apic) {
         // Added particles start with C = 0; give them random affine vectors of up to 10 / s
         // (|c . r| up to ~4.5 m/s over a stencil, comparable to the velocities).

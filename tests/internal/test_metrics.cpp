@@ -18,7 +18,7 @@ class Metrics : public GpuTest {
 protected:
     // The readback of the last step: glFinish only makes its fence signal (pf_get_stats never waits).
     static pf_stats settled_stats(pf_sim* sim) {
-        sim->impl->api().Finish();
+        pf::entry(sim)->impl->api().Finish();
         pf_stats st{};
         EXPECT_EQ(pf_get_stats(sim, &st), PF_OK);
         return st;
@@ -49,7 +49,7 @@ TEST_F(Metrics, GpuReductionsMatchTheCpu) {
     ASSERT_EQ(st.metrics_step, st.steps);
 
     // The same quantities from the buffers the step left (the last substep's grid, the particles now).
-    const Simulation& sim = *handle->impl;
+    const Simulation& sim = *pf::entry(handle)->impl;
     const ref::Grid g{16, 12, 14, d.cell_size, glm::dvec3(0.0)};
     const std::vector<uint32_t> type_words = sim.read_grid(GridBuffer::cell_type);
     const std::vector<uint32_t> count = sim.read_grid(GridBuffer::cell_count);

@@ -95,7 +95,7 @@ protected:
         EXPECT_TRUE(handle);
         if (!handle) return out;
         EXPECT_EQ(pf_add_particles(handle.get(), pos.data(), vel.data(), uint32_t(pos.size() / 3)), PF_OK);
-        Simulation& sim = *handle->impl;
+        Simulation& sim = *pf::entry(handle)->impl;
         if (!affine.empty()) sim.write_affine_for_test(affine);
         EXPECT_EQ(sim.run_substep_for_test(0.01f), PF_OK);
         EXPECT_EQ(sim.runner().binding_errors(), 0u);
@@ -181,7 +181,7 @@ TEST_F(P2gSchemes, FixedPointIsBitIdenticalRunToRunAndFloatIsReported) {
     // Which path the float scheme took here: native atomics if the GL has the extension.
     SimPtr probe = create(test_desc(4, 4, 4));
     ASSERT_TRUE(probe);
-    const gl::Api& gl = probe->impl->api();
+    const gl::Api& gl = pf::entry(probe)->impl->api();
     GLint count = 0;
     gl.GetIntegerv(GL_NUM_EXTENSIONS, &count);
     bool native = false;
@@ -385,7 +385,7 @@ TEST_F(P2gSchemes, DamBreakIsPhysicallyTheSameWithEveryScheme) {
         }
         std::sort(xs.begin(), xs.end());
         out.front = np ? xs[np * 99 / 100] : 0.0;
-        EXPECT_EQ(sim->impl->runner().binding_errors(), 0u);
+        EXPECT_EQ(pf::entry(sim)->impl->runner().binding_errors(), 0u);
         return out;
     };
     const DamBreak fixed = run(PF_P2G_FIXED_POINT), floats = run(PF_P2G_FLOAT_ATOMIC),
@@ -441,7 +441,7 @@ TEST_F(P2gSchemes, SortedGatherPassesAreListedUnderP2gOnceSelected) {
     std::vector<pf_pass_stats> list = entries();
     EXPECT_EQ(find(list, "p2g_sort"), nullptr);
     EXPECT_EQ(find(list, "p2g_gather"), nullptr);
-    const uint32_t programs_before = sim->impl->runner().programs_built();
+    const uint32_t programs_before = pf::entry(sim)->impl->runner().programs_built();
 
     pf_sim_params p{};
     ASSERT_EQ(pf_get_params(sim.get(), &p), PF_OK);
@@ -449,7 +449,7 @@ TEST_F(P2gSchemes, SortedGatherPassesAreListedUnderP2gOnceSelected) {
     ASSERT_EQ(pf_set_params(sim.get(), &p), PF_OK) << last_log();
     // Count, two prefix-sum kernels, scatter, order, gather (PIC/FLIP's), and grid_forces' float
     // permutation.
-    EXPECT_EQ(sim->impl->runner().programs_built(), programs_before + 7);
+    EXPECT_EQ(pf::entry(sim)->impl->runner().programs_built(), programs_before + 7);
     pf_stats stats{};
     ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
     ASSERT_EQ(pf_get_stats(sim.get(), &stats), PF_OK);
@@ -465,7 +465,7 @@ TEST_F(P2gSchemes, SortedGatherPassesAreListedUnderP2gOnceSelected) {
     EXPECT_EQ(sort->dispatches, 6u * stats.substeps);
     EXPECT_EQ(gather->dispatches, stats.substeps);
     EXPECT_EQ(atomics->dispatches, 0u);
-    EXPECT_EQ(sim->impl->runner().binding_errors(), 0u);
+    EXPECT_EQ(pf::entry(sim)->impl->runner().binding_errors(), 0u);
 }
 
 // A grid of 147,456 cells: the prefix sum over the 1,179,649 half-cell counts takes three levels
@@ -535,7 +535,7 @@ TEST_F(P2gSchemes, SortedGatherRefusesAGridBeyondTheStorageBlockLimit) {
     SimPtr probe = create(test_desc(4, 4, 4));
     ASSERT_TRUE(probe);
     GLint64 max_block = 0;
-    probe->impl->api().GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+    pf::entry(probe)->impl->api().GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
     probe.reset();
     // 1024 x 64 x nz cells with 28 bytes per cell at the limit.
     const uint64_t nz = uint64_t(max_block) / 28u / (1024u * 64u);

@@ -19,7 +19,7 @@ class PassPipeline : public GpuTest {};
 TEST_F(PassPipeline, UniformOffsetsMatchTheGl) {
     SimPtr handle = create(test_desc(8, 8, 8));
     ASSERT_TRUE(handle);
-    const Simulation& sim = *handle->impl;
+    const Simulation& sim = *pf::entry(handle)->impl;
     const gl::Api& gl = sim.api();
     // p2g includes common/sim.glsl; every member is active there only if used, so ask the GL
     // for the block's members by name through the program interface.
@@ -73,7 +73,7 @@ TEST_F(PassPipeline, EveryPassBindsEverySlotItsProgramUses) {
         }
     }
     ASSERT_EQ(pf_clear_particles(handle.get()), PF_OK);
-    EXPECT_EQ(handle->impl->runner().binding_errors(), 0u) << last_log();
+    EXPECT_EQ(pf::entry(handle)->impl->runner().binding_errors(), 0u) << last_log();
 }
 
 // The runner puts GL_COMMAND_BARRIER_BIT only after programs listed as writing indirect
@@ -97,9 +97,9 @@ TEST(PassPipelineSource, EveryProgramThatWritesIndirectRecordsIsListed) {
 TEST_F(PassPipeline, AMissingBindingIsCaught) {
     SimPtr handle = create(test_desc(8, 8, 8));
     ASSERT_TRUE(handle);
-    const Simulation& sim = *handle->impl;
-    gl::Buffer uniforms(sim.api(), sizeof(SimUniforms), GL_DYNAMIC_DRAW);
-    gl::Buffer a(sim.api(), 64 * 4, GL_DYNAMIC_COPY), b(sim.api(), 64 * 4, GL_DYNAMIC_COPY);
+    const Simulation& sim = *pf::entry(handle)->impl;
+    gl::Buffer uniforms(sim.api(), sizeof(SimUniforms), GL_DYNAMIC_DRAW, "test_uniforms");
+    gl::Buffer a(sim.api(), 64 * 4, GL_DYNAMIC_COPY, "test_a"), b(sim.api(), 64 * 4, GL_DYNAMIC_COPY, "test_b");
     Log log;
     PassRunner runner(sim.api(), log, uniforms, PF_UBO_SIM);
     const StatId stat = runner.add_stat("classify", PF_PASS_CLASSIFY);

@@ -38,7 +38,7 @@ protected:
             vel.insert(vel.end(), {uv(rng), uv(rng), uv(rng)});
         }
         EXPECT_EQ(pf_add_particles(handle.get(), pos.data(), vel.data(), 12000), PF_OK);
-        Simulation& sim = *handle->impl;
+        Simulation& sim = *pf::entry(handle)->impl;
         const double dt = 0.01;
         EXPECT_EQ(sim.run_substep_for_test(float(dt)), PF_OK);
 

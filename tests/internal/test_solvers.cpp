@@ -83,7 +83,7 @@ protected:
         SimPtr handle = create(d);
         EXPECT_TRUE(handle);
         if (!handle) return {};
-        Simulation& sim = *handle->impl;
+        Simulation& sim = *pf::entry(handle)->impl;
         std::vector<uint32_t> type(pb.type.begin(), pb.type.end());
         std::vector<float> rhs(pb.rhs.begin(), pb.rhs.end()), p(pb.rhs.size(), 0.0f);
         EXPECT_EQ(sim.solve_for_test(type, rhs, p), PF_OK);

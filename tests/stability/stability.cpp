@@ -76,7 +76,7 @@ Soundness Stability::check(pf_sim* sim, const pf_sim_desc& d, size_t expected_co
         s.nonfinite_particles += !finite;
         s.outside += !inside;
     }
-    const Simulation& impl = *sim->impl;
+    const Simulation& impl = *pf::entry(sim)->impl;
     for (const GridBuffer which : {GridBuffer::face_vel, GridBuffer::pressure}) {
         for (const double v : words_as_floats(impl.read_grid(which))) s.nonfinite_grid += !std::isfinite(v);
     }
@@ -97,7 +97,7 @@ void Stability::run(pf_sim* sim, float dt, int frames) {
 }
 
 pf_stats Stability::settled_stats(pf_sim* sim) {
-    sim->impl->api().Finish();
+    pf::entry(sim)->impl->api().Finish();
     pf_stats st{};
     EXPECT_EQ(pf_get_stats(sim, &st), PF_OK);
     return st;

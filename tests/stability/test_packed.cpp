@@ -122,7 +122,7 @@ TEST_P(Packed, FixedPointP2gAtItsLimit) {
     // One substep (0.42 cells at 10 m/s): the accumulators then hold that substep's P2G sums.
     ASSERT_NO_FATAL_FAILURE(run(sim.get(), 1.0f / 240.0f, 1));
     ASSERT_EQ(settled_stats(sim.get()).substeps, 1u);
-    const std::vector<uint32_t> accum = sim->impl->read_grid(GridBuffer::face_accum);
+    const std::vector<uint32_t> accum = pf::entry(sim)->impl->read_grid(GridBuffer::face_accum);
     const size_t face = 4 + 9 * (4 + 8 * 4);  // x-face (4, 4, 4) of the 9 x 8 x 8 x-face lattice
     const int32_t momentum = int32_t(accum[2 * face]), weight = int32_t(accum[2 * face + 1]);
     const double velocity = double(momentum) / double(weight) * d.max_speed;  // momentum_scale = S_w / max_speed
@@ -145,7 +145,7 @@ TEST_P(Packed, FixedPointP2gAtItsLimit) {
     ASSERT_EQ(pf_clear_flags(sim.get()), PF_OK);
     ASSERT_EQ(pf_add_particles(sim.get(), pos.data(), vel.data(), n), PF_OK);
     ASSERT_NO_FATAL_FAILURE(run(sim.get(), 1.0f / 240.0f, 1));
-    const std::vector<uint32_t> again = sim->impl->read_grid(GridBuffer::face_accum);
+    const std::vector<uint32_t> again = pf::entry(sim)->impl->read_grid(GridBuffer::face_accum);
     const double widened_velocity = double(int32_t(again[2 * face])) / double(int32_t(again[2 * face + 1])) * d.max_speed;
     record("sample_velocity_widened", widened_velocity);
     EXPECT_NEAR(widened_velocity, 10.0, 1e-3) << "the widened sums hold the particles' velocity";

@@ -4,9 +4,9 @@
 // owns its programs, buffers and statistics entries, and makes them only when its feature is
 // first turned on (init), so an effect that is off costs nothing: no program is built, no pass
 // dispatched, no statistics entry listed. Adding an effect: a class here, a feature bit in
-// pf.h, one case in make_effect (registry.cpp), and its passes at the stages it needs. Effects
-// that add or remove particles (emitters, sinks) make the simulation keep its live count on
-// the GPU (docs/design.md §9.3).
+// pf.h, one case in make_effect (registry.cpp), its passes at the stages it needs, and its host
+// state in snapshots (save_state / restore_state). Effects that add or remove particles
+// (emitters, sinks) make the simulation keep its live count on the GPU (docs/design.md §9.3).
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -16,6 +16,7 @@
 #include "gl/gl.h"
 #include "pf/pf.h"
 #include "sim/pass_runner.h"
+#include "sim/snapshot_io.h"
 
 namespace pf {
 
@@ -86,6 +87,13 @@ public:
     virtual bool changes_particles() const { return false; }
     // Fastest speed (m/s) it gives particles this step: the CFL estimate includes it.
     virtual float added_speed() const { return 0.0f; }
+    // Snapshots (pf_save_snapshot): appends the host state that determines later steps (its
+    // object list, ids included), whether or not the effect is on. Its GPU state is uploaded
+    // from that state, so it is not saved.
+    virtual void save_state(ByteWriter& out) const = 0;
+    // Reads what save_state wrote and validates it (errors logged, prefixed with fn); replaces
+    // the host state and marks it for upload only if all of it is valid, else changes nothing.
+    virtual pf_result restore_state(ByteReader& in, const Log& log, const char* fn) = 0;
 };
 
 }  // namespace pf

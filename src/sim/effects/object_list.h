@@ -4,7 +4,10 @@
 // order they were added (the order the GPU records are uploaded in).
 #pragma once
 #include <cstdint>
+#include <string>
 #include <vector>
+
+#include "sim/snapshot_io.h"
 
 namespace pf {
 
@@ -39,6 +42,36 @@ public:
     std::vector<T>& items_mutable() { return items_; }
     // The ids of items(), in the same order.
     const std::vector<uint32_t>& ids() const { return ids_; }
+    // Snapshots: item size, count, next id, then each id and item.
+    void save(ByteWriter& out) const {
+        out.put(uint32_t(sizeof(T)));
+        out.put(uint32_t(items_.size()));
+        out.put(next_id_);
+        for (size_t i = 0; i < items_.size(); ++i) {
+            out.put(ids_[i]);
+            out.put(items_[i]);
+        }
+    }
+    // Reads what save() wrote into `out` (a fresh list); `valid(item)` checks each object. Empty
+    // string on success, else what is wrong.
+    template <typename Valid>
+    static std::string load(ByteReader& in, ObjectList& out, Valid&& valid) {
+        uint32_t item_bytes = 0, count = 0;
+        if (!in.get(item_bytes) || !in.get(count) || !in.get(out.next_id_)) return "truncated object list";
+        if (item_bytes != sizeof(T)) return "object size " + std::to_string(item_bytes) + ", this build's is " + std::to_string(sizeof(T));
+        if (count > Capacity) return std::to_string(count) + " objects, more than the capacity " + std::to_string(Capacity);
+        for (uint32_t i = 0; i < count; ++i) {
+            uint32_t id = 0;
+            T item{};
+            if (!in.get(id) || !in.get(item)) return "truncated object list";
+            if (id == 0 || id >= out.next_id_ || (!out.ids_.empty() && id <= out.ids_.back()))
+                return "object ids out of order or beyond the next id";
+            if (!valid(item)) return "an invalid object";
+            out.ids_.push_back(id);
+            out.items_.push_back(item);
+        }
+        return {};
+    }
     uint32_t size() const { return uint32_t(items_.size()); }
 
 private:

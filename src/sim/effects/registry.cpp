@@ -13,8 +13,8 @@ std::unique_ptr<Effect> make_effect(uint32_t feature, const pf_sim_desc& desc) {
     switch (feature) {
         case PF_FEATURE_FORCE_FIELDS: return std::make_unique<ForceFieldsEffect>();
         case PF_FEATURE_OBSTACLES: return std::make_unique<ObstaclesEffect>();
-        case PF_FEATURE_EMITTERS: return std::make_unique<EmittersEffect>(desc.max_particles, desc.seed);
-        case PF_FEATURE_SINKS: return std::make_unique<SinksEffect>(desc.max_particles);
+        case PF_FEATURE_EMITTERS: return std::make_unique<EmittersEffect>(desc);
+        case PF_FEATURE_SINKS: return std::make_unique<SinksEffect>(desc);
         case PF_FEATURE_DOMAIN_MOTION: return std::make_unique<DomainMotionEffect>(desc);
         default: return nullptr;
     }

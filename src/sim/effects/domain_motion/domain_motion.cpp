@@ -6,6 +6,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "api/validate.h"
 #include "common/slots.h"
 
 namespace pf {
@@ -66,6 +67,27 @@ void DomainMotionEffect::run(EffectStage stage, PassRunner& runner, const Effect
                 {Uniform::vec4(PF_LOC_DOMAIN_LINEAR, linear_.x, linear_.y, linear_.z, 0.0f),
                  Uniform::vec4(PF_LOC_DOMAIN_OMEGA, omega_.x, omega_.y, omega_.z, 0.0f),
                  Uniform::vec4(PF_LOC_DOMAIN_ALPHA, alpha_.x, alpha_.y, alpha_.z, 0.0f)}});
+}
+
+void DomainMotionEffect::save_state(ByteWriter& out) const {
+    out.put(motion_);
+    out.put(previous_);
+    out.put(uint32_t(has_previous_));
+}
+
+pf_result DomainMotionEffect::restore_state(ByteReader& in, const Log& log, const char* fn) {
+    pf_domain_motion motion{}, previous{};
+    uint32_t has_previous = 0;
+    if (!in.get(motion) || !in.get(previous) || !in.get(has_previous))
+        return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": the domain motion in the snapshot is truncated");
+    const Log silent;
+    if (validate_domain_motion(motion, silent, fn) != PF_OK || validate_domain_motion(previous, silent, fn) != PF_OK ||
+        has_previous > 1)
+        return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": the domain motion in the snapshot is invalid");
+    motion_ = motion;
+    previous_ = previous;
+    has_previous_ = has_previous != 0;
+    return PF_OK;
 }
 
 glm::mat4 DomainMotionEffect::domain_to_world() const {

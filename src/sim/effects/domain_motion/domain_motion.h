@@ -23,6 +23,9 @@ public:
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;
     // The frame adds energy to the liquid whenever it is not an inertial one at rest in gravity.
     bool does_work() const override { return moving_; }
+    // The motion, the previous step's motion (the next acceleration) and whether there is one.
+    void save_state(ByteWriter& out) const override;
+    pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;
 
     // pf_set_domain_motion (validated); the next step's accelerations follow from it.
     void set(const pf_domain_motion& motion) { motion_ = motion; }

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <string>
 
+#include "api/validate.h"
 #include "common/slots.h"
 #include "effects/emitters/emitter_records.h"
 
@@ -27,8 +28,20 @@ pf_result EmittersEffect::init(const gl::Api& gl, PassRunner& runner, const Log&
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
-    records_ = gl::Buffer(gl, size_t(PF_MAX_EMITTERS) * PF_EMITTER_VEC4S * 16, GL_DYNAMIC_DRAW);
+    records_ = gl::Buffer(gl, size_t(PF_MAX_EMITTERS) * PF_EMITTER_VEC4S * 16, GL_DYNAMIC_DRAW, "emitters");
     stat_ = runner.add_stat("emit", PF_PASS_ADVECT);
+    return PF_OK;
+}
+
+pf_result EmittersEffect::restore_state(ByteReader& in, const Log& log, const char* fn) {
+    // The owed fractions and sequence positions come back too: emission continues exactly.
+    List staged;
+    const Log silent;  // one message for the whole list below
+    const std::string error = List::load(in, staged, [&](const Emitter& e) {
+        return validate_emitter(e.desc, desc_, silent, fn) == PF_OK && std::isfinite(e.owed) && e.owed >= 0.0;
+    });
+    if (!error.empty()) return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": emitters in the snapshot: " + error);
+    list_ = std::move(staged);
     return PF_OK;
 }
 

@@ -21,7 +21,8 @@ public:
     };
     using List = ObjectList<Emitter, PF_MAX_EMITTERS>;
 
-    EmittersEffect(uint32_t capacity, uint32_t seed) : capacity_(capacity), seed_(seed) {}
+    // `desc` resolved and validated: its capacity, seed and domain (snapshots validate against it).
+    explicit EmittersEffect(const pf_sim_desc& desc) : desc_(desc), capacity_(desc.max_particles), seed_(desc.seed) {}
     uint32_t feature() const override { return PF_FEATURE_EMITTERS; }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
     void begin_frame(const FrameInfo& frame) override;
@@ -31,12 +32,15 @@ public:
     uint32_t particles_added() const override { return total_; }
     bool changes_particles() const override { return total_ > 0; }
     float added_speed() const override;
+    void save_state(ByteWriter& out) const override { list_.save(out); }
+    pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;
 
     List& list() { return list_; }
     // pf_set_emitter: replaces the description, keeps what the emitter still owes.
     bool set(uint32_t id, const pf_emitter& emitter);
 
 private:
+    pf_sim_desc desc_;
     uint32_t capacity_;
     List list_;
     gl::Buffer records_;  // PF_MAX_EMITTERS records (effects/emitters/emitter_records.h)

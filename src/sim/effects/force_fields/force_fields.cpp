@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "api/validate.h"
 #include "common/slots.h"
 #include "effects/force_fields/force_field_types.h"
 
@@ -17,7 +18,7 @@ static_assert(PF_FORCE_FIELD_VORTEX_ID == PF_FORCE_FIELD_VORTEX, "type ids share
 pf_result ForceFieldsEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
     if (std::string error = runner.prepare(gl::ProgramId::force_fields); !error.empty())
         return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    records_ = gl::Buffer(gl, size_t(PF_MAX_FORCE_FIELDS) * PF_FORCE_FIELD_VEC4S * 16, GL_DYNAMIC_DRAW);
+    records_ = gl::Buffer(gl, size_t(PF_MAX_FORCE_FIELDS) * PF_FORCE_FIELD_VEC4S * 16, GL_DYNAMIC_DRAW, "force_fields");
     stat_ = runner.add_stat("force_fields", PF_PASS_GRID_FORCES);
     dirty_ = true;
     return PF_OK;
@@ -70,6 +71,19 @@ void ForceFieldsEffect::run(EffectStage stage, PassRunner& runner, const EffectB
                 {{PF_SLOT_FACE_ACCUM, &b.face_accum}, {PF_SLOT_FACE_VEL, &b.face_vel}, {PF_SLOT_FORCE_FIELDS, &records_}},
                 {},
                 {Uniform::uint1(PF_LOC_EFFECT_COUNT, uploaded_)}});
+}
+
+void ForceFieldsEffect::save_state(ByteWriter& out) const { list_.save(out); }
+
+pf_result ForceFieldsEffect::restore_state(ByteReader& in, const Log& log, const char* fn) {
+    List staged;
+    const Log silent;  // one message for the whole list below
+    const std::string error =
+        List::load(in, staged, [&](const pf_force_field& item) { return validate_force_field(item, silent, fn) == PF_OK; });
+    if (!error.empty()) return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": force fields in the snapshot: " + error);
+    list_ = std::move(staged);
+    dirty_ = true;
+    return PF_OK;
 }
 
 }  // namespace pf

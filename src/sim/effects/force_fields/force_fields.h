@@ -15,6 +15,8 @@ public:
     uint32_t feature() const override { return PF_FEATURE_FORCE_FIELDS; }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
     void begin_step() override;
+    void save_state(ByteWriter& out) const override;
+    pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;
     bool does_work() const override { return list_.size() > 0; }
 

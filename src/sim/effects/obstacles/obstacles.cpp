@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "api/validate.h"
 #include "common/slots.h"
+#include "gl/debug.h"
 #include "effects/obstacles/obstacle_shapes.h"
 
 namespace pf {
@@ -73,10 +75,11 @@ pf_result ObstaclesEffect::init(const gl::Api& gl, PassRunner& runner, const Log
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
     gl_ = &gl;
-    records_ = gl::Buffer(gl, size_t(PF_MAX_OBSTACLES) * PF_OBSTACLE_VEC4S * 16, GL_DYNAMIC_DRAW);
-    forces_ = gl::Buffer(gl, kForceBytes, GL_DYNAMIC_COPY);
-    for (gl::Buffer& b : readback_) b = gl::Buffer(gl, kForceBytes, GL_STREAM_READ);
+    records_ = gl::Buffer(gl, size_t(PF_MAX_OBSTACLES) * PF_OBSTACLE_VEC4S * 16, GL_DYNAMIC_DRAW, "obstacles");
+    forces_ = gl::Buffer(gl, kForceBytes, GL_DYNAMIC_COPY, "obstacle_forces");
+    for (gl::Buffer& b : readback_) b = gl::Buffer(gl, kForceBytes, GL_STREAM_READ, "obstacle_forces_readback");
     sdf_sampler_ = gl::Object(gl, gl::ObjectKind::sampler);
+    gl::label_object(gl, GL_SAMPLER, sdf_sampler_.id(), "obstacle_sdf_sampler");
     gl.SamplerParameteri(sdf_sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     gl.SamplerParameteri(sdf_sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
@@ -218,6 +221,19 @@ bool ObstaclesEffect::force(uint32_t id, pf_obstacle_force& out) const {
     for (const auto& e : latest_)
         if (e.first == id) out = e.second;
     return true;
+}
+
+void ObstaclesEffect::save_state(ByteWriter& out) const { list_.save(out); }
+
+pf_result ObstaclesEffect::restore_state(ByteReader& in, const Log& log, const char* fn) {
+    List staged;
+    const Log silent;  // one message for the whole list below
+    const std::string error =
+        List::load(in, staged, [&](const ObstacleEntry& item) { return validate_obstacle(item.obstacle, silent, fn) == PF_OK; });
+    if (!error.empty()) return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": obstacles in the snapshot: " + error);
+    list_ = std::move(staged);
+    dirty_ = true;
+    return PF_OK;
 }
 
 }  // namespace pf

@@ -37,6 +37,8 @@ public:
     uint32_t feature() const override { return PF_FEATURE_OBSTACLES; }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
     void begin_step() override;
+    void save_state(ByteWriter& out) const override;
+    pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;
     void end_step(PassRunner& runner, uint64_t step) override;
     // Moving obstacles put energy into the liquid.

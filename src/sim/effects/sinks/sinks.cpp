@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "api/validate.h"
 #include "common/slots.h"
 #include "effects/sinks/sink_records.h"
 
@@ -18,12 +19,23 @@ pf_result SinksEffect::init(const gl::Api& gl, PassRunner& runner, const Log& lo
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
-    records_ = gl::Buffer(gl, size_t(PF_MAX_SINKS) * PF_SINK_VEC4S * 16, GL_DYNAMIC_DRAW);
-    state_ = gl::Buffer(gl, PF_SINK_STATE_WORDS * 4, GL_DYNAMIC_COPY);
+    records_ = gl::Buffer(gl, size_t(PF_MAX_SINKS) * PF_SINK_VEC4S * 16, GL_DYNAMIC_DRAW, "sinks");
+    state_ = gl::Buffer(gl, PF_SINK_STATE_WORDS * 4, GL_DYNAMIC_COPY, "sink_state");
     // Each list holds at most the removed count (<= capacity) entries.
-    holes_ = gl::Buffer(gl, size_t(capacity_) * 4, GL_DYNAMIC_COPY);
-    movers_ = gl::Buffer(gl, size_t(capacity_) * 4, GL_DYNAMIC_COPY);
+    holes_ = gl::Buffer(gl, size_t(capacity_) * 4, GL_DYNAMIC_COPY, "sink_holes");
+    movers_ = gl::Buffer(gl, size_t(capacity_) * 4, GL_DYNAMIC_COPY, "sink_movers");
     stat_ = runner.add_stat("sinks", PF_PASS_ADVECT);
+    dirty_ = true;
+    return PF_OK;
+}
+
+pf_result SinksEffect::restore_state(ByteReader& in, const Log& log, const char* fn) {
+    List staged;
+    const Log silent;  // one message for the whole list below
+    const std::string error =
+        List::load(in, staged, [&](const pf_sink& k) { return validate_sink(k, desc_, silent, fn) == PF_OK; });
+    if (!error.empty()) return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": sinks in the snapshot: " + error);
+    list_ = std::move(staged);
     dirty_ = true;
     return PF_OK;
 }

@@ -13,18 +13,22 @@ namespace pf {
 class SinksEffect final : public Effect {
 public:
     using List = ObjectList<pf_sink, PF_MAX_SINKS>;
-    explicit SinksEffect(uint32_t capacity) : capacity_(capacity) {}
+    // `desc` resolved and validated: its capacity and domain (snapshots validate against it).
+    explicit SinksEffect(const pf_sim_desc& desc) : desc_(desc), capacity_(desc.max_particles) {}
     uint32_t feature() const override { return PF_FEATURE_SINKS; }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
     void begin_step() override;
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;
     bool changes_particles() const override { return uploaded_ > 0; }
+    void save_state(ByteWriter& out) const override { list_.save(out); }
+    pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;
 
     // The host list; call changed() after editing it.
     List& list() { return list_; }
     void changed() { dirty_ = true; }
 
 private:
+    pf_sim_desc desc_;
     uint32_t capacity_;
     List list_;
     bool dirty_ = true;

@@ -40,11 +40,11 @@ pf_result ConjugateGradientSolver::init(const gl::Api& gl, PassRunner& runner, c
                                         const Log& log, const char* fn) {
     grid_ = grid;
     const size_t bytes = size_t(grid.cells) * 4;
-    r_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY);
-    p_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY);
-    q_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY);
-    working_type_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY);
-    if (kind_ == Preconditioner::stored) z_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY);
+    r_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_r");
+    p_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_p");
+    q_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_q");
+    working_type_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_working_type");
+    if (kind_ == Preconditioner::stored) z_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_z");
     std::string error = control_.init(gl, runner, grid);
     const ProgramId programs[] = {init_program(),      update_program(),    direction_program(),
                                   ProgramId::cg_matvec, ProgramId::cg_start, ProgramId::cg_alpha,

@@ -9,7 +9,7 @@ namespace pf {
 pf_result JacobiSolver::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid, const Log& log,
                              const char* fn) {
     grid_ = grid;
-    scratch_ = gl::Buffer(gl, size_t(grid.cells) * 4, GL_DYNAMIC_COPY);
+    scratch_ = gl::Buffer(gl, size_t(grid.cells) * 4, GL_DYNAMIC_COPY, "jacobi_scratch");
     std::string error = control_.init(gl, runner, grid);
     if (error.empty()) error = runner.prepare(gl::ProgramId::jacobi);
     if (!error.empty()) return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);

@@ -19,14 +19,14 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         level.record = fine ? control.record(0) : control.record(control.add_record(level.cells));
         const size_t bytes = size_t(level.cells) * 4;
         if (!fine) {
-            level.type = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY);
-            level.r = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY);
-            level.e = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY);
+            level.type = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_type");
+            level.r = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_r");
+            level.e = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_e");
         }
         const glm::ivec3 next = (dims + 1) / 2;
         const bool coarsest = level.cells <= PF_MG_COARSE_CELLS || glm::any(glm::lessThan(next, glm::ivec3(2))) ||
                               levels_.size() + 1 == PF_MG_MAX_LEVELS;
-        if (!coarsest) level.tmp = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY);
+        if (!coarsest) level.tmp = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_tmp");
         levels_.push_back(std::move(level));
         if (coarsest) break;
         dims = next;

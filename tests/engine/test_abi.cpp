@@ -1,0 +1,252 @@
+// The ABI rules of pf.h (src/api/abi.h): a caller compiled against an older header passes
+// smaller structs (struct_size = its sizeof) and gets the defaults for the fields it lacks; the
+// library reads and writes no byte beyond struct_size (each struct sits in a buffer whose bytes
+// after it are poison that would fail validation or show as changed); a zero-initialised struct
+// means the defaults for every field; pf_create refuses a header of another major.minor version.
+#include <glad/gl.h>
+
+#include <cstddef>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "support/render_fixture.h"
+
+namespace pf::test {
+namespace {
+
+constexpr float kDt = 1.0f / 60.0f;
+
+// pf_sim_params of a header without its last field (energy_gain_limit).
+struct OldParams {
+    uint32_t struct_size;
+    float gravity[3];
+    float flip_ratio;
+    uint32_t pressure_iterations;
+    float jacobi_omega;
+    float cfl;
+    uint32_t max_substeps;
+    uint32_t extrapolation_layers;
+    uint32_t separation;
+    pf_pressure_solver pressure_solver;
+    float pressure_tolerance;
+    float sor_omega;
+    pf_transfer transfer;
+    pf_advection advection;
+    float volume_correction;
+    pf_p2g p2g;
+    float volume_loss_limit;
+};
+static_assert(sizeof(OldParams) + 4 == sizeof(pf_sim_params), "one field fewer");
+static_assert(offsetof(OldParams, volume_loss_limit) == offsetof(pf_sim_params, volume_loss_limit), "same prefix");
+
+// pf_sim_desc of a header without `features`, holding params of that older layout.
+struct OldDesc {
+    uint32_t struct_size;
+    uint32_t header_version;
+    uint32_t grid_size[3];
+    float cell_size;
+    float origin[3];
+    uint32_t max_particles;
+    float max_speed;
+    float density;
+    uint32_t fill_particles_per_cell;
+    float fill_jitter;
+    uint32_t seed;
+    OldParams params;
+    pf_gl_get_proc_address_fn gl_get_proc_address;
+    pf_logger logger;
+};
+static_assert(offsetof(OldDesc, params) == offsetof(pf_sim_desc, params), "same head");
+
+// The old params as an older caller's pf_default_sim_params() would give them.
+OldParams old_default_params() {
+    const pf_sim_params d = pf_default_sim_params();
+    OldParams p;
+    std::memcpy(&p, &d, sizeof p);
+    p.struct_size = sizeof p;
+    return p;
+}
+
+// A struct of `bytes` bytes followed by poison (0xFF: NaN floats, huge counts, all feature bits).
+template <typename T>
+struct Poisoned {
+    explicit Poisoned(const T& value) : bytes(sizeof(T) + 64, 0xFF) { std::memcpy(bytes.data(), &value, sizeof(T)); }
+    void* data() { return bytes.data(); }
+    bool tail_intact() const {
+        for (size_t i = sizeof(T); i < bytes.size(); ++i)
+            if (bytes[i] != 0xFF) return false;
+        return true;
+    }
+    std::vector<uint8_t> bytes;
+};
+
+class Abi : public RenderTest {};
+
+TEST_F(Abi, OlderParamsWithoutTheirLastFieldTakeItsDefault) {
+    OldParams old = old_default_params();
+    old.flip_ratio = 0.5f;
+    old.volume_loss_limit = 0.3f;
+    Poisoned<OldParams> buf(old);
+    ASSERT_EQ(pf_set_params(sim_.get(), static_cast<const pf_sim_params*>(buf.data())), PF_OK) << last_log();
+    pf_sim_params got{};
+    ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
+    EXPECT_EQ(got.flip_ratio, 0.5f);
+    EXPECT_EQ(got.volume_loss_limit, 0.3f);
+    EXPECT_EQ(got.energy_gain_limit, pf_default_sim_params().energy_gain_limit) << "the missing field's default";
+    EXPECT_TRUE(buf.tail_intact());
+
+    // Written back to the older caller: only its bytes, struct_size saying how many.
+    Poisoned<OldParams> out(OldParams{});
+    reinterpret_cast<OldParams*>(out.data())->struct_size = sizeof(OldParams);
+    ASSERT_EQ(pf_get_params(sim_.get(), static_cast<pf_sim_params*>(out.data())), PF_OK);
+    const auto* o = reinterpret_cast<const OldParams*>(out.data());
+    EXPECT_EQ(o->struct_size, uint32_t(sizeof(OldParams)));
+    EXPECT_EQ(o->flip_ratio, 0.5f);
+    EXPECT_TRUE(out.tail_intact()) << "pf_get_params wrote beyond struct_size";
+}
+
+TEST_F(Abi, OlderDescWithOlderParamsAndNoFeaturesCreates) {
+    const pf_sim_desc cur = test_desc(8, 8, 8);
+    OldDesc old{};
+    std::memcpy(&old, &cur, offsetof(OldDesc, params));  // the head: same layout
+    old.struct_size = sizeof old;
+    old.params = old_default_params();
+    old.params.cfl = 2.0f;
+    old.gl_get_proc_address = cur.gl_get_proc_address;
+    old.logger = cur.logger;
+    Poisoned<OldDesc> buf(old);
+    pf_sim* s = nullptr;
+    clear_log();
+    ASSERT_EQ(pf_create(static_cast<const pf_sim_desc*>(buf.data()), &s), PF_OK) << last_log();
+    SimPtr sim(s);
+    uint32_t features = 99;
+    ASSERT_EQ(pf_get_features(s, &features), PF_OK);
+    EXPECT_EQ(features, 0u) << "the missing features field is read as poison instead of its default";
+    pf_sim_params got{};
+    ASSERT_EQ(pf_get_params(s, &got), PF_OK);
+    EXPECT_EQ(got.cfl, 2.0f);
+    EXPECT_EQ(got.energy_gain_limit, pf_default_sim_params().energy_gain_limit);
+    // The logger was found after the older (shorter) params: a refused call reaches it.
+    clear_log();
+    EXPECT_EQ(pf_step(s, -1.0f), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_NE(std::string(last_log()).find("pf_step"), std::string::npos) << "logger not found: " << last_log();
+    const float lo[3] = {0.1f, 0.1f, 0.1f}, hi[3] = {0.4f, 0.4f, 0.4f};
+    ASSERT_EQ(pf_fill_box(s, lo, hi, nullptr), PF_OK);
+    EXPECT_EQ(pf_step(s, kDt), PF_OK) << last_log();
+    EXPECT_TRUE(buf.tail_intact());
+}
+
+TEST_F(Abi, OlderStatsGetOnlyTheirBytes) {
+    constexpr uint32_t kOld = offsetof(pf_stats, energy_drift);  // a header without energy_drift
+    std::vector<uint8_t> buf(sizeof(pf_stats) + 64, 0xFF);
+    std::memcpy(buf.data(), &kOld, 4);
+    ASSERT_EQ(pf_get_stats(sim_.get(), reinterpret_cast<pf_stats*>(buf.data())), PF_OK);
+    uint32_t written = 0, capacity = 0;
+    std::memcpy(&written, buf.data(), 4);
+    std::memcpy(&capacity, buf.data() + offsetof(pf_stats, max_particles), 4);
+    EXPECT_EQ(written, kOld);
+    EXPECT_EQ(capacity, 1u << 16);  // RenderTest's max_particles
+    for (size_t i = kOld; i < buf.size(); ++i) ASSERT_EQ(buf[i], 0xFF) << "byte " << i << " written beyond struct_size";
+    // Zero (a zero-initialised pf_stats): this header's whole struct.
+    pf_stats st{};
+    ASSERT_EQ(pf_get_stats(sim_.get(), &st), PF_OK);
+    EXPECT_EQ(st.struct_size, uint32_t(sizeof(pf_stats)));
+    EXPECT_EQ(st.max_particles, capacity);
+}
+
+TEST_F(Abi, NewerCallersStructsAreAcceptedAndTheirExtraFieldsIgnored) {
+    // A caller whose pf_sim_params has 8 more bytes than this library knows.
+    std::vector<uint8_t> buf(sizeof(pf_sim_params) + 8, 0xAB);
+    ASSERT_EQ(pf_init_sim_params(reinterpret_cast<pf_sim_params*>(buf.data()), uint32_t(buf.size())), PF_OK);
+    uint32_t size = 0;
+    std::memcpy(&size, buf.data(), 4);
+    EXPECT_EQ(size, uint32_t(buf.size()));
+    for (size_t i = sizeof(pf_sim_params); i < buf.size(); ++i) EXPECT_EQ(buf[i], 0) << "unknown fields are zeroed";
+    ASSERT_EQ(pf_set_params(sim_.get(), reinterpret_cast<const pf_sim_params*>(buf.data())), PF_OK) << last_log();
+}
+
+TEST_F(Abi, BadStructSizesAreRefusedAndLogged) {
+    for (uint32_t bad : {1u, 2u, 3u, 6u, 81u}) {
+        SCOPED_TRACE(bad);
+        pf_sim_params p = pf_default_sim_params();
+        p.struct_size = bad;
+        clear_log();
+        EXPECT_EQ(pf_set_params(sim_.get(), &p), PF_ERROR_INVALID_ARGUMENT);
+        EXPECT_NE(std::string(last_log()).find("struct_size"), std::string::npos) << last_log();
+        pf_stats st{};
+        st.struct_size = bad;
+        EXPECT_EQ(pf_get_stats(sim_.get(), &st), PF_ERROR_INVALID_ARGUMENT);
+        pf_sim_desc d = test_desc(8, 8, 8);
+        d.struct_size = bad;
+        pf_sim* s = nullptr;
+        EXPECT_EQ(pf_create(&d, &s), PF_ERROR_INVALID_ARGUMENT);
+        EXPECT_EQ(s, nullptr);
+        EXPECT_EQ(pf_init_sim_params(&p, bad), PF_ERROR_INVALID_ARGUMENT);
+    }
+    EXPECT_EQ(pf_init_sim_params(nullptr, sizeof(pf_sim_params)), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_init_sim_desc(nullptr, sizeof(pf_sim_desc)), PF_ERROR_INVALID_ARGUMENT);
+    pf_ssf_params ssf{};
+    EXPECT_EQ(pf_init_ssf_params(&ssf, 0), PF_ERROR_INVALID_ARGUMENT);
+    pf_particle_params pp{};
+    EXPECT_EQ(pf_init_particle_params(&pp, 2), PF_ERROR_INVALID_ARGUMENT);
+}
+
+TEST_F(Abi, HeaderVersionMustMatchMajorMinor) {
+    struct Case {
+        uint32_t version;
+        pf_result want;
+    };
+    const uint32_t v = PF_VERSION;
+    for (const Case& c : {Case{v, PF_OK}, Case{0, PF_OK}, Case{v + 1, PF_OK} /* another patch */,
+                          Case{v + 100, PF_ERROR_INVALID_ARGUMENT} /* another minor */,
+                          Case{v + 10000, PF_ERROR_INVALID_ARGUMENT} /* another major */}) {
+        SCOPED_TRACE(c.version);
+        pf_sim_desc d = test_desc(8, 8, 8);
+        EXPECT_EQ(d.header_version, v) << "pf_default_sim_desc sets it";
+        d.header_version = c.version;
+        pf_sim* s = nullptr;
+        clear_log();
+        EXPECT_EQ(pf_create(&d, &s), c.want) << last_log();
+        if (c.want != PF_OK) {
+            EXPECT_EQ(s, nullptr);
+            EXPECT_NE(std::string(last_log()).find("compiled against pf.h"), std::string::npos) << last_log();
+        }
+        pf_destroy(s);
+    }
+}
+
+// Zero-initialised structs mean the defaults for every field: a desc with only the loader set
+// creates the default simulation, and zeroed render parameters draw with the default look
+// (a zero shininess or light direction would otherwise be refused).
+TEST_F(Abi, ZeroInitialisedStructsMeanDefaults) {
+    pf_sim_desc d{};
+    d.gl_get_proc_address = get_proc;
+    pf_sim* s = nullptr;
+    ASSERT_EQ(pf_create(&d, &s), PF_OK) << last_log();
+    SimPtr sim(s);
+    pf_stats st{};
+    ASSERT_EQ(pf_get_stats(s, &st), PF_OK);
+    EXPECT_EQ(st.max_particles, pf_default_sim_desc().max_particles);
+    pf_sim_params got{};
+    ASSERT_EQ(pf_get_params(s, &got), PF_OK);
+    const pf_sim_params def = pf_default_sim_params();
+    EXPECT_EQ(0, std::memcmp(&got, &def, sizeof got));
+
+    add({0.8f, 0.8f, 0.8f});
+    EngineTarget t(32, 32, GL_RGBA8);
+    const int vp[4] = {0, 0, 32, 32};
+    const TestCamera c = camera(vp);
+    const pf_render_target target{t.fbo, t.color, t.depth, 0};
+    const pf_ssf_params zero_ssf{};
+    EXPECT_EQ(pf_render_ssf(sim_.get(), &c.cam, &target, &zero_ssf), PF_OK) << last_log();
+    const pf_particle_params zero_particles{};
+    EXPECT_EQ(pf_render_particles(sim_.get(), &c.cam, &target, &zero_particles), PF_OK) << last_log();
+    // With struct_size set, the same zero shininess is literal, hence refused.
+    pf_ssf_params literal = pf_default_ssf_params();
+    literal.shininess = 0.0f;
+    EXPECT_EQ(pf_render_ssf(sim_.get(), &c.cam, &target, &literal), PF_ERROR_INVALID_ARGUMENT);
+}
+
+}  // namespace
+}  // namespace pf::test
