@@ -31,7 +31,9 @@
 //                   "radius": 0.05, "velocity": [..], "rate": 0.002,
 //                   "rate_unit": "volume_per_second" } ],          pf_emitter
 //   "sinks": [ { "shape": "box", "position": [..], "rotation": [..], "half_extents": [..],
-//                "radius": 0.1 } ]                                  pf_sink
+//                "radius": 0.1 } ],                                 pf_sink
+//   "domain_motion": { "position": [..], "rotation": [..], "velocity": [..],
+//                      "angular_velocity": [..] }                  pf_domain_motion, set once
 // }
 // Effect objects start from pf_default_*() and take the keys given; the library validates them
 // when the scene is created, and an error names the object's JSON Pointer ("/emitters/1").
@@ -83,6 +85,8 @@ struct Scene {
     std::vector<pf_obstacle> obstacles;
     std::vector<pf_emitter> emitters;
     std::vector<pf_sink> sinks;
+    bool has_domain_motion = false;
+    pf_domain_motion domain_motion{};
 
     /// World-space bounds of the grid.
     vec3f domain_min() const { return origin; }

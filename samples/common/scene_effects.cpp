@@ -155,6 +155,16 @@ void add_list(pf_sim* sim, const Scene& s, const char* key, const std::vector<T>
     }
 }
 
+pf_domain_motion read_motion(const ObjectReader& r) {
+    r.p.check_keys(r.obj, r.path, {"position", "rotation", "velocity", "angular_velocity"});
+    pf_domain_motion m = pf_default_domain_motion();
+    r.vec3("position", m.position);
+    r.rotation(m.rotation);
+    r.vec3("velocity", m.velocity);
+    r.vec3("angular_velocity", m.angular_velocity);
+    return m;
+}
+
 } // namespace
 
 void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
@@ -175,6 +185,12 @@ void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
     read_list(p, root, "obstacles", PF_FEATURE_OBSTACLES, s, s.obstacles, read_obstacle);
     read_list(p, root, "emitters", PF_FEATURE_EMITTERS, s, s.emitters, read_emitter);
     read_list(p, root, "sinks", PF_FEATURE_SINKS, s, s.sinks, read_sink);
+    if (auto it = root.find("domain_motion"); it != root.end()) {
+        if (!(s.features & PF_FEATURE_DOMAIN_MOTION))
+            p.fail("/domain_motion", "is given but \"domain_motion\" is not listed in /features");
+        s.domain_motion = read_motion(ObjectReader{p, p.object(*it, "/domain_motion"), "/domain_motion"});
+        s.has_domain_motion = true;
+    }
 }
 
 uint32_t parse_feature_list(const std::string& list, const char* what) {
@@ -207,6 +223,8 @@ SceneEffectIds add_scene_effects(pf_sim* sim, const Scene& s) {
     add_list(sim, s, "obstacles", s.obstacles, pf_add_obstacle, ids.obstacles);
     add_list(sim, s, "emitters", s.emitters, pf_add_emitter, ids.emitters);
     add_list(sim, s, "sinks", s.sinks, pf_add_sink, ids.sinks);
+    if (s.has_domain_motion && pf_set_domain_motion(sim, &s.domain_motion) != PF_OK)
+        throw Error(s.path + ": /domain_motion: refused by the library (the log says why)");
     return ids;
 }
 

@@ -118,6 +118,10 @@ std::vector<BadScene> bad_scenes() {
         {"effect_list_not_array", with(R"("features": ["sinks"], "sinks": {"shape": "box"})"), "/sinks",
          "must be an array of objects"},
         {"preset_unknown", with(R"("preset": "ultra")"), "/preset", "ultra"},
+        {"domain_motion_without_feature", with(R"("domain_motion": {"velocity": [1, 0, 0]})"), "/domain_motion",
+         "is not listed in /features"},
+        {"domain_motion_unknown_key", with(R"("features": ["domain_motion"], "domain_motion": {"spin": [1, 0, 0]})"),
+         "/domain_motion/spin", "is not a known key"},
     };
 }
 
