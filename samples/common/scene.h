@@ -26,7 +26,9 @@
 //   "force_fields": [ { "type": "point", "position": [..], "vector": [..], "strength": 5,
 //                       "radius": 0.5, "drag": 0 } ],               pf_force_field (needs the feature)
 //   "obstacles": [ { "shape": "sphere", "position": [..], "rotation": [x,y,z,w],
-//                    "half_extents": [..], "radius": 0.1, "half_height": 0 } ],  pf_obstacle
+//                    "half_extents": [..], "radius": 0.1, "half_height": 0,
+//                    "float_density": 500 } ],   pf_obstacle; with float_density (kg/m^3) the
+//                                               samples float it as a rigid body (floating.h)
 //   "emitters": [ { "shape": "disc", "position": [..], "rotation": [..], "half_extents": [..],
 //                   "radius": 0.05, "velocity": [..], "rate": 0.002,
 //                   "rate_unit": "volume_per_second" } ],          pf_emitter
@@ -83,6 +85,7 @@ struct Scene {
     uint32_t features = 0;           // PF_FEATURE_* bits named by "features"
     std::vector<pf_force_field> force_fields;
     std::vector<pf_obstacle> obstacles;
+    std::vector<float> obstacle_float_density;  // per obstacle; 0: moved only by the app
     std::vector<pf_emitter> emitters;
     std::vector<pf_sink> sinks;
     bool has_domain_motion = false;
@@ -118,6 +121,10 @@ void fill_scene(pf_sim* sim, const Scene& scene);
 struct SceneEffectIds {
     std::vector<uint32_t> force_fields, obstacles, emitters, sinks;
 };
+
+/// The scene's floating obstacles (float_density), registered with their ids.
+class FloatingBodies;
+void float_scene_obstacles(const Scene& scene, const SceneEffectIds& ids, FloatingBodies& out);
 
 /// Adds the scene's force fields, obstacles, emitters and sinks to sim. Throws pfs::Error naming
 /// the object's JSON Pointer and the library's reason on failure.

@@ -3,6 +3,7 @@
 // added to a simulation with the object's JSON Pointer in every error.
 #include "scene_effects.h"
 
+#include "floating.h"
 #include "scene_parser.h"
 
 #include <algorithm>
@@ -88,7 +89,7 @@ pf_force_field read_field(const ObjectReader& r) {
 }
 
 pf_obstacle read_obstacle(const ObjectReader& r) {
-    r.p.check_keys(r.obj, r.path, {"shape", "position", "rotation", "half_extents", "radius", "half_height"});
+    r.p.check_keys(r.obj, r.path, {"shape", "position", "rotation", "half_extents", "radius", "half_height", "float_density"});
     pf_obstacle o = pf_default_obstacle();
     if (const json* j = r.find("shape")) o.shape = enum_value(r.p, *j, r.at("shape"), kObstacleShapes);
     r.vec3("position", o.position);
@@ -183,6 +184,12 @@ void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
     }
     read_list(p, root, "force_fields", PF_FEATURE_FORCE_FIELDS, s, s.force_fields, read_field);
     read_list(p, root, "obstacles", PF_FEATURE_OBSTACLES, s, s.obstacles, read_obstacle);
+    for (size_t i = 0; i < s.obstacles.size(); ++i) {
+        const json& o = root.at("obstacles")[i];
+        auto it = o.find("float_density");
+        const std::string at = Parser::join(Parser::join("/obstacles", i), "float_density");
+        s.obstacle_float_density.push_back(it == o.end() ? 0.0f : p.real(*it, at, 0.0, 1e6, true));
+    }
     read_list(p, root, "emitters", PF_FEATURE_EMITTERS, s, s.emitters, read_emitter);
     read_list(p, root, "sinks", PF_FEATURE_SINKS, s, s.sinks, read_sink);
     if (auto it = root.find("domain_motion"); it != root.end()) {
@@ -215,6 +222,12 @@ uint32_t parse_feature_list(const std::string& list, const char* what) {
         }
     }
     return bits;
+}
+
+void float_scene_obstacles(const Scene& s, const SceneEffectIds& ids, FloatingBodies& out) {
+    for (size_t i = 0; i < s.obstacles.size() && i < ids.obstacles.size(); ++i) {
+        if (s.obstacle_float_density[i] > 0.0f) out.add(ids.obstacles[i], s.obstacles[i], s.obstacle_float_density[i]);
+    }
 }
 
 SceneEffectIds add_scene_effects(pf_sim* sim, const Scene& s) {

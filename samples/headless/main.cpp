@@ -23,6 +23,7 @@
 #include "gl_util.h"
 #include "image_write.h"
 #include "ply_write.h"
+#include "floating.h"
 #include "scene.h"
 #include "util.h"
 #include "world.h"
@@ -301,7 +302,8 @@ int run(int argc, char** argv) {
     const double create_ms = pfs::now_ms() - t0;
     t0 = pfs::now_ms();
     pfs::fill_scene(sim.get(), scene);
-    pfs::add_scene_effects(sim.get(), scene);
+    pfs::FloatingBodies floating;
+    pfs::float_scene_obstacles(scene, pfs::add_scene_effects(sim.get(), scene), floating);
     glFinish();
     const double fill_ms = pfs::now_ms() - t0;
 
@@ -425,6 +427,7 @@ int run(int argc, char** argv) {
     for (uint32_t f = 1; f <= frames; ++f) {
         glFinish();
         const double s0 = pfs::now_ms();
+        pfs::check(floating.step(sim.get(), scene.frame_dt, scene.params.gravity), "floating obstacles");
         pfs::check(pf_step(sim.get(), scene.frame_dt), "pf_step");
         glFinish();
         const double s1 = pfs::now_ms();

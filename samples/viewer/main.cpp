@@ -32,6 +32,7 @@
 #include "camera.h"
 #include "gl_util.h"
 #include "image_write.h"
+#include "floating.h"
 #include "scene.h"
 #include "util.h"
 #include "world.h"
@@ -362,6 +363,7 @@ private:
     LogCapture log_; // before sim_: the sim logs into it until destroyed
     pfs::Scene scene_;
     pfs::SceneEffectIds effect_ids_;    // the library's ids of scene_'s objects
+    pfs::FloatingBodies floating_;      // scene_'s floating obstacles
     std::string effects_error_;         // why the last effects edit was refused
     std::string scene_path_;
     std::vector<std::string> scene_files_;
@@ -417,6 +419,8 @@ void Viewer::load_scene(const std::string& path) {
     scene_path_ = path;
     sim_.reset(pfs::create_scene_sim(scene_, glfw_get_proc, log_.logger(), &effect_ids_));
     effects_error_.clear();
+    floating_ = pfs::FloatingBodies{};
+    pfs::float_scene_obstacles(scene_, effect_ids_, floating_);
     pfs::check(pf_get_params(sim_.get(), &params_), "pf_get_params");
     preset_ = 0;
     params_error_.clear();
@@ -623,6 +627,8 @@ bool Viewer::frame(uint64_t frame_index) {
     if (!paused_ || step_once_) {
         const double s0 = pfs::now_ms();
         for (int i = 0; i < steps_per_frame_; ++i) {
+            if (pf_result f = floating_.step(sim_.get(), scene_.frame_dt, params_.gravity); f != PF_OK)
+                last_error_ = log_.explain("floating obstacles", f);
             const pf_result r = pf_step(sim_.get(), scene_.frame_dt);
             if (r != PF_OK) {
                 last_error_ = std::string("pf_step: ") + pf_result_string(r);
