@@ -8,6 +8,7 @@
 #include "api/validate.h"
 #include "common/slots.h"
 #include "effects/emitters/emitter_records.h"
+#include "sim/effects/unit_quaternion.h"
 
 namespace pf {
 
@@ -77,19 +78,13 @@ void EmittersEffect::begin_frame(const FrameInfo& frame) {
         e.owed -= whole;
         if (e.owed > double(capacity_)) e.owed = double(capacity_);  // a paused sim owes at most one fill
         const uint32_t n = uint32_t(whole);
-        double q[4] = {d.rotation[0], d.rotation[1], d.rotation[2], d.rotation[3]};
-        const double len = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-        if (len > 0.0) {
-            for (double& c : q) c /= len;
-        } else {
-            q[3] = 1.0;
-        }
+        const std::array<float, 4> q = unit_quaternion(d.rotation);
         float size[3] = {d.half_extents[0], d.half_extents[1], d.half_extents[2]};
         if (d.shape != PF_EMITTER_BOX) size[0] = d.radius, size[1] = 0.0f, size[2] = 0.0f;
         const float speed = std::sqrt(d.velocity[0] * d.velocity[0] + d.velocity[1] * d.velocity[1] + d.velocity[2] * d.velocity[2]);
         const float record[PF_EMITTER_VEC4S * 4] = {
             d.position[0],  d.position[1],  d.position[2],  float(d.shape),           //
-            float(q[0]),    float(q[1]),    float(q[2]),    float(q[3]),              //
+            q[0],    q[1],    q[2],    q[3],              //
             size[0],        size[1],        size[2],        speed * frame.frame_dt,   //
             d.velocity[0],  d.velocity[1],  d.velocity[2],  0.0f,                     //
             uint_bits(total_), uint_bits(n), uint_bits(uint32_t(e.asked)), 0.0f};

@@ -10,6 +10,7 @@
 #include "common/slots.h"
 #include "gl/debug.h"
 #include "effects/obstacles/obstacle_shapes.h"
+#include "sim/effects/unit_quaternion.h"
 
 namespace pf {
 
@@ -110,14 +111,7 @@ void ObstaclesEffect::begin_step() {
         sdf_textures_ = Textures{};
         for (const ObstacleEntry& e : list_.items()) {
             const pf_obstacle& o = e.obstacle;
-            // Unit quaternion; (0, 0, 0, 0) is the identity (validated finite).
-            double q[4] = {o.rotation[0], o.rotation[1], o.rotation[2], o.rotation[3]};
-            const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-            if (n > 0.0) {
-                for (double& c : q) c /= n;
-            } else {
-                q[3] = 1.0;
-            }
+            const std::array<float, 4> q = unit_quaternion(o.rotation);
             const bool sdf = o.shape == PF_OBSTACLE_SDF;
             float size[4] = {o.half_extents[0], o.half_extents[1], o.half_extents[2], sdf ? o.sdf_scale : 0.0f};
             if (o.shape == PF_OBSTACLE_SPHERE || o.shape == PF_OBSTACLE_CAPSULE)
@@ -126,7 +120,7 @@ void ObstaclesEffect::begin_step() {
                                        sdf_sampler_.id());
             const float record[PF_OBSTACLE_VEC4S * 4] = {
                 o.position[0],         o.position[1],         o.position[2],         float(o.shape),  //
-                float(q[0]),           float(q[1]),           float(q[2]),           float(q[3]),     //
+                q[0],           q[1],           q[2],           q[3],     //
                 size[0],               size[1],               size[2],               size[3],         //
                 o.velocity[0],         o.velocity[1],         o.velocity[2],         e.sdf_normalized ? 1.0f : 0.0f,  //
                 o.angular_velocity[0], o.angular_velocity[1], o.angular_velocity[2], 0.0f};

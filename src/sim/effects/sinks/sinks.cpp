@@ -7,6 +7,7 @@
 #include "api/validate.h"
 #include "common/slots.h"
 #include "effects/sinks/sink_records.h"
+#include "sim/effects/unit_quaternion.h"
 
 namespace pf {
 
@@ -45,18 +46,12 @@ void SinksEffect::begin_step() {
     if (dirty_) {
         std::vector<float> words;
         for (const pf_sink& k : list_.items()) {
-            double q[4] = {k.rotation[0], k.rotation[1], k.rotation[2], k.rotation[3]};
-            const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-            if (n > 0.0) {
-                for (double& c : q) c /= n;
-            } else {
-                q[3] = 1.0;
-            }
+            const std::array<float, 4> q = unit_quaternion(k.rotation);
             float size[3] = {k.half_extents[0], k.half_extents[1], k.half_extents[2]};
             if (k.shape != PF_SINK_BOX) size[0] = k.radius, size[1] = 0.0f, size[2] = 0.0f;
             const float record[PF_SINK_VEC4S * 4] = {
                 k.position[0], k.position[1], k.position[2], float(k.shape),  //
-                float(q[0]),   float(q[1]),   float(q[2]),   float(q[3]),     //
+                q[0],   q[1],   q[2],   q[3],     //
                 size[0],       size[1],       size[2],       0.0f};
             words.insert(words.end(), std::begin(record), std::end(record));
         }
