@@ -15,8 +15,15 @@ void main() {
     uint i = flat_id();
     if (i >= u_count) return;
     // (|offset| / r)^2 without squaring either first: a centre or radius near float range would
-    // make both squares +Inf and q NaN.
-    float q = robust_length(pos[i].xyz - u_center_radius.xyz) / u_center_radius.w;
+    // make both squares +Inf and q NaN. Both are scaled by the same power of two when either is
+    // huge: NVIDIA divides as a * (1 / b), and 1 / b is denormal, flushed to 0, for b > 2^126.
+    vec3 offset = pos[i].xyz - u_center_radius.xyz;
+    float radius = u_center_radius.w;
+    if (max(max(max(abs(offset.x), abs(offset.y)), abs(offset.z)), radius) > kRobustLarge) {
+        offset *= kRobustDown;
+        radius *= kRobustDown;
+    }
+    float q = length(offset) / radius;
     q *= q;
     if (q >= 1.0) return;
     float falloff = (1.0 - q) * (1.0 - q);

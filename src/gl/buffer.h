@@ -45,11 +45,17 @@ public:
     GLuint id() const { return id_; }
     size_t bytes() const { return bytes_; }
 
+    // Both wait for shader writes first: storage writes are incoherent, and without
+    // GL_BUFFER_UPDATE_BARRIER_BIT a shader's earlier store may land after (or be missed by) the
+    // update. Mesa's llvmpipe happens to serialise them; NVIDIA does not (a compute clear then
+    // an upload of the same buffer lost the upload there).
     void upload(size_t offset, size_t bytes, const void* data) const {
+        gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         gl_->BindBuffer(GL_COPY_WRITE_BUFFER, id_);
         gl_->BufferSubData(GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
     }
     void download(size_t offset, size_t bytes, void* data) const {
+        gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         gl_->BindBuffer(GL_COPY_READ_BUFFER, id_);
         gl_->GetBufferSubData(GL_COPY_READ_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
     }

@@ -482,12 +482,11 @@ void Simulation::run_g2p_and_advect() {
 }
 
 uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
-    poll_status();
     if (clamped) *clamped = false;
     // Nothing moves: one substep keeps the grid state current (emitters add particles first).
     if (particle_count_ == 0 && !(desc_.features & PF_FEATURE_EMITTERS)) return 1;
-    float v_max = gpu_max_speed_;
-    if (added_at_step_ > status_step_) v_max = std::max(v_max, added_speed_);
+    float v_max = cfl_speed_;
+    if (added_at_step_ > cfl_step_) v_max = std::max(v_max, added_speed_);
     const float* g = desc_.params.gravity;
     float accel = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
     float wind = 0.0f;  // drag pulls the liquid towards the wind, never beyond it
@@ -501,7 +500,10 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     if (desc_.features & PF_FEATURE_DOMAIN_MOTION) accel += domain_motion().max_acceleration(v_max);
     // Moving obstacles push the liquid at up to their surface speed.
     const float pushed = (desc_.features & PF_FEATURE_OBSTACLES) ? obstacles().max_surface_speed() : 0.0f;
-    const float v_est = std::max({v_max + accel * frame_dt, wind, pushed});
+    // The speed was measured kStatusLag steps ago: it may have grown since, for that time and
+    // this frame's.
+    const float since = float(sim_time_ - cfl_time_) + frame_dt;
+    const float v_est = std::max({v_max + accel * since, wind, pushed});
     const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
     const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
     if (clamped) *clamped = wanted > double(desc_.params.max_substeps);
@@ -513,6 +515,8 @@ pf_result Simulation::step(float frame_dt) {
     gl::StateGuard guard(gl_, gl_state_);
     const gl::DebugGroup debug_group(gl_, "pflip/step");  // around the passes' own groups
     bool clamped = false;
+    poll_status();
+    take_lagged_status(int64_t(steps_) + 1);
     const uint32_t substeps = substeps_for(frame_dt, &clamped);
     if (clamped) raise_flags(PF_FLAG_SUBSTEPS_CLAMPED);
     ++steps_;
@@ -537,10 +541,13 @@ pf_result Simulation::step(float frame_dt) {
     end_effects_step();
 
     // Status readback ring: copy now, read once the fence has passed (never wait).
+    sim_time_ += double(frame_dt);
     const int slot = int(steps_ % kReadbackSlots);
-    if (fences_[slot]) gl_.DeleteSync(fences_[slot]);  // too old to matter: dropped
+    if (fences_[slot]) read_status_slot(slot);  // taken in already (kStatusLag); never dropped
     runner_->copy(status_, readback_[slot], PF_STATUS_WORDS * 4);
     fences_[slot] = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    gl_.Flush();  // the fence must reach the GPU, or polls that do not flush would never see it pass
+    fence_time_[slot] = sim_time_;
     // Each readback carries the flags raised since the previous one (the sticky union is the
     // host's flags_), so a readback tells which step overflowed (the P2G range widening).
     const uint32_t no_flags = 0;
@@ -601,15 +608,49 @@ pf_result Simulation::run_g2p_and_advect_for_test(float dt) {
 void Simulation::poll_status() const {
     for (int s = 0; s < kReadbackSlots; ++s) {
         if (!fences_[s]) continue;
-        const GLenum r = gl_.ClientWaitSync(fences_[s], 0, 0);
-        if (r != GL_ALREADY_SIGNALED && r != GL_CONDITION_SATISFIED) continue;
+        const GLenum r = gl_.ClientWaitSync(fences_[s], GL_SYNC_FLUSH_COMMANDS_BIT, 0);
+        if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED) read_status_slot(s);
+    }
+}
+
+void Simulation::take_lagged_status(int64_t step) {
+    const int64_t measured = step - int64_t(kStatusLag);
+    const int s = int(((measured % kReadbackSlots) + kReadbackSlots) % kReadbackSlots);
+    if (fences_[s] && int64_t(fence_step_[s]) == measured) read_status_slot(s);  // the GPU is that far behind: wait
+    const StepStatus& got = received_[s];
+    if (!got.valid || got.step != measured) return;  // no such step (the first ones)
+    cfl_speed_ = got.max_speed;
+    cfl_step_ = measured;
+    cfl_time_ = got.end_time;
+    // A fixed-point sum overflowed in a step run at today's range: widen it from this step on
+    // (the overflowing step's result is flagged; integer sums stay deterministic).
+    if ((got.flags & PF_FLAG_P2G_OVERFLOW) && measured > p2g_range_changed_at_step_ &&
+        p2g_range_shift_ < kMaxP2gRangeShift) {
+        p2g_range_shift_ += 2;
+        p2g_range_changed_at_step_ = step - 1;
+        log_.warning("pf_step: fixed-point particle-to-grid range widened to " +
+                     std::to_string((1u << (11 + p2g_range_shift_)) - 1) +
+                     " full-weight particles per grid sample (velocity resolution max_speed / 2^" +
+                     std::to_string(kWeightScaleBits - int(p2g_range_shift_)) + ")");
+    }
+}
+
+void Simulation::read_status_slot(int s) const {
+    {
         gl_.DeleteSync(fences_[s]);
         fences_[s] = nullptr;
         uint32_t words[PF_STATUS_WORDS] = {};
         {
+            // glGetBufferSubData waits for the copy if it has not run yet.
             gl::StateGuard guard(gl_, gl_state_);
             readback_[s].download(0, sizeof(words), words);
         }
+        StepStatus& got = received_[s];
+        got.valid = true;
+        got.step = int64_t(fence_step_[s]);
+        std::memcpy(&got.max_speed, &words[PF_STATUS_MAX_SPEED], sizeof(float));
+        got.flags = words[PF_STATUS_FLAGS];
+        got.end_time = fence_time_[s];
         // The GPU's live count then, plus what was added since, bounds today's count (sinks
         // only lower it).
         if (gpu_count_) {
@@ -617,17 +658,6 @@ void Simulation::poll_status() const {
             if (bound < particle_count_) particle_count_ = uint32_t(bound);
         }
         if (fence_step_[s] > flags_cleared_at_step_) raise_flags(words[PF_STATUS_FLAGS]);
-        // A fixed-point sum overflowed in a step run at today's range: widen it for the steps to
-        // come (the overflowing step's result is flagged; integer sums stay deterministic).
-        if ((words[PF_STATUS_FLAGS] & PF_FLAG_P2G_OVERFLOW) && fence_step_[s] > p2g_range_changed_at_step_ &&
-            p2g_range_shift_ < kMaxP2gRangeShift) {
-            p2g_range_shift_ += 2;
-            p2g_range_changed_at_step_ = steps_;
-            log_.warning("pf_step: fixed-point particle-to-grid range widened to " +
-                         std::to_string((1u << (11 + p2g_range_shift_)) - 1) +
-                         " full-weight particles per grid sample (velocity resolution max_speed / 2^" +
-                         std::to_string(kWeightScaleBits - int(p2g_range_shift_)) + ")");
-        }
         if (fence_step_[s] > status_step_) {
             status_step_ = fence_step_[s];
             std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
@@ -707,8 +737,8 @@ pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t
     }
     restart_volume_reference();
     hydrostatic_start_pending_ = true;  // the new particles' cells hold p = 0
-    added_speed_ = (added_at_step_ > status_step_) ? std::max(added_speed_, fastest) : fastest;
-    added_at_step_ = steps_ + 1;
+    added_speed_ = (added_at_step_ > cfl_step_) ? std::max(added_speed_, fastest) : fastest;
+    added_at_step_ = int64_t(steps_) + 1;
     return PF_OK;
 }
 
@@ -810,6 +840,7 @@ pf_result Simulation::clear_particles() {
     fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
     added_speed_ = 0.0f;
     gpu_max_speed_ = 0.0f;
+    cfl_speed_ = 0.0f;  // readbacks of steps before the clear still come in (deterministically)
     return PF_OK;
 }
 
@@ -826,9 +857,9 @@ pf_result Simulation::push(const float center[3], float radius, const float dv[3
                    Uniform::vec4(PF_LOC_PUSH_DV_MAX_SPEED, dv[0], dv[1], dv[2], desc_.max_speed),
                    Uniform::uint1(PF_LOC_PUSH_COUNT, particle_count_)}});
     // The push may make particles faster than the last readback knew: CFL must see it.
-    const float known = added_at_step_ > status_step_ ? std::max(added_speed_, gpu_max_speed_) : gpu_max_speed_;
+    const float known = added_at_step_ > cfl_step_ ? std::max(added_speed_, cfl_speed_) : cfl_speed_;
     added_speed_ = std::min(desc_.max_speed, known + std::sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]));
-    added_at_step_ = steps_ + 1;
+    added_at_step_ = int64_t(steps_) + 1;
     restart_energy_reference();  // the push is an input of energy
     gl_.MemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     return PF_OK;
@@ -898,8 +929,8 @@ void Simulation::begin_effects_step(float frame_dt) {
         particle_count_ = uint32_t(std::min<uint64_t>(uint64_t(particle_count_) + added, desc_.max_particles));
         added_total_ += added;
         const float fastest = (desc_.features & PF_FEATURE_EMITTERS) ? emitters().added_speed() : 0.0f;
-        added_speed_ = (added_at_step_ > status_step_) ? std::max(added_speed_, fastest) : fastest;
-        added_at_step_ = steps_;
+        added_speed_ = (added_at_step_ > cfl_step_) ? std::max(added_speed_, fastest) : fastest;
+        added_at_step_ = int64_t(steps_);
     }
 }
 

@@ -181,7 +181,15 @@ private:
     void run_g2p_and_advect();
     const gl::Buffer& grid_buffer(GridBuffer which) const;
     void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat);
+    // Takes in every status readback that has arrived (for pf_get_stats and the flags).
     void poll_status() const;
+    // Downloads readback slot `s` (blocking if its fence has not passed) and takes it in.
+    void read_status_slot(int s) const;
+    // Start of step `step`: the inputs that decide how it runs (the CFL speed, the fixed-point
+    // P2G range) come from the readback of step `step - kStatusLag` exactly, waited for if the
+    // GPU is that far behind. A GPU's timing then never changes the results: NVIDIA, unlike
+    // llvmpipe, may not have finished the previous step when the next one starts.
+    void take_lagged_status(int64_t step);
     // Accuracy metrics of the step just run (its last substep's grid, its particles), reduced on
     // the GPU into the status buffer: 2 dispatches per step (docs/design.md §4.11).
     void run_metrics();
@@ -252,6 +260,29 @@ private:
     mutable GLsync fences_[kReadbackSlots] = {};
     mutable uint64_t fence_step_[kReadbackSlots] = {};
     mutable uint64_t status_step_ = 0;     // step of the newest readback
+    // What the step logic needs from each readback, kept per slot until the step that takes it
+    // (kStatusLag steps later); the slot of step k is k % kReadbackSlots.
+    // One step: the previous step's status. pf_step may then wait for the GPU to finish the
+    // previous step (it has, unless the caller runs steps back to back with nothing between);
+    // a lag of 2 avoided that but its CFL bound (speed two frames old plus two frames of
+    // acceleration) asked for ~1.5x the substeps at 0.5 s frames.
+    static constexpr uint64_t kStatusLag = 1;
+    static_assert(kStatusLag < uint64_t(kReadbackSlots), "a slot is reused only after its step was taken in");
+    struct StepStatus {
+        bool valid = false;     // false: nothing read into this slot yet
+        int64_t step = 0;
+        float max_speed = 0.0f;
+        uint32_t flags = 0;
+        double end_time = 0.0;  // simulated time at the end of that step, s
+    };
+    mutable StepStatus received_[kReadbackSlots] = {};
+    double fence_time_[kReadbackSlots] = {};  // simulated time at the end of each readback's step
+    double sim_time_ = 0.0;                   // frame times of all steps, s
+    float cfl_speed_ = 0.0f;                  // the max speed the CFL condition starts from...
+    // Step numbers the step logic compares are signed: a restored snapshot places them before
+    // the restoring simulation's first step when it has run fewer (src/sim/snapshot.cpp).
+    int64_t cfl_step_ = 0;                    // ...measured at the end of this step...
+    double cfl_time_ = 0.0;                   // ...at this simulated time
     mutable float gpu_max_speed_ = 0.0f;   // its max speed
     mutable uint32_t solver_iterations_ = 0;  // its pressure iterations (most of a substep)
     mutable float solver_residual_ = 0.0f;    // its largest final relative residual
@@ -262,7 +293,7 @@ private:
     uint64_t fence_added_[kReadbackSlots] = {};             // and added_total_ then
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
     mutable uint32_t p2g_range_shift_ = 0;             // fixed-point scale 2^(20 - shift)...
-    mutable uint64_t p2g_range_changed_at_step_ = 0;   // ...in use from the step after this one
+    int64_t p2g_range_changed_at_step_ = 0;            // ...in use from the step after this one
     // Adds PF_FLAG_* bits, logging one warning for each bit not already set.
     void raise_flags(uint32_t bits) const;
     // Accuracy metrics of the newest readback (status words PF_STATUS_DIVERGENCE_L2..).
@@ -285,7 +316,7 @@ private:
     gl::Buffer metrics_partials_;          // two vec4 per workgroup of the metrics pass
     uint64_t flags_cleared_at_step_ = 0;   // pf_clear_flags: ignore flags read back from older steps
     float added_speed_ = 0.0f;             // fastest particle added since...
-    uint64_t added_at_step_ = 0;           // ...this step (no readback covers it yet)
+    int64_t added_at_step_ = 0;            // ...this step (no readback covers it yet)
 
     // counters
     uint64_t steps_ = 0;

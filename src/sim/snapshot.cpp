@@ -69,10 +69,17 @@ Compat compat_of(const pf_sim_desc& d) {
 // The step logic's CPU state (what the snapshot restores besides params, effects and buffers).
 struct Simulation::SnapshotState {
     uint64_t steps;  // pf_step calls at the save: the step-valued fields are relative to it
-    uint64_t status_step, p2g_range_changed_at_step, added_at_step, flags_cleared_at_step;
+    uint64_t status_step, flags_cleared_at_step;
+    int64_t p2g_range_changed_at_step, added_at_step;
     float gpu_max_speed, added_speed, solver_residual;
     uint32_t solver_iterations, recent_iterations, recent_later_iterations, recent_solver;
     uint32_t p2g_range_shift, flags, hydrostatic_start_pending, fill_calls;
+    // The readbacks the next steps take in (Simulation::take_lagged_status), by slot, and the
+    // CFL input in use: the continuation chooses the same substeps as the original.
+    int64_t cfl_step;
+    float cfl_speed;
+    double cfl_time, sim_time;
+    StepStatus received[kReadbackSlots];
 };
 
 std::vector<uint8_t> Simulation::snapshot_host_state() const {
@@ -99,6 +106,11 @@ std::vector<uint8_t> Simulation::snapshot_host_state() const {
     s.flags = flags_;
     s.hydrostatic_start_pending = hydrostatic_start_pending_ ? 1u : 0u;
     s.fill_calls = fill_calls_;
+    s.cfl_step = cfl_step_;
+    s.cfl_speed = cfl_speed_;
+    s.cfl_time = cfl_time_;
+    s.sim_time = sim_time_;
+    for (int k = 0; k < kReadbackSlots; ++k) s.received[k] = received_[k];
     w.put(s);
     w.put(kEffectCount);
     for (uint32_t i = 0; i < kEffectCount; ++i) {
@@ -130,14 +142,9 @@ size_t Simulation::snapshot_size() const {
 void Simulation::drain_status() {
     // Every status readback in flight is waited for and taken in, so the snapshot's CPU state
     // holds all the GPU has reported up to now, and the original continues from exactly that.
-    for (GLsync f : fences_) {
-        if (!f) continue;
-        for (int tries = 0; tries < 600; ++tries) {  // at most a minute
-            const GLenum r = gl_.ClientWaitSync(f, GL_SYNC_FLUSH_COMMANDS_BIT, 100000000ull);
-            if (r != GL_TIMEOUT_EXPIRED) break;
-        }
+    for (int k = 0; k < kReadbackSlots; ++k) {
+        if (fences_[k]) read_status_slot(k);  // glGetBufferSubData waits for the copy
     }
-    poll_status();
 }
 
 pf_result Simulation::save_snapshot(void* buffer, size_t size) {
@@ -301,8 +308,21 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     const int64_t shift = int64_t(steps_) - int64_t(s.steps);
     const auto rebase = [&](uint64_t step) { return uint64_t(std::max<int64_t>(0, int64_t(step) + shift)); };
     status_step_ = rebase(s.status_step);
-    p2g_range_changed_at_step_ = rebase(s.p2g_range_changed_at_step);
-    added_at_step_ = rebase(s.added_at_step);
+    // The fields the step logic compares keep their distance from the step count even below 0.
+    const auto rebase_signed = [&](int64_t step) { return step + shift; };
+    p2g_range_changed_at_step_ = rebase_signed(s.p2g_range_changed_at_step);
+    added_at_step_ = rebase_signed(s.added_at_step);
+    cfl_step_ = rebase_signed(s.cfl_step);
+    cfl_speed_ = s.cfl_speed;
+    cfl_time_ = s.cfl_time;
+    sim_time_ = s.sim_time;
+    for (StepStatus& r : received_) r = StepStatus{};
+    for (const StepStatus& saved : s.received) {
+        if (!saved.valid) continue;
+        StepStatus moved = saved;
+        moved.step = rebase_signed(saved.step);
+        received_[((moved.step % kReadbackSlots) + kReadbackSlots) % kReadbackSlots] = moved;
+    }
     flags_cleared_at_step_ = rebase(s.flags_cleared_at_step);
     gpu_max_speed_ = s.gpu_max_speed;
     added_speed_ = s.added_speed;

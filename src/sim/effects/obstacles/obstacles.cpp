@@ -80,11 +80,13 @@ pf_result ObstaclesEffect::init(const gl::Api& gl, PassRunner& runner, const Log
     forces_ = gl::Buffer(gl, kForceBytes, GL_DYNAMIC_COPY, "obstacle_forces");
     for (gl::Buffer& b : readback_) b = gl::Buffer(gl, kForceBytes, GL_STREAM_READ, "obstacle_forces_readback");
     sdf_sampler_ = gl::Object(gl, gl::ObjectKind::sampler);
-    gl::label_object(gl, GL_SAMPLER, sdf_sampler_.id(), "obstacle_sdf_sampler");
     gl.SamplerParameteri(sdf_sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     gl.SamplerParameteri(sdf_sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
         gl.SamplerParameteri(sdf_sampler_.id(), wrap, GL_CLAMP_TO_EDGE);
+    // A generated sampler name becomes an object (which a label needs) at its first use:
+    // labelling it before glSamplerParameteri is GL_INVALID_VALUE on NVIDIA (Mesa lets it pass).
+    gl::label_object(gl, GL_SAMPLER, sdf_sampler_.id(), "obstacle_sdf_sampler");
     grid_stat_ = runner.add_stat("obstacles", PF_PASS_CLASSIFY);
     push_stat_ = runner.add_stat("obstacle_push", PF_PASS_ADVECT);
     force_stat_ = runner.add_stat("obstacle_forces", PF_PASS_VELOCITY_UPDATE);
@@ -169,36 +171,42 @@ void ObstaclesEffect::run(EffectStage stage, PassRunner& runner, const EffectBuf
 void ObstaclesEffect::end_step(PassRunner& runner, uint64_t step) {
     if (uploaded_ == 0) return;
     const int slot = int(step % kReadbackSlots);
-    if (fences_[slot]) gl_->DeleteSync(fences_[slot]);  // too old to matter: dropped
+    // A slot still in flight is read (waiting if the GPU is kReadbackSlots steps behind), never
+    // dropped: on a GPU that runs far behind, a dropped slot would mean no result ever arrives.
+    if (fences_[slot]) read_slot(slot);
     runner.copy(forces_, readback_[slot], size_t(uploaded_) * PF_OBSTACLE_FORCE_WORDS * 4);
     fences_[slot] = gl_->FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    gl_->Flush();  // the fence must reach the GPU, or a poll would never see it pass
     fence_step_[slot] = step;
     fence_ids_[slot] = uploaded_ids_;
+}
+
+void ObstaclesEffect::read_slot(int s) const {
+    gl_->DeleteSync(fences_[s]);
+    fences_[s] = nullptr;
+    const std::vector<uint32_t>& ids = fence_ids_[s];
+    std::vector<float> words(ids.size() * PF_OBSTACLE_FORCE_WORDS);
+    if (!words.empty()) readback_[s].download(0, words.size() * 4, words.data());  // waits for the copy
+    for (size_t i = 0; i < ids.size(); ++i) {
+        pf_obstacle_force f{};
+        std::memcpy(f.force, &words[i * PF_OBSTACLE_FORCE_WORDS], 12);
+        std::memcpy(f.torque, &words[i * PF_OBSTACLE_FORCE_WORDS + 4], 12);
+        f.step = fence_step_[s];
+        auto it = std::find_if(latest_.begin(), latest_.end(), [&](const auto& e) { return e.first == ids[i]; });
+        if (it == latest_.end()) {
+            latest_.emplace_back(ids[i], f);
+        } else if (it->second.step < f.step) {
+            it->second = f;
+        }
+    }
 }
 
 void ObstaclesEffect::poll() const {
     if (!gl_) return;
     for (int s = 0; s < kReadbackSlots; ++s) {
         if (!fences_[s]) continue;
-        const GLenum r = gl_->ClientWaitSync(fences_[s], 0, 0);
-        if (r != GL_ALREADY_SIGNALED && r != GL_CONDITION_SATISFIED) continue;
-        gl_->DeleteSync(fences_[s]);
-        fences_[s] = nullptr;
-        const std::vector<uint32_t>& ids = fence_ids_[s];
-        std::vector<float> words(ids.size() * PF_OBSTACLE_FORCE_WORDS);
-        if (!words.empty()) readback_[s].download(0, words.size() * 4, words.data());
-        for (size_t i = 0; i < ids.size(); ++i) {
-            pf_obstacle_force f{};
-            std::memcpy(f.force, &words[i * PF_OBSTACLE_FORCE_WORDS], 12);
-            std::memcpy(f.torque, &words[i * PF_OBSTACLE_FORCE_WORDS + 4], 12);
-            f.step = fence_step_[s];
-            auto it = std::find_if(latest_.begin(), latest_.end(), [&](const auto& e) { return e.first == ids[i]; });
-            if (it == latest_.end()) {
-                latest_.emplace_back(ids[i], f);
-            } else if (it->second.step < f.step) {
-                it->second = f;
-            }
-        }
+        const GLenum r = gl_->ClientWaitSync(fences_[s], GL_SYNC_FLUSH_COMMANDS_BIT, 0);
+        if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED) read_slot(s);
     }
     // Removed obstacles' results go.
     const std::vector<uint32_t>& live = list_.ids();

@@ -55,7 +55,8 @@ public:
     bool force(uint32_t id, pf_obstacle_force& out) const;
 
 private:
-    void poll() const;
+    void poll() const;               // takes in the readbacks that have arrived
+    void read_slot(int s) const;     // downloads one (waiting for its copy) and takes it in
 
     static constexpr int kReadbackSlots = 3;
     const gl::Api* gl_ = nullptr;
