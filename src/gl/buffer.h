@@ -45,15 +45,26 @@ public:
     GLuint id() const { return id_; }
     size_t bytes() const { return bytes_; }
 
-    // Both wait for shader writes first: storage writes are incoherent, and without
-    // GL_BUFFER_UPDATE_BARRIER_BIT a shader's earlier store may land after (or be missed by) the
-    // update. Mesa's llvmpipe happens to serialise them; NVIDIA does not (a compute clear then
-    // an upload of the same buffer lost the upload there).
+    // Writes `bytes` at `offset` on the GPU's timeline: the data goes into a fresh staging
+    // buffer and glCopyBufferSubData moves it, after a barrier, behind every dispatch issued
+    // before. A plain glBufferSubData over storage a compute pass wrote is not ordered on NVIDIA
+    // (580 driver, H100): a compute clear followed by an upload of the same words lost the
+    // upload even with every barrier bit set (tests/internal/test_upload_order.cpp; Mesa's
+    // llvmpipe happens to serialise them).
     void upload(size_t offset, size_t bytes, const void* data) const {
+        if (bytes == 0) return;
+        GLuint staging = 0;
+        gl_->GenBuffers(1, &staging);
+        gl_->BindBuffer(GL_COPY_READ_BUFFER, staging);
+        gl_->BufferData(GL_COPY_READ_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_STREAM_COPY);
+        label_object(*gl_, GL_BUFFER, staging, "upload_staging");
         gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         gl_->BindBuffer(GL_COPY_WRITE_BUFFER, id_);
-        gl_->BufferSubData(GL_COPY_WRITE_BUFFER, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+        gl_->CopyBufferSubData(GL_COPY_READ_BUFFER, GL_COPY_WRITE_BUFFER, 0, static_cast<GLintptr>(offset),
+                               static_cast<GLsizeiptr>(bytes));
+        gl_->DeleteBuffers(1, &staging);  // the GL keeps it alive until the copy has run
     }
+    // Waits for shader writes first (storage writes are incoherent without the barrier).
     void download(size_t offset, size_t bytes, void* data) const {
         gl_->MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         gl_->BindBuffer(GL_COPY_READ_BUFFER, id_);

@@ -67,6 +67,8 @@ TEST_F(ForceFields, DragRelaxesTowardsTheWindVelocityExponentially) {
     // with or without a field (see above; measured on the H100: 2.6e-3 m/s in y, where the
     // wind does not act at all).
     const double decay = std::exp(-4.0 * t);
+    std::printf("drag: v = (%.6f, %.6f, %.6f), analytic (%.6f, 0, %.6f)\n", p.vel[0], p.vel[1], p.vel[2],
+                1.5 + (-0.5 - 1.5) * decay, 0.2 * decay);
     EXPECT_NEAR(p.vel[0], 1.5 + (-0.5 - 1.5) * decay, 5e-3);
     EXPECT_NEAR(p.vel[1], 0.0, 5e-3);
     EXPECT_NEAR(p.vel[2], 0.2 * decay, 5e-3);
