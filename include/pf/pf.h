@@ -7,7 +7,8 @@
  * pf_result and reports failures through the logger.
  *
  * ABI rules (docs/integration.md §7). The structs that may grow (pf_sim_desc, pf_sim_params,
- * pf_stats, pf_ssf_params, pf_particle_params) start with uint32_t struct_size: sizeof the struct
+ * pf_stats, pf_ssf_params, pf_particle_params, pf_force_field, pf_obstacle, pf_emitter, pf_sink,
+ * pf_domain_motion) start with uint32_t struct_size: sizeof the struct
  * as the caller compiled it, set by the header-inline pf_default_*() (through pf_init_*()). New
  * fields are only ever appended, so the library reads the first struct_size bytes a caller
  * compiled against an older header passes and takes the defaults for the rest, and writes no
@@ -616,6 +617,8 @@ typedef enum pf_force_field_type {
 
 /** One force field. Start from pf_default_force_field(). */
 typedef struct pf_force_field {
+    uint32_t struct_size;         /**< sizeof(pf_force_field) as the caller compiled it (pf_default_force_field()
+                                       sets it; 0: zero-initialised, every zero field takes its default) */
     pf_force_field_type type;     /**< which kind of field (the fields below it uses) */
     float position[3];            /**< POINT: the centre; VORTEX: a point on the axis (world m) */
     float vector[3];              /**< DIRECTIONAL: acceleration (m/s^2) or, with drag > 0, the wind velocity
@@ -626,8 +629,16 @@ typedef struct pf_force_field {
                                        is an acceleration) */
 } pf_force_field;
 
-/** Default force field: DIRECTIONAL with zero acceleration (no effect until edited), radius 1 m. */
-PF_API pf_force_field pf_default_force_field(void);
+/** Writes the default force field for a caller whose pf_force_field is struct_size bytes (see the ABI
+ *  rules at the top): the first struct_size bytes only. PF_ERROR_INVALID_ARGUMENT for a NULL out or a
+ *  struct_size below 4 or not a multiple of 4. Any thread. */
+PF_API pf_result pf_init_force_field(pf_force_field* out, uint32_t struct_size);
+/** Default force field: DIRECTIONAL with zero acceleration (no effect until edited), radius 1 m, struct_size set. */
+static inline pf_force_field pf_default_force_field(void) {
+    pf_force_field v;
+    pf_init_force_field(&v, (uint32_t)sizeof v);
+    return v;
+}
 /** Adds a force field; *out_id (may be NULL) names it for pf_set_force_field / pf_remove_force_field.
  *  PF_ERROR_INVALID_ARGUMENT for a NULL field, an unknown type, a non-finite value, a radius <= 0
  *  (POINT, VORTEX), a zero vortex axis or a negative drag; PF_ERROR_CAPACITY when
@@ -655,6 +666,8 @@ typedef enum pf_obstacle_shape {
  *  is driven by the engine: pf_set_obstacle each frame with its pose and velocities. Start from
  *  pf_default_obstacle(). */
 typedef struct pf_obstacle {
+    uint32_t struct_size;         /**< sizeof(pf_obstacle) as the caller compiled it (pf_default_obstacle()
+                                       sets it; 0: zero-initialised, every zero field takes its default) */
     pf_obstacle_shape shape;      /**< which shape (the size fields below it uses) */
     float position[3];            /**< centre, world m */
     float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
@@ -679,9 +692,17 @@ typedef struct pf_obstacle_force {
     uint64_t step;                /**< the pf_step it belongs to (0: none measured yet) */
 } pf_obstacle_force;
 
+/** Writes the default obstacle for a caller whose pf_obstacle is struct_size bytes (see the ABI
+ *  rules at the top): the first struct_size bytes only. PF_ERROR_INVALID_ARGUMENT for a NULL out or a
+ *  struct_size below 4 or not a multiple of 4. Any thread. */
+PF_API pf_result pf_init_obstacle(pf_obstacle* out, uint32_t struct_size);
 /** Default obstacle: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m), at rest,
- *  sdf_scale 1. */
-PF_API pf_obstacle pf_default_obstacle(void);
+ *  sdf_scale 1, struct_size set. */
+static inline pf_obstacle pf_default_obstacle(void) {
+    pf_obstacle v;
+    pf_init_obstacle(&v, (uint32_t)sizeof v);
+    return v;
+}
 /** Adds an obstacle; *out_id (may be NULL) names it for pf_set_obstacle / pf_remove_obstacle.
  *  PF_ERROR_INVALID_ARGUMENT for a NULL obstacle, an unknown shape, a non-finite value, a box or SDF
  *  half extent or radius <= 0, a negative capsule half height, or an SDF whose sdf_scale is <= 0 or
@@ -720,6 +741,8 @@ typedef enum pf_rate_unit {
  *  the GPU after the live ones, without any readback; when max_particles is reached emission
  *  stops there and PF_FLAG_EMITTERS_FULL is raised. Start from pf_default_emitter(). */
 typedef struct pf_emitter {
+    uint32_t struct_size;         /**< sizeof(pf_emitter) as the caller compiled it (pf_default_emitter()
+                                       sets it; 0: zero-initialised, every zero field takes its default) */
     pf_emitter_shape shape;       /**< box, sphere or disc */
     float position[3];            /**< centre, world m; the whole shape must lie inside the domain */
     float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
@@ -731,8 +754,16 @@ typedef struct pf_emitter {
     pf_rate_unit rate_unit;       /**< particles or m^3 per second */
 } pf_emitter;
 
-/** Default emitter: a sphere of radius 0.1 m at the origin emitting nothing (rate 0) at rest. */
-PF_API pf_emitter pf_default_emitter(void);
+/** Writes the default emitter for a caller whose pf_emitter is struct_size bytes (see the ABI
+ *  rules at the top): the first struct_size bytes only. PF_ERROR_INVALID_ARGUMENT for a NULL out or a
+ *  struct_size below 4 or not a multiple of 4. Any thread. */
+PF_API pf_result pf_init_emitter(pf_emitter* out, uint32_t struct_size);
+/** Default emitter: a sphere of radius 0.1 m at the origin emitting nothing (rate 0) at rest, struct_size set. */
+static inline pf_emitter pf_default_emitter(void) {
+    pf_emitter v;
+    pf_init_emitter(&v, (uint32_t)sizeof v);
+    return v;
+}
 /** Adds an emitter; *out_id (may be NULL) names it for pf_set_emitter / pf_remove_emitter.
  *  PF_ERROR_INVALID_ARGUMENT for a NULL emitter, an unknown shape or rate unit, a non-finite value,
  *  a size <= 0, a shape reaching outside the domain, a negative rate or a velocity above
@@ -758,6 +789,8 @@ typedef enum pf_sink_shape {
  *  duplicated). It may reach outside the domain (a drain cut by the floor). Start from
  *  pf_default_sink(). */
 typedef struct pf_sink {
+    uint32_t struct_size;         /**< sizeof(pf_sink) as the caller compiled it (pf_default_sink()
+                                       sets it; 0: zero-initialised, every zero field takes its default) */
     pf_sink_shape shape;          /**< box or sphere */
     float position[3];            /**< centre, world m; the shape must overlap the domain */
     float rotation[4];            /**< orientation as a quaternion (x, y, z, w), normalised internally;
@@ -766,8 +799,16 @@ typedef struct pf_sink {
     float radius;                 /**< SPHERE: radius in m, > 0 */
 } pf_sink;
 
-/** Default sink: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m). */
-PF_API pf_sink pf_default_sink(void);
+/** Writes the default sink for a caller whose pf_sink is struct_size bytes (see the ABI
+ *  rules at the top): the first struct_size bytes only. PF_ERROR_INVALID_ARGUMENT for a NULL out or a
+ *  struct_size below 4 or not a multiple of 4. Any thread. */
+PF_API pf_result pf_init_sink(pf_sink* out, uint32_t struct_size);
+/** Default sink: an axis-aligned box of half extents 0.1 m at the origin (radius 0.1 m), struct_size set. */
+static inline pf_sink pf_default_sink(void) {
+    pf_sink v;
+    pf_init_sink(&v, (uint32_t)sizeof v);
+    return v;
+}
 /** Adds a sink; *out_id (may be NULL) names it for pf_set_sink / pf_remove_sink.
  *  PF_ERROR_INVALID_ARGUMENT for a NULL sink, an unknown shape, a non-finite value, a size <= 0 or
  *  a shape that misses the domain; PF_ERROR_CAPACITY when PF_MAX_SINKS are present. Each error is
@@ -786,6 +827,8 @@ PF_API pf_result pf_remove_sink(pf_sim* sim, uint32_t id);
  *  applies gravity turned into the domain's frame plus the frame's inertial accelerations
  *  (linear, Euler, centrifugal and Coriolis) to the liquid. Start from pf_default_domain_motion(). */
 typedef struct pf_domain_motion {
+    uint32_t struct_size;         /**< sizeof(pf_domain_motion) as the caller compiled it (pf_default_domain_motion()
+                                       sets it; 0: zero-initialised, every zero field takes its default) */
     float position[3];            /**< world position of the domain frame's origin, m */
     float rotation[4];            /**< world orientation as a quaternion (x, y, z, w), normalised internally;
                                        (0, 0, 0, 0) means the identity */
@@ -793,8 +836,16 @@ typedef struct pf_domain_motion {
     float angular_velocity[3];    /**< world angular velocity of the frame, rad/s, |w| <= 1000 */
 } pf_domain_motion;
 
-/** The domain at rest where the world is (identity pose, no motion). */
-PF_API pf_domain_motion pf_default_domain_motion(void);
+/** Writes the default domain motion for a caller whose pf_domain_motion is struct_size bytes (see the ABI
+ *  rules at the top): the first struct_size bytes only. PF_ERROR_INVALID_ARGUMENT for a NULL out or a
+ *  struct_size below 4 or not a multiple of 4. Any thread. */
+PF_API pf_result pf_init_domain_motion(pf_domain_motion* out, uint32_t struct_size);
+/** The domain at rest where the world is (identity pose, no motion), struct_size set. */
+static inline pf_domain_motion pf_default_domain_motion(void) {
+    pf_domain_motion v;
+    pf_init_domain_motion(&v, (uint32_t)sizeof v);
+    return v;
+}
 /** Sets where the domain is and how it moves, for the next pf_step and the renderer. It may be
  *  set while PF_FEATURE_DOMAIN_MOTION is off (it acts once it is on). PF_ERROR_INVALID_ARGUMENT
  *  for NULL, a non-finite value or |angular_velocity| > 1000 rad/s (logged; nothing changes). */

@@ -402,9 +402,12 @@ class ForceField(_Struct):
     @classmethod
     def default(cls):
         """pf_default_force_field()."""
-        return _lib().pf_default_force_field()
+        out = cls()
+        _lib().pf_init_force_field(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("type", c_enum),
         ("position", ctypes.c_float * 3),
         ("vector", ctypes.c_float * 3),
@@ -424,9 +427,12 @@ class Obstacle(_Struct):
     @classmethod
     def default(cls):
         """pf_default_obstacle()."""
-        return _lib().pf_default_obstacle()
+        out = cls()
+        _lib().pf_init_obstacle(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("shape", c_enum),
         ("position", ctypes.c_float * 3),
         ("rotation", ctypes.c_float * 4),
@@ -457,9 +463,12 @@ class Emitter(_Struct):
     @classmethod
     def default(cls):
         """pf_default_emitter()."""
-        return _lib().pf_default_emitter()
+        out = cls()
+        _lib().pf_init_emitter(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("shape", c_enum),
         ("position", ctypes.c_float * 3),
         ("rotation", ctypes.c_float * 4),
@@ -478,9 +487,12 @@ class Sink(_Struct):
     @classmethod
     def default(cls):
         """pf_default_sink()."""
-        return _lib().pf_default_sink()
+        out = cls()
+        _lib().pf_init_sink(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("shape", c_enum),
         ("position", ctypes.c_float * 3),
         ("rotation", ctypes.c_float * 4),
@@ -497,9 +509,12 @@ class DomainMotion(_Struct):
     @classmethod
     def default(cls):
         """pf_default_domain_motion()."""
-        return _lib().pf_default_domain_motion()
+        out = cls()
+        _lib().pf_init_domain_motion(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
 
     _fields_ = [
+        ("struct_size", ctypes.c_uint32),
         ("position", ctypes.c_float * 3),
         ("rotation", ctypes.c_float * 4),
         ("velocity", ctypes.c_float * 3),

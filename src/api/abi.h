@@ -20,6 +20,12 @@ constexpr uint32_t kSimDescV1 = 176;
 constexpr uint32_t kStatsV1 = 240;
 constexpr uint32_t kSsfParamsV1 = 68;
 constexpr uint32_t kParticleParamsV1 = 44;
+// The effect descriptors took struct_size in pflip 0.2, with these sizes.
+constexpr uint32_t kForceFieldV1 = 44;
+constexpr uint32_t kObstacleV1 = 88;
+constexpr uint32_t kEmitterV1 = 72;
+constexpr uint32_t kSinkV1 = 52;
+constexpr uint32_t kDomainMotionV1 = 56;
 
 template <typename T> struct AbiInfo;
 template <> struct AbiInfo<pf_sim_params> { static constexpr uint32_t v1 = kSimParamsV1; static constexpr const char* name = "pf_sim_params"; };
@@ -27,6 +33,11 @@ template <> struct AbiInfo<pf_sim_desc> { static constexpr uint32_t v1 = kSimDes
 template <> struct AbiInfo<pf_stats> { static constexpr uint32_t v1 = kStatsV1; static constexpr const char* name = "pf_stats"; };
 template <> struct AbiInfo<pf_ssf_params> { static constexpr uint32_t v1 = kSsfParamsV1; static constexpr const char* name = "pf_ssf_params"; };
 template <> struct AbiInfo<pf_particle_params> { static constexpr uint32_t v1 = kParticleParamsV1; static constexpr const char* name = "pf_particle_params"; };
+template <> struct AbiInfo<pf_force_field> { static constexpr uint32_t v1 = kForceFieldV1; static constexpr const char* name = "pf_force_field"; };
+template <> struct AbiInfo<pf_obstacle> { static constexpr uint32_t v1 = kObstacleV1; static constexpr const char* name = "pf_obstacle"; };
+template <> struct AbiInfo<pf_emitter> { static constexpr uint32_t v1 = kEmitterV1; static constexpr const char* name = "pf_emitter"; };
+template <> struct AbiInfo<pf_sink> { static constexpr uint32_t v1 = kSinkV1; static constexpr const char* name = "pf_sink"; };
+template <> struct AbiInfo<pf_domain_motion> { static constexpr uint32_t v1 = kDomainMotionV1; static constexpr const char* name = "pf_domain_motion"; };
 
 // A struct_size a caller may pass: 0, or at least 4 and a multiple of 4.
 inline bool valid_struct_size(uint32_t size) { return size == 0 || (size >= 4 && size % 4 == 0); }

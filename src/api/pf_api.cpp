@@ -220,15 +220,24 @@ pf_result pf_get_features(const pf_sim* handle, uint32_t* out) {
     return PF_OK;
 }
 
-pf_force_field pf_default_force_field(void) {
+namespace {
+pf_force_field full_default_force_field() {
     pf_force_field f{};
+    f.struct_size = uint32_t(sizeof(pf_force_field));
     f.type = PF_FORCE_FIELD_DIRECTIONAL;
     f.radius = 1.0f;
     return f;
 }
+}  // namespace
 
-pf_obstacle pf_default_obstacle(void) {
+pf_result pf_init_force_field(pf_force_field* out, uint32_t struct_size) {
+    return pf::init_struct(out, struct_size, full_default_force_field(), "pf_init_force_field");
+}
+
+namespace {
+pf_obstacle full_default_obstacle() {
     pf_obstacle o{};
+    o.struct_size = uint32_t(sizeof(pf_obstacle));
     o.shape = PF_OBSTACLE_BOX;
     o.rotation[3] = 1.0f;
     o.half_extents[0] = o.half_extents[1] = o.half_extents[2] = 0.1f;
@@ -236,21 +245,30 @@ pf_obstacle pf_default_obstacle(void) {
     o.sdf_scale = 1.0f;
     return o;
 }
+}  // namespace
+
+pf_result pf_init_obstacle(pf_obstacle* out, uint32_t struct_size) {
+    return pf::init_struct(out, struct_size, full_default_obstacle(), "pf_init_obstacle");
+}
 
 pf_result pf_add_force_field(pf_sim* handle, const pf_force_field* field, uint32_t* out_id) {
     PF_ENTRY(sim, handle, "pf_add_force_field");
     pf::Simulation& s = *sim->impl;
     if (!field) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_force_field: field must not be NULL");
-    if (pf_result r = pf::validate_force_field(*field, s.log(), "pf_add_force_field"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_add_force_field", [&] { return s.add_force_field(*field, out_id); });
+    pf_force_field in{};  // the caller's struct_size bytes over the defaults (ABI rules)
+    if (pf_result r = pf::read_input(field, full_default_force_field(), in, s.log(), "pf_add_force_field"); r != PF_OK) return r;
+    if (pf_result r = pf::validate_force_field(in, s.log(), "pf_add_force_field"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_add_force_field", [&] { return s.add_force_field(in, out_id); });
 }
 
 pf_result pf_set_force_field(pf_sim* handle, uint32_t id, const pf_force_field* field) {
     PF_ENTRY(sim, handle, "pf_set_force_field");
     pf::Simulation& s = *sim->impl;
     if (!field) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_force_field: field must not be NULL");
-    if (pf_result r = pf::validate_force_field(*field, s.log(), "pf_set_force_field"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_set_force_field", [&] { return s.set_force_field(id, *field); });
+    pf_force_field in{};  // the caller's struct_size bytes over the defaults (ABI rules)
+    if (pf_result r = pf::read_input(field, full_default_force_field(), in, s.log(), "pf_set_force_field"); r != PF_OK) return r;
+    if (pf_result r = pf::validate_force_field(in, s.log(), "pf_set_force_field"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_set_force_field", [&] { return s.set_force_field(id, in); });
 }
 
 pf_result pf_remove_force_field(pf_sim* handle, uint32_t id) {
@@ -263,16 +281,20 @@ pf_result pf_add_obstacle(pf_sim* handle, const pf_obstacle* obstacle, uint32_t*
     PF_ENTRY(sim, handle, "pf_add_obstacle");
     pf::Simulation& s = *sim->impl;
     if (!obstacle) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_obstacle: obstacle must not be NULL");
-    if (pf_result r = pf::validate_obstacle(*obstacle, s.log(), "pf_add_obstacle"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_add_obstacle", [&] { return s.add_obstacle(*obstacle, out_id); });
+    pf_obstacle in{};  // the caller's struct_size bytes over the defaults (ABI rules)
+    if (pf_result r = pf::read_input(obstacle, full_default_obstacle(), in, s.log(), "pf_add_obstacle"); r != PF_OK) return r;
+    if (pf_result r = pf::validate_obstacle(in, s.log(), "pf_add_obstacle"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_add_obstacle", [&] { return s.add_obstacle(in, out_id); });
 }
 
 pf_result pf_set_obstacle(pf_sim* handle, uint32_t id, const pf_obstacle* obstacle) {
     PF_ENTRY(sim, handle, "pf_set_obstacle");
     pf::Simulation& s = *sim->impl;
     if (!obstacle) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_obstacle: obstacle must not be NULL");
-    if (pf_result r = pf::validate_obstacle(*obstacle, s.log(), "pf_set_obstacle"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_set_obstacle", [&] { return s.set_obstacle(id, *obstacle); });
+    pf_obstacle in{};  // the caller's struct_size bytes over the defaults (ABI rules)
+    if (pf_result r = pf::read_input(obstacle, full_default_obstacle(), in, s.log(), "pf_set_obstacle"); r != PF_OK) return r;
+    if (pf_result r = pf::validate_obstacle(in, s.log(), "pf_set_obstacle"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_set_obstacle", [&] { return s.set_obstacle(id, in); });
 }
 
 pf_result pf_remove_obstacle(pf_sim* handle, uint32_t id) {
@@ -281,8 +303,10 @@ pf_result pf_remove_obstacle(pf_sim* handle, uint32_t id) {
     return guarded(s.log(), "pf_remove_obstacle", [&] { return s.remove_obstacle(id); });
 }
 
-pf_emitter pf_default_emitter(void) {
+namespace {
+pf_emitter full_default_emitter() {
     pf_emitter e{};
+    e.struct_size = uint32_t(sizeof(pf_emitter));
     e.shape = PF_EMITTER_SPHERE;
     e.rotation[3] = 1.0f;
     e.half_extents[0] = e.half_extents[1] = e.half_extents[2] = 0.1f;
@@ -290,30 +314,46 @@ pf_emitter pf_default_emitter(void) {
     e.rate_unit = PF_RATE_PARTICLES_PER_SECOND;
     return e;
 }
+}  // namespace
 
-pf_sink pf_default_sink(void) {
+pf_result pf_init_emitter(pf_emitter* out, uint32_t struct_size) {
+    return pf::init_struct(out, struct_size, full_default_emitter(), "pf_init_emitter");
+}
+
+namespace {
+pf_sink full_default_sink() {
     pf_sink k{};
+    k.struct_size = uint32_t(sizeof(pf_sink));
     k.shape = PF_SINK_BOX;
     k.rotation[3] = 1.0f;
     k.half_extents[0] = k.half_extents[1] = k.half_extents[2] = 0.1f;
     k.radius = 0.1f;
     return k;
 }
+}  // namespace
+
+pf_result pf_init_sink(pf_sink* out, uint32_t struct_size) {
+    return pf::init_struct(out, struct_size, full_default_sink(), "pf_init_sink");
+}
 
 pf_result pf_add_emitter(pf_sim* handle, const pf_emitter* emitter, uint32_t* out_id) {
     PF_ENTRY(sim, handle, "pf_add_emitter");
     pf::Simulation& s = *sim->impl;
     if (!emitter) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_emitter: emitter must not be NULL");
-    if (pf_result r = pf::validate_emitter(*emitter, s.desc(), s.log(), "pf_add_emitter"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_add_emitter", [&] { return s.add_emitter(*emitter, out_id); });
+    pf_emitter in{};  // the caller's struct_size bytes over the defaults (ABI rules)
+    if (pf_result r = pf::read_input(emitter, full_default_emitter(), in, s.log(), "pf_add_emitter"); r != PF_OK) return r;
+    if (pf_result r = pf::validate_emitter(in, s.desc(), s.log(), "pf_add_emitter"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_add_emitter", [&] { return s.add_emitter(in, out_id); });
 }
 
 pf_result pf_set_emitter(pf_sim* handle, uint32_t id, const pf_emitter* emitter) {
     PF_ENTRY(sim, handle, "pf_set_emitter");
     pf::Simulation& s = *sim->impl;
     if (!emitter) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_emitter: emitter must not be NULL");
-    if (pf_result r = pf::validate_emitter(*emitter, s.desc(), s.log(), "pf_set_emitter"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_set_emitter", [&] { return s.set_emitter(id, *emitter); });
+    pf_emitter in{};  // the caller's struct_size bytes over the defaults (ABI rules)
+    if (pf_result r = pf::read_input(emitter, full_default_emitter(), in, s.log(), "pf_set_emitter"); r != PF_OK) return r;
+    if (pf_result r = pf::validate_emitter(in, s.desc(), s.log(), "pf_set_emitter"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_set_emitter", [&] { return s.set_emitter(id, in); });
 }
 
 pf_result pf_remove_emitter(pf_sim* handle, uint32_t id) {
@@ -326,16 +366,20 @@ pf_result pf_add_sink(pf_sim* handle, const pf_sink* sink, uint32_t* out_id) {
     PF_ENTRY(sim, handle, "pf_add_sink");
     pf::Simulation& s = *sim->impl;
     if (!sink) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_sink: sink must not be NULL");
-    if (pf_result r = pf::validate_sink(*sink, s.desc(), s.log(), "pf_add_sink"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_add_sink", [&] { return s.add_sink(*sink, out_id); });
+    pf_sink in{};  // the caller's struct_size bytes over the defaults (ABI rules)
+    if (pf_result r = pf::read_input(sink, full_default_sink(), in, s.log(), "pf_add_sink"); r != PF_OK) return r;
+    if (pf_result r = pf::validate_sink(in, s.desc(), s.log(), "pf_add_sink"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_add_sink", [&] { return s.add_sink(in, out_id); });
 }
 
 pf_result pf_set_sink(pf_sim* handle, uint32_t id, const pf_sink* sink) {
     PF_ENTRY(sim, handle, "pf_set_sink");
     pf::Simulation& s = *sim->impl;
     if (!sink) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_sink: sink must not be NULL");
-    if (pf_result r = pf::validate_sink(*sink, s.desc(), s.log(), "pf_set_sink"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_set_sink", [&] { return s.set_sink(id, *sink); });
+    pf_sink in{};  // the caller's struct_size bytes over the defaults (ABI rules)
+    if (pf_result r = pf::read_input(sink, full_default_sink(), in, s.log(), "pf_set_sink"); r != PF_OK) return r;
+    if (pf_result r = pf::validate_sink(in, s.desc(), s.log(), "pf_set_sink"); r != PF_OK) return r;
+    return guarded(s.log(), "pf_set_sink", [&] { return s.set_sink(id, in); });
 }
 
 pf_result pf_remove_sink(pf_sim* handle, uint32_t id) {
@@ -344,26 +388,35 @@ pf_result pf_remove_sink(pf_sim* handle, uint32_t id) {
     return guarded(s.log(), "pf_remove_sink", [&] { return s.remove_sink(id); });
 }
 
-pf_domain_motion pf_default_domain_motion(void) {
+namespace {
+pf_domain_motion full_default_domain_motion() {
     pf_domain_motion m{};
+    m.struct_size = uint32_t(sizeof(pf_domain_motion));
     m.rotation[3] = 1.0f;
     return m;
+}
+}  // namespace
+
+pf_result pf_init_domain_motion(pf_domain_motion* out, uint32_t struct_size) {
+    return pf::init_struct(out, struct_size, full_default_domain_motion(), "pf_init_domain_motion");
 }
 
 pf_result pf_set_domain_motion(pf_sim* handle, const pf_domain_motion* motion) {
     PF_ENTRY(sim, handle, "pf_set_domain_motion");
     pf::Simulation& s = *sim->impl;
     if (!motion) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_domain_motion: motion must not be NULL");
-    if (pf_result r = pf::validate_domain_motion(*motion, s.log(), "pf_set_domain_motion"); r != PF_OK) return r;
-    s.set_domain_motion(*motion);
+    pf_domain_motion in{};  // the caller's struct_size bytes over the defaults (ABI rules)
+    if (pf_result r = pf::read_input(motion, full_default_domain_motion(), in, s.log(), "pf_set_domain_motion"); r != PF_OK)
+        return r;
+    if (pf_result r = pf::validate_domain_motion(in, s.log(), "pf_set_domain_motion"); r != PF_OK) return r;
+    s.set_domain_motion(in);
     return PF_OK;
 }
 
 pf_result pf_get_domain_motion(const pf_sim* handle, pf_domain_motion* out) {
     PF_ENTRY(sim, handle, "pf_get_domain_motion");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_domain_motion: out must not be NULL");
-    *out = sim->impl->domain_motion_state();
-    return PF_OK;
+    return pf::write_output(out, sim->impl->domain_motion_state(), sim->impl->log(), "pf_get_domain_motion");
 }
 
 pf_result pf_get_particle_count(pf_sim* handle, uint32_t* out) {

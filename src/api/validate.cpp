@@ -148,7 +148,7 @@ pf_result validate_obstacle(const pf_obstacle& o, const Log& log, const char* fn
     auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
     if (enum_bits(o.shape) >= PF_OBSTACLE_SHAPE_COUNT) return bad("unknown obstacle shape " + std::to_string(int32_t(enum_bits(o.shape))));
     if (!finite3(o.position) || !finite3(o.half_extents) || !std::isfinite(o.rotation[3]) || !finite3(o.rotation) ||
-        !std::isfinite(o.radius) || !std::isfinite(o.half_height))
+        !std::isfinite(o.radius) || !std::isfinite(o.half_height) || !std::isfinite(o.sdf_scale))
         return bad("every field of the obstacle must be finite");
     if (!finite3(o.velocity)) return bad("velocity must be finite");
     if (!finite3(o.angular_velocity)) return bad("angular_velocity must be finite");

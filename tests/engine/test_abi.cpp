@@ -192,6 +192,115 @@ TEST_F(Abi, BadStructSizesAreRefusedAndLogged) {
     EXPECT_EQ(pf_init_particle_params(&pp, 2), PF_ERROR_INVALID_ARGUMENT);
 }
 
+// The effect descriptors (pf_force_field, pf_obstacle, pf_emitter, pf_sink, pf_domain_motion)
+// follow the same rules. For each, a caller of an older header that lacked the last field
+// passes struct_size up to it and poison after: accepted, so the poison was not read, while the
+// same poison inside a struct of today's size is refused (the control: it would have shown).
+template <typename T>
+struct OlderCase {
+    const char* what;
+    T value;           // a valid descriptor of today's layout
+    size_t last;       // offset of its last field, which the older header lacks
+    pf_result (*add)(pf_sim*, const T*);
+};
+
+template <typename T>
+void expect_older_accepted_and_poison_refused(pf_sim* sim, const OlderCase<T>& c) {
+    SCOPED_TRACE(c.what);
+    // Control: today's size with the last word poisoned is refused.
+    T poisoned = c.value;
+    std::memset(reinterpret_cast<uint8_t*>(&poisoned) + c.last, 0xFF, sizeof(T) - c.last);
+    clear_log();
+    EXPECT_EQ(c.add(sim, &poisoned), PF_ERROR_INVALID_ARGUMENT) << "the control: poison in the last field must be refused";
+    // The older caller: struct_size stops before the last field; the poison after is not read.
+    T older = poisoned;
+    older.struct_size = uint32_t(c.last);
+    EXPECT_EQ(c.add(sim, &older), PF_OK) << last_log();
+    // Bad sizes are refused with a message naming struct_size.
+    for (uint32_t bad : {2u, 6u}) {
+        T b = c.value;
+        b.struct_size = bad;
+        clear_log();
+        EXPECT_EQ(c.add(sim, &b), PF_ERROR_INVALID_ARGUMENT);
+        EXPECT_NE(std::string(last_log()).find("struct_size"), std::string::npos) << last_log();
+    }
+}
+
+TEST_F(Abi, EffectDescriptorsOfAnOlderHeaderTakeDefaultsForTheirMissingFields) {
+    ASSERT_EQ(pf_set_features(sim_.get(), PF_FEATURE_ALL), PF_OK) << last_log();
+    pf_sim* s = sim_.get();
+    pf_force_field field = pf_default_force_field();
+    field.vector[0] = 1.0f;
+    expect_older_accepted_and_poison_refused<pf_force_field>(
+        s, {"force field (older: no drag)", field, offsetof(pf_force_field, drag),
+            [](pf_sim* h, const pf_force_field* f) { return pf_add_force_field(h, f, nullptr); }});
+    pf_obstacle box = pf_default_obstacle();
+    box.position[0] = box.position[1] = box.position[2] = 0.8f;
+    expect_older_accepted_and_poison_refused<pf_obstacle>(
+        s, {"obstacle (older: no sdf_scale)", box, offsetof(pf_obstacle, sdf_scale),
+            [](pf_sim* h, const pf_obstacle* o) { return pf_add_obstacle(h, o, nullptr); }});
+    pf_emitter nozzle = pf_default_emitter();
+    nozzle.position[0] = nozzle.position[1] = nozzle.position[2] = 0.8f;
+    nozzle.rate = 100.0f;
+    expect_older_accepted_and_poison_refused<pf_emitter>(
+        s, {"emitter (older: no rate_unit)", nozzle, offsetof(pf_emitter, rate_unit),
+            [](pf_sim* h, const pf_emitter* e) { return pf_add_emitter(h, e, nullptr); }});
+    pf_sink drain = pf_default_sink();
+    drain.shape = PF_SINK_SPHERE;
+    drain.position[0] = drain.position[1] = drain.position[2] = 0.8f;
+    expect_older_accepted_and_poison_refused<pf_sink>(
+        s, {"sink (older: no radius)", drain, offsetof(pf_sink, radius),
+            [](pf_sim* h, const pf_sink* k) { return pf_add_sink(h, k, nullptr); }});
+    pf_domain_motion motion = pf_default_domain_motion();
+    motion.velocity[0] = 0.5f;
+    expect_older_accepted_and_poison_refused<pf_domain_motion>(
+        s, {"domain motion (older: no angular_velocity)", motion, offsetof(pf_domain_motion, angular_velocity),
+            [](pf_sim* h, const pf_domain_motion* m) { return pf_set_domain_motion(h, m); }});
+
+    // What was stored has the default in the field the older caller lacked, and goes back to an
+    // older caller as its own bytes only.
+    Poisoned<pf_domain_motion> out(pf_domain_motion{});
+    reinterpret_cast<pf_domain_motion*>(out.data())->struct_size = uint32_t(offsetof(pf_domain_motion, angular_velocity));
+    std::memset(out.bytes.data() + offsetof(pf_domain_motion, angular_velocity), 0xFF,
+                out.bytes.size() - offsetof(pf_domain_motion, angular_velocity));
+    ASSERT_EQ(pf_get_domain_motion(s, static_cast<pf_domain_motion*>(out.data())), PF_OK);
+    const auto* got = reinterpret_cast<const pf_domain_motion*>(out.data());
+    EXPECT_EQ(got->struct_size, uint32_t(offsetof(pf_domain_motion, angular_velocity)));
+    EXPECT_EQ(got->velocity[0], 0.5f);
+    for (size_t i = offsetof(pf_domain_motion, angular_velocity); i < out.bytes.size(); ++i)
+        ASSERT_EQ(out.bytes[i], 0xFF) << "pf_get_domain_motion wrote beyond struct_size, byte " << i;
+    pf_domain_motion full{};
+    full.struct_size = sizeof full;
+    ASSERT_EQ(pf_get_domain_motion(s, &full), PF_OK);
+    EXPECT_EQ(full.angular_velocity[0], 0.0f) << "the missing field took its default";
+    EXPECT_EQ(full.angular_velocity[1], 0.0f);
+    EXPECT_EQ(full.angular_velocity[2], 0.0f);
+
+    // pf_init_* of every descriptor: sizes below 4 or not multiples of 4, and NULL, refused.
+    EXPECT_EQ(pf_init_force_field(&field, 2), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_init_obstacle(nullptr, sizeof(pf_obstacle)), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_init_emitter(&nozzle, 6), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_init_sink(&drain, 0), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_init_domain_motion(&motion, 3), PF_ERROR_INVALID_ARGUMENT);
+}
+
+// A zero-initialised descriptor (struct_size 0) takes the default for every zero field: a sink
+// with only its position set is the default 0.1 m box there (zero half extents would be refused).
+TEST_F(Abi, ZeroInitialisedEffectDescriptorsTakeDefaults) {
+    ASSERT_EQ(pf_set_features(sim_.get(), PF_FEATURE_SINKS | PF_FEATURE_OBSTACLES), PF_OK) << last_log();
+    pf_sink drain{};
+    drain.position[0] = drain.position[1] = drain.position[2] = 0.8f;
+    EXPECT_EQ(pf_add_sink(sim_.get(), &drain, nullptr), PF_OK) << last_log();
+    pf_obstacle ball{};
+    ball.shape = PF_OBSTACLE_SPHERE;
+    ball.position[0] = ball.position[1] = ball.position[2] = 0.5f;
+    EXPECT_EQ(pf_add_obstacle(sim_.get(), &ball, nullptr), PF_OK) << last_log();
+    // Today's size with the same zeros means zeros: refused.
+    ball.struct_size = sizeof ball;
+    clear_log();
+    EXPECT_EQ(pf_add_obstacle(sim_.get(), &ball, nullptr), PF_ERROR_INVALID_ARGUMENT);
+}
+
 TEST_F(Abi, HeaderVersionMustMatchMajorMinor) {
     struct Case {
         uint32_t version;
