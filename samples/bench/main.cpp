@@ -210,6 +210,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
 
     glFinish();
     double t0 = pfs::now_ms();
+    pfs::SceneEffectIds effects;  // owns the SDF obstacles' textures: declared first, outlives sim
     SimPtr sim;
     {
         pf_sim* raw = nullptr;
@@ -220,7 +221,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     r.create_ms = pfs::now_ms() - t0;
     t0 = pfs::now_ms();
     pfs::fill_scene(sim.get(), r.scene);
-    pfs::add_scene_effects(sim.get(), r.scene);
+    effects = pfs::add_scene_effects(sim.get(), r.scene);
     glFinish();
     r.fill_ms = pfs::now_ms() - t0;
 

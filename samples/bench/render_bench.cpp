@@ -117,7 +117,9 @@ struct SimDeleter {
 
 void bench_scene(const Options& opt, const std::string& arg, std::vector<Measurement>& out) {
     const pfs::Scene scene = pfs::load_scene(pfs::resolve_scene_path(arg));
-    std::unique_ptr<pf_sim, SimDeleter> sim(pfs::create_scene_sim(scene, pfs::get_proc, pfs::stderr_logger(false)));
+    pfs::SceneEffectIds effects;  // owns the SDF obstacles' textures: declared first, outlives sim
+    std::unique_ptr<pf_sim, SimDeleter> sim(
+        pfs::create_scene_sim(scene, pfs::get_proc, pfs::stderr_logger(false), &effects));
     for (uint32_t i = 0; i < opt.warmup; ++i) pfs::check(pf_step(sim.get(), scene.frame_dt), "pf_step");
     pf_stats st{};
     pf_get_stats(sim.get(), &st);

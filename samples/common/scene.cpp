@@ -228,19 +228,4 @@ void fill_scene(pf_sim* sim, const Scene& s) {
     }
 }
 
-pf_sim* create_scene_sim(const Scene& s, pf_gl_get_proc_address_fn get_proc, pf_logger logger, SceneEffectIds* ids) {
-    const pf_sim_desc d = make_sim_desc(s, get_proc, logger);
-    pf_sim* sim = nullptr;
-    check(pf_create(&d, &sim), (s.path + ": pf_create").c_str());
-    try {
-        fill_scene(sim, s);
-        SceneEffectIds made = add_scene_effects(sim, s);
-        if (ids) *ids = std::move(made);
-    } catch (...) {
-        pf_destroy(sim);
-        throw;
-    }
-    return sim;
-}
-
 } // namespace pfs

@@ -29,6 +29,10 @@
 //                    "half_extents": [..], "radius": 0.1, "half_height": 0,
 //                    "float_density": 500 } ],   pf_obstacle; with float_density (kg/m^3) the
 //                                               samples float it as a rigid body (floating.h)
+//                  shape "box", "sphere", "capsule" or "sdf"; an "sdf" obstacle also takes
+//                  "file": "bowl.npy" (required; relative to the scene file's folder: a NumPy
+//                  .npy grid, sdf_file.h gives the format), "half_extents" (required: the box the
+//                  grid tiles) and "sdf_scale": 1 (metres per unit of the file's values)
 //   "emitters": [ { "shape": "disc", "position": [..], "rotation": [..], "half_extents": [..],
 //                   "radius": 0.05, "velocity": [..], "rate": 0.002,
 //                   "rate_unit": "volume_per_second" } ],          pf_emitter
@@ -46,8 +50,12 @@
 
 #include <pf/pf.h>
 
+#include "sdf_file.h"
+#include "sdf_texture.h"
+
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -86,6 +94,9 @@ struct Scene {
     std::vector<pf_force_field> force_fields;
     std::vector<pf_obstacle> obstacles;
     std::vector<float> obstacle_float_density;  // per obstacle; 0: moved only by the app
+    // Per obstacle: the grid of an "sdf" one (its pf_obstacle's sdf_texture stays 0 until
+    // add_scene_effects uploads the grid), null for the other shapes.
+    std::vector<std::shared_ptr<const SdfGrid>> obstacle_sdf;
     std::vector<pf_emitter> emitters;
     std::vector<pf_sink> sinks;
     bool has_domain_motion = false;
@@ -117,21 +128,28 @@ pf_sim_desc make_sim_desc(const Scene& scene, pf_gl_get_proc_address_fn get_proc
 /// the box.
 void fill_scene(pf_sim* sim, const Scene& scene);
 
-/// The ids the library gave the scene's objects, in file order.
+/// The ids the library gave the scene's objects, in file order, and the engine objects they use:
+/// the GL textures of the SDF obstacles, which the library samples but never deletes. Keep this
+/// while the sim lives (destroy it after pf_destroy, with the GL context current).
 struct SceneEffectIds {
     std::vector<uint32_t> force_fields, obstacles, emitters, sinks;
+    std::vector<uint32_t> obstacle_textures;  // per obstacle: its sdf_texture as added (0: not an SDF)
+    SdfTextures sdf_textures;                 // owns the textures named in obstacle_textures
 };
 
 /// The scene's floating obstacles (float_density), registered with their ids.
 class FloatingBodies;
 void float_scene_obstacles(const Scene& scene, const SceneEffectIds& ids, FloatingBodies& out);
 
-/// Adds the scene's force fields, obstacles, emitters and sinks to sim. Throws pfs::Error naming
-/// the object's JSON Pointer and the library's reason on failure.
+/// Adds the scene's force fields, obstacles, emitters and sinks to sim, first uploading each SDF
+/// obstacle's grid as a GL 3D texture (with the app's GL loader, gladLoadGL, already run; the
+/// textures are the result's). Throws pfs::Error naming the object's JSON Pointer and the
+/// library's reason on failure. (samples/common/scene_sim.cpp: GL code, kept out of the loader.)
 SceneEffectIds add_scene_effects(pf_sim* sim, const Scene& scene);
 
-/// pf_create + fill_scene + add_scene_effects (ids into *ids when given); throws on failure (and
-/// destroys the half-made sim).
+/// pf_create + fill_scene + add_scene_effects (ids into *ids when given; a scene with SDF
+/// obstacles needs ids, which own their textures); throws on failure (and destroys the half-made
+/// sim).
 pf_sim* create_scene_sim(const Scene& scene, pf_gl_get_proc_address_fn get_proc, pf_logger logger,
                          SceneEffectIds* ids = nullptr);
 

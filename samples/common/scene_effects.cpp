@@ -1,6 +1,6 @@
 // The effects part of a scene file: "features", "preset" and the object lists (force fields,
-// obstacles, emitters, sinks), parsed into pf_* structs that start from pf_default_*(), and
-// added to a simulation with the object's JSON Pointer in every error.
+// obstacles with their SDF files, emitters, sinks), parsed into pf_* structs that start from
+// pf_default_*(). (scene_sim.cpp adds them to a simulation: GL code, kept out of the loader.)
 #include "scene_effects.h"
 
 #include "floating.h"
@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <array>
+#include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -64,7 +66,7 @@ struct ObjectReader {
 const Names<pf_force_field_type> kFieldTypes = {
     {"directional", PF_FORCE_FIELD_DIRECTIONAL}, {"point", PF_FORCE_FIELD_POINT}, {"vortex", PF_FORCE_FIELD_VORTEX}};
 const Names<pf_obstacle_shape> kObstacleShapes = {
-    {"box", PF_OBSTACLE_BOX}, {"sphere", PF_OBSTACLE_SPHERE}, {"capsule", PF_OBSTACLE_CAPSULE}};
+    {"box", PF_OBSTACLE_BOX}, {"sphere", PF_OBSTACLE_SPHERE}, {"capsule", PF_OBSTACLE_CAPSULE}, {"sdf", PF_OBSTACLE_SDF}};
 const Names<pf_emitter_shape> kEmitterShapes = {
     {"box", PF_EMITTER_BOX}, {"sphere", PF_EMITTER_SPHERE}, {"disc", PF_EMITTER_DISC}};
 const Names<pf_rate_unit> kRateUnits = {
@@ -89,7 +91,8 @@ pf_force_field read_field(const ObjectReader& r) {
 }
 
 pf_obstacle read_obstacle(const ObjectReader& r) {
-    r.p.check_keys(r.obj, r.path, {"shape", "position", "rotation", "half_extents", "radius", "half_height", "float_density"});
+    r.p.check_keys(r.obj, r.path, {"shape", "position", "rotation", "half_extents", "radius", "half_height",
+                                   "float_density", "file", "sdf_scale"});
     pf_obstacle o = pf_default_obstacle();
     if (const json* j = r.find("shape")) o.shape = enum_value(r.p, *j, r.at("shape"), kObstacleShapes);
     r.vec3("position", o.position);
@@ -97,7 +100,35 @@ pf_obstacle read_obstacle(const ObjectReader& r) {
     r.vec3("half_extents", o.half_extents);
     r.real("radius", o.radius);
     r.real("half_height", o.half_height);
+    if (o.shape == PF_OBSTACLE_SDF) {
+        // The box the grid tiles has no sensible default size: the file's author chose it.
+        if (!r.find("half_extents")) r.p.fail(r.at("half_extents"), "is required for shape \"sdf\" (the box the grid tiles)");
+        r.p.required(r.obj, r.path, "file");  // loaded by load_obstacle_sdfs
+        if (const json* j = r.find("sdf_scale")) o.sdf_scale = r.p.real(*j, r.at("sdf_scale"), 0.0, 1e6, true);
+    } else {
+        for (const char* key : {"file", "sdf_scale"})
+            if (r.find(key)) r.p.fail(r.at(key), "is only for shape \"sdf\"");
+    }
     return o;
+}
+
+// The grid file of each "sdf" obstacle, its path relative to the scene file's folder unless
+// absolute; an error names the obstacle's "file" and the file as opened.
+void load_obstacle_sdfs(const Parser& p, const json& root, Scene& s) {
+    const std::filesystem::path folder = std::filesystem::path(s.path).parent_path();
+    for (size_t i = 0; i < s.obstacles.size(); ++i) {
+        s.obstacle_sdf.emplace_back();
+        if (s.obstacles[i].shape != PF_OBSTACLE_SDF) continue;
+        const std::string at = Parser::join(Parser::join("/obstacles", i), "file");
+        const std::string name = p.string(root.at("obstacles")[i].at("file"), at);
+        if (name.empty()) p.fail(at, "must name an .npy file, found an empty string");
+        const std::filesystem::path file = folder / std::filesystem::path(name);  // an absolute name replaces folder
+        try {
+            s.obstacle_sdf.back() = std::make_shared<const SdfGrid>(load_npy_sdf(file.string()));
+        } catch (const SdfFileError& e) {
+            p.fail(at, file.string() + ": " + e.what());
+        }
+    }
 }
 
 pf_emitter read_emitter(const ObjectReader& r) {
@@ -140,22 +171,6 @@ void read_list(const Parser& p, const json& root, const char* key, uint32_t feat
     }
 }
 
-// Adds every object of a list, their ids into `ids`; on failure names the object (the library
-// logged its reason).
-template <typename T, typename Add>
-void add_list(pf_sim* sim, const Scene& s, const char* key, const std::vector<T>& list, Add add,
-              std::vector<uint32_t>& ids) {
-    for (size_t i = 0; i < list.size(); ++i) {
-        uint32_t id = 0;
-        const pf_result r = add(sim, &list[i], &id);
-        ids.push_back(id);
-        if (r != PF_OK) {
-            throw Error(s.path + ": " + Parser::join(Parser::join("", key), i) + ": refused by the library: " +
-                        pf_result_string(r) + " (the log says why)");
-        }
-    }
-}
-
 pf_domain_motion read_motion(const ObjectReader& r) {
     r.p.check_keys(r.obj, r.path, {"position", "rotation", "velocity", "angular_velocity"});
     pf_domain_motion m = pf_default_domain_motion();
@@ -190,6 +205,7 @@ void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
         const std::string at = Parser::join(Parser::join("/obstacles", i), "float_density");
         s.obstacle_float_density.push_back(it == o.end() ? 0.0f : p.real(*it, at, 0.0, 1e6, true));
     }
+    load_obstacle_sdfs(p, root, s);
     read_list(p, root, "emitters", PF_FEATURE_EMITTERS, s, s.emitters, read_emitter);
     read_list(p, root, "sinks", PF_FEATURE_SINKS, s, s.sinks, read_sink);
     if (auto it = root.find("domain_motion"); it != root.end()) {
@@ -226,19 +242,11 @@ uint32_t parse_feature_list(const std::string& list, const char* what) {
 
 void float_scene_obstacles(const Scene& s, const SceneEffectIds& ids, FloatingBodies& out) {
     for (size_t i = 0; i < s.obstacles.size() && i < ids.obstacles.size(); ++i) {
-        if (s.obstacle_float_density[i] > 0.0f) out.add(ids.obstacles[i], s.obstacles[i], s.obstacle_float_density[i]);
+        if (s.obstacle_float_density[i] <= 0.0f) continue;
+        pf_obstacle added = s.obstacles[i];  // as added: with its SDF texture, if any
+        if (i < ids.obstacle_textures.size()) added.sdf_texture = ids.obstacle_textures[i];
+        out.add(ids.obstacles[i], added, s.obstacle_float_density[i]);
     }
-}
-
-SceneEffectIds add_scene_effects(pf_sim* sim, const Scene& s) {
-    SceneEffectIds ids;
-    add_list(sim, s, "force_fields", s.force_fields, pf_add_force_field, ids.force_fields);
-    add_list(sim, s, "obstacles", s.obstacles, pf_add_obstacle, ids.obstacles);
-    add_list(sim, s, "emitters", s.emitters, pf_add_emitter, ids.emitters);
-    add_list(sim, s, "sinks", s.sinks, pf_add_sink, ids.sinks);
-    if (s.has_domain_motion && pf_set_domain_motion(sim, &s.domain_motion) != PF_OK)
-        throw Error(s.path + ": /domain_motion: refused by the library (the log says why)");
-    return ids;
 }
 
 } // namespace pfs

@@ -293,6 +293,7 @@ int run(int argc, char** argv) {
                 pfs::advection_name(desc.params.advection));
 
     double t0 = pfs::now_ms();
+    pfs::SceneEffectIds effects;  // owns the SDF obstacles' textures: declared first, outlives sim
     SimPtr sim;
     {
         pf_sim* raw = nullptr;
@@ -303,7 +304,8 @@ int run(int argc, char** argv) {
     t0 = pfs::now_ms();
     pfs::fill_scene(sim.get(), scene);
     pfs::FloatingBodies floating;
-    pfs::float_scene_obstacles(scene, pfs::add_scene_effects(sim.get(), scene), floating);
+    effects = pfs::add_scene_effects(sim.get(), scene);
+    pfs::float_scene_obstacles(scene, effects, floating);
     glFinish();
     const double fill_ms = pfs::now_ms() - t0;
 
