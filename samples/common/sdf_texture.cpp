@@ -4,6 +4,7 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -58,8 +59,15 @@ uint32_t SdfTextures::add(const SdfGrid& grid, const std::string& label) {
     // The library samples through its own sampler (linear, clamped); these serve other readers.
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    if (glObjectLabel) glObjectLabel(GL_TEXTURE, name, GLsizei(label.size()), label.c_str());
     const GLenum error = glGetError();
+    if (error == GL_NO_ERROR && glObjectLabel) {
+        // For GL debuggers; a label longer than the context allows would be an error, so its
+        // end (the obstacle's pointer) is kept.
+        GLint most = 0;
+        glGetIntegerv(GL_MAX_LABEL_LENGTH, &most);
+        const size_t keep = std::min(label.size(), size_t(std::max(most - 1, 0)));
+        glObjectLabel(GL_TEXTURE, name, GLsizei(keep), label.c_str() + (label.size() - keep));
+    }
 
     glPixelStorei(GL_UNPACK_ALIGNMENT, previous_alignment);
     glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(previous_unpack));

@@ -5,7 +5,7 @@
 // from the file's grid, as pf.h documents the texture: linear between texel centres that tile
 // the box, the box surface's value plus the way to it outside) and stays in the bowl. The same
 // run with the obstacle removed finds liquid inside the wall and none held up, so the checks
-// would fail were the texture wrong or ignored.
+// would fail were the texture wrong or ignored. A floating SDF obstacle is moved with its texture.
 #include <glad/gl.h>
 
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "floating.h"
 #include "scene.h"
 #include "sdf_file.h"
 #include "support/sim_fixture.h"
@@ -165,6 +166,23 @@ TEST_F(SceneSdfObstacle, WithoutTheObstacleTheChecksFail) {
     EXPECT_LT(r.held, 0.05);
     RecordProperty("most_inside", std::to_string(r.most_inside));
     RecordProperty("held_fraction", std::to_string(r.held));
+}
+
+// float_density on an SDF obstacle: the samples' rigid body sets it every frame through
+// pf_set_obstacle, which refuses an SDF obstacle without its texture (sdf_texture 0).
+TEST_F(SceneSdfObstacle, FloatingSdfObstacleMovesWithItsTexture) {
+    scene_.obstacle_float_density[0] = 300.0f;
+    pfs::SceneEffectIds ids;
+    pf_sim* sim = pfs::create_scene_sim(scene_, pf::test::get_proc, pfs::stderr_logger(false), &ids);
+    ASSERT_NE(sim, nullptr);
+    pfs::FloatingBodies floating;
+    pfs::float_scene_obstacles(scene_, ids, floating);
+    EXPECT_FALSE(floating.empty());
+    for (int f = 0; f < 10; ++f) {
+        ASSERT_EQ(floating.step(sim, scene_.frame_dt, scene_.params.gravity), PF_OK) << "frame " << f;
+        ASSERT_EQ(pf_step(sim, scene_.frame_dt), PF_OK);
+    }
+    pf_destroy(sim);
 }
 
 } // namespace
