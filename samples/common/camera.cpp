@@ -74,6 +74,20 @@ void OrbitCamera::ray(double px, double py, int width, int height, glm::vec3& or
     dir = glm::normalize(forward() + right() * (ndc_x * t * aspect) + up() * (ndc_y * t));
 }
 
+bool OrbitCamera::window_position(const glm::vec3& p, int width, int height, glm::vec2& pixel,
+                                  float& view_depth) const {
+    const glm::vec3 d = p - eye();
+    view_depth = glm::dot(d, forward());
+    if (view_depth <= 0.0f) return false;
+    const float aspect = float(width) / float(std::max(height, 1));
+    const float t = std::tan(0.5f * glm::radians(fov_deg));
+    const float ndc_x = glm::dot(d, right()) / (view_depth * t * aspect);
+    const float ndc_y = glm::dot(d, up()) / (view_depth * t);
+    pixel.x = 0.5f * (ndc_x + 1.0f) * float(width) - 0.5f;
+    pixel.y = 0.5f * (1.0f - ndc_y) * float(height) - 0.5f;
+    return true;
+}
+
 void OrbitCamera::orbit(float dx_px, float dy_px) {
     yaw -= dx_px * 0.006f;
     pitch = std::clamp(pitch + dy_px * 0.006f, -kMaxPitch, kMaxPitch);

@@ -46,6 +46,9 @@ public:
     /// Ray through window pixel (px, py) (origin top-left, as GLFW reports the cursor) of a
     /// width x height window: origin at the eye, unit direction.
     void ray(double px, double py, int width, int height, glm::vec3& origin, glm::vec3& dir) const;
+    /// The inverse of ray(): the window pixel (origin top-left) whose ray passes through world
+    /// point p, and p's distance along forward(); false when p is not in front of the eye.
+    bool window_position(const glm::vec3& p, int width, int height, glm::vec2& pixel, float& view_depth) const;
 
     /// Mouse helpers: orbit by pixel deltas, pan the target in the view plane, zoom by factor.
     void orbit(float dx_px, float dy_px);

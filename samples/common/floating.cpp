@@ -24,8 +24,35 @@ void FloatingBodies::add(uint32_t id, const pf_obstacle& obstacle, double densit
     bodies_.push_back(Body{id, obstacle, density * obstacle_volume(obstacle)});
 }
 
+const FloatingBodies::Body* FloatingBodies::find(uint32_t id) const {
+    for (const Body& b : bodies_)
+        if (b.id == id) return &b;
+    return nullptr;
+}
+
+FloatingBodies::Body* FloatingBodies::find(uint32_t id) {
+    return const_cast<Body*>(static_cast<const FloatingBodies*>(this)->find(id));
+}
+
+void FloatingBodies::set_pose(uint32_t id, const pf_obstacle& obstacle) {
+    if (Body* b = find(id)) b->obstacle = obstacle;
+}
+
+void FloatingBodies::set_held(uint32_t id, bool held) {
+    if (Body* b = find(id)) b->held = held;
+}
+
+std::vector<pf_obstacle> FloatingBodies::poses(const std::vector<pf_obstacle>& placed,
+                                               const std::vector<uint32_t>& ids) const {
+    std::vector<pf_obstacle> out = placed;
+    for (size_t i = 0; i < out.size() && i < ids.size(); ++i)
+        if (const Body* b = find(ids[i])) out[i] = b->obstacle;
+    return out;
+}
+
 pf_result FloatingBodies::step(pf_sim* sim, float frame_dt, const float gravity[3]) {
     for (Body& b : bodies_) {
+        if (b.held) continue;
         pf_obstacle_force f{};
         if (pf_result r = pf_get_obstacle_force(sim, b.id, &f); r != PF_OK) return r;
         pf_obstacle& o = b.obstacle;

@@ -4,6 +4,8 @@
 // of the coupling, which the force's lag makes necessary for light bodies; see
 // tests/engine/test_obstacles.cpp), and the new pose and velocity go back through
 // pf_set_obstacle. Rotation is not integrated (the bodies keep their orientation).
+// A body the user holds (the viewer's mouse drag) is not integrated: the application sets its
+// pose and velocity (set_pose) and the body goes on from there when let go.
 #pragma once
 
 #include <pf/pf.h>
@@ -21,12 +23,26 @@ public:
     pf_result step(pf_sim* sim, float frame_dt, const float gravity[3]);
     bool empty() const { return bodies_.empty(); }
 
+    /// Whether obstacle `id` floats.
+    bool floats(uint32_t id) const { return find(id) != nullptr; }
+    /// Replaces the pose and velocity of floating obstacle `id` (no-op for others); the caller
+    /// gives pflip the same pose.
+    void set_pose(uint32_t id, const pf_obstacle& obstacle);
+    /// A held body is left out of step(): the application moves it.
+    void set_held(uint32_t id, bool held);
+    /// The poses pflip holds now: `placed` (the application's poses, ids[i] naming placed[i])
+    /// with each floating obstacle's pose in its place.
+    std::vector<pf_obstacle> poses(const std::vector<pf_obstacle>& placed, const std::vector<uint32_t>& ids) const;
+
 private:
     struct Body {
         uint32_t id;
         pf_obstacle obstacle;
         double mass;
+        bool held = false;
     };
+    const Body* find(uint32_t id) const;
+    Body* find(uint32_t id);
     std::vector<Body> bodies_;
 };
 

@@ -186,6 +186,7 @@ World::World(const Scene& scene, GLADloadfunc get_proc) {
     lit_prog_ = link_program(kLitVS, kLitFS, "world shader");
     sky_prog_ = link_program(kSkyVS, kSkyFS, "sky shader");
     glGenVertexArrays(1, &empty_vao_);
+    obstacle_renderer_ = std::make_unique<ObstacleRenderer>();
     build_geometry(scene);
     glGenFramebuffers(1, &fbo_);
     glGenTextures(1, &sky_cube_);
@@ -393,6 +394,14 @@ void World::draw(const OrbitCamera& cam) {
     glDrawArrays(GL_TRIANGLES, 0, vertex_count_);
     glBindVertexArray(0);
     glUseProgram(0);
+
+    ObstacleView obstacle_view;
+    obstacle_view.view_proj = vp;
+    obstacle_view.eye = eye;
+    obstacle_view.sun = sun_;
+    obstacle_view.zero_to_one = cam.zero_to_one();
+    obstacle_renderer_->draw(obstacles_, obstacle_view);
+
     glDisable(GL_CULL_FACE);
     glDepthFunc(GL_LESS);
     check_gl("World::draw");

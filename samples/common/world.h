@@ -1,11 +1,13 @@
 // The samples' "engine world": what a game engine would have drawn before asking pflip for
 // the liquid. A sky, a checkered floor, a cut-away tile tank around the simulation domain (the
 // far walls and low rims are opaque, the near walls left out so the liquid stays visible, thin
-// corner posts and top bars frame it), and an opaque crate in front of the tank so occlusion
-// shows. Everything is drawn with the samples' own GL (pf_glad_app) into the world's own
+// corner posts and top bars frame it), an opaque crate in front of the tank so occlusion
+// shows, and the scene's obstacles at the poses the application last gave pflip
+// (set_obstacles; obstacle_renderer.h draws them, SDF obstacles ray-marched in their texture). Everything is drawn with the samples' own GL (pf_glad_app) into the world's own
 // framebuffer: a colour texture and a depth texture, exactly the pair pf_render_target wants.
 //
 // Per frame:
+//     world.set_obstacles(poses);                 // what pf_set_obstacle last received
 //     world.draw(camera);                         // sky + geometry into world.framebuffer()
 //     pf_render_target t = world.render_target(); // colour/depth textures, the same FBO as target
 //     pf_render_ssf(sim, &pfcam, &t, &ssf);       // liquid drawn over it
@@ -19,11 +21,14 @@
 
 #include "camera.h"
 #include "gl_util.h"
+#include "obstacle_renderer.h"
 #include "scene.h"
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <string>
+#include <vector>
 
 namespace pfs {
 
@@ -47,6 +52,10 @@ public:
 
     /// Whether depth conventions other than standard can be used (glClipControl present).
     bool has_clip_control() const { return clip_control_ != nullptr; }
+
+    /// The obstacles draw() shows from now on, at these poses (the library has no getter: pass
+    /// what pf_add_obstacle / pf_set_obstacle last received). Empty by default.
+    void set_obstacles(const std::vector<pf_obstacle>& obstacles) { obstacles_ = obstacles; }
 
     /// Clears and draws the world into framebuffer() with camera (viewport = whole framebuffer).
     /// For zero_to_one / reversed_z cameras sets glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE),
@@ -77,6 +86,8 @@ private:
     void build_sky_cubemap();
     void draw_sky(const glm::mat3& inv_view_rot, float tan_x, float tan_y);
 
+    std::unique_ptr<ObstacleRenderer> obstacle_renderer_;
+    std::vector<pf_obstacle> obstacles_;
     GLuint fbo_ = 0, color_tex_ = 0, depth_tex_ = 0;
     GLuint sky_cube_ = 0;
     GLuint lit_prog_ = 0, sky_prog_ = 0;

@@ -1,8 +1,9 @@
 // pf_headless — the pflip demo without a window.
 //
 // Creates a headless GL 4.3 context (EGL), loads a scene and runs it with pf_step. Every K
-// frames it renders the way an engine would: the sample's "world" (sky, floor, tank, crates:
-// samples/common/world.h, drawn with the sample's own GL loader) goes into the sample's own
+// frames it renders the way an engine would: the sample's "world" (sky, floor, tank, crates and
+// the scene's obstacles at their current poses, floating ones included: samples/common/world.h,
+// drawn with the sample's own GL loader) goes into the sample's own
 // framebuffer with a colour and a depth texture, then pflip draws the liquid into that
 // framebuffer (pf_render_ssf, or pf_render_particles for the debug view) over the world's
 // colour and depth, and the image is read back to frame_NNNN.png. With --video the PNGs are
@@ -24,6 +25,7 @@
 #include "image_write.h"
 #include "ply_write.h"
 #include "floating.h"
+#include "obstacle_shapes.h"
 #include "scene.h"
 #include "util.h"
 #include "world.h"
@@ -59,6 +61,7 @@ struct Options {
     pf_ssf_path path = PF_SSF_PATH_COMPUTE;
     pf_depth_convention depth = PF_DEPTH_STANDARD;
     bool builtin_sky = false;
+    bool draw_obstacles = true;       // --hide-obstacles: simulated but not drawn
     float radius = 0;                 // 0: pflip's default
     pf_particle_color color_by = PF_PARTICLE_COLOR_SPEED;
     bool color_by_set = false;
@@ -85,6 +88,8 @@ void print_usage(std::FILE* f) {
                  "  --depth standard|zero_to_one|reversed_z  depth convention of the camera (default\n"
                  "                      standard; the others use glClipControl, GL 4.5)\n"
                  "  --builtin-sky       let pflip reflect its built-in sky instead of the world's cube map\n"
+                 "  --hide-obstacles    leave the scene's obstacles out of the images (still simulated;\n"
+                 "                      for comparisons)\n"
                  "  --radius M          particle radius in metres (default: half a cell)\n"
                  "  --color-by speed|vx|vy|vz|height|uniform  particle colouring (with --render particles)\n"
                  "  --video FILE.mp4    encode the PNGs to H.264 with ffmpeg (needs ffmpeg on PATH)\n"
@@ -142,6 +147,8 @@ Options parse_args(int argc, char** argv) {
             o.depth = pfs::parse_depth_convention(args.value(), "--depth");
         } else if (a == "--builtin-sky") {
             o.builtin_sky = true;
+        } else if (a == "--hide-obstacles") {
+            o.draw_obstacles = false;
         } else if (a == "--radius") {
             o.radius = pfs::parse_float(args.value(), "--radius", 1e-5f, 100.0f);
         } else if (a == "--color-by") {
@@ -247,6 +254,33 @@ struct SimDeleter {
 };
 using SimPtr = std::unique_ptr<pf_sim, SimDeleter>;
 
+const char* obstacle_shape_name(pf_obstacle_shape shape) {
+    switch (shape) {
+    case PF_OBSTACLE_BOX: return "box";
+    case PF_OBSTACLE_SPHERE: return "sphere";
+    case PF_OBSTACLE_CAPSULE: return "capsule";
+    default: return "sdf";
+    }
+}
+
+/// Where each obstacle's centre starts in the images (pixels, origin top-left as in the PNGs):
+/// image checks look there.
+void print_obstacle_pixels(const std::vector<pf_obstacle>& obstacles, const pfs::OrbitCamera& camera,
+                           const Options& opt, bool drawn) {
+    for (size_t i = 0; i < obstacles.size(); ++i) {
+        const pf_obstacle& o = obstacles[i];
+        glm::vec2 px(0.0f);
+        float depth = 0.0f;
+        const glm::vec3 centre(o.position[0], o.position[1], o.position[2]);
+        if (camera.window_position(centre, int(opt.width), int(opt.height), px, depth))
+            std::printf("  obstacle %zu (%s, %s) centre at pixel %.1f,%.1f\n", i, obstacle_shape_name(o.shape),
+                        drawn ? "drawn" : "hidden", double(px.x), double(px.y));
+        else
+            std::printf("  obstacle %zu (%s, %s) centre behind the camera\n", i, obstacle_shape_name(o.shape),
+                        drawn ? "drawn" : "hidden");
+    }
+}
+
 const char* filter_name(pf_ssf_filter f) {
     switch (f) {
     case PF_SSF_FILTER_NARROW_RANGE: return "narrow range";
@@ -306,6 +340,8 @@ int run(int argc, char** argv) {
     pfs::FloatingBodies floating;
     effects = pfs::add_scene_effects(sim.get(), scene);
     pfs::float_scene_obstacles(scene, effects, floating);
+    // The obstacles as the library holds them (SDF ones with their textures); floating ones move.
+    const std::vector<pf_obstacle> placed_obstacles = pfs::obstacles_as_added(scene, effects);
     glFinish();
     const double fill_ms = pfs::now_ms() - t0;
 
@@ -349,6 +385,7 @@ int run(int argc, char** argv) {
         else
             std::printf("  images: %ux%u every %u frames -> %s/frame_NNNN.png; pf_render_particles, %s depth\n",
                         opt.width, opt.height, opt.every, opt.out.c_str(), pfs::depth_convention_name(opt.depth));
+        print_obstacle_pixels(scene.obstacles, camera, opt, opt.draw_obstacles);
     }
 
     // ---- main loop ----
@@ -395,6 +432,7 @@ int run(int argc, char** argv) {
     };
 
     auto write_image = [&]() {
+        if (opt.draw_obstacles) world->set_obstacles(floating.poses(placed_obstacles, effects.obstacles));
         glFinish();
         const double r0 = pfs::now_ms();
         pfs::check(pfs::draw_frame(*world, sim.get(), camera, look), look.ssf ? "pf_render_ssf" : "pf_render_particles");

@@ -12,12 +12,21 @@
 // solver's own passes show), the solver's iterations and final residual, and rolling plots of
 // GPU ms per step and log10 residual with a tick where a knob changed.
 //
+// The world draws the scene's obstacles at the poses the viewer last gave pflip (floating ones
+// as they bob). The effects panel toggles each effect live (pf_set_features) and edits the
+// obstacles' positions and the emitters' rates.
+//
 // Mouse: right drag (or Alt + left drag) orbits, middle drag (or Shift + right drag) pans,
-// the wheel zooms, left drag pushes the liquid (pf_push along the drag). Keys: Space pauses,
-// S steps once, R resets the scene, P toggles SSF / particles, Esc quits.
+// the wheel zooms. Left drag on an obstacle grabs it (the nearest one under the cursor) and
+// moves it in the camera-facing plane through the grabbed point, with the velocity of the drag
+// so it pushes the liquid; a floating obstacle stops floating while held. Left drag anywhere
+// else pushes the liquid (pf_push along the drag). Keys: Space pauses, S steps once, R resets
+// the scene, P toggles SSF / particles, Esc quits.
 //
 // --screenshot PATH --frames N runs N frames, saves the window (UI included) to PATH (PNG, or
 // JPEG for .jpg) and exits: scripted screenshots, and the CTest smoke test under xvfb-run.
+// --drag and --drag-obstacle script a left drag (a push, an obstacle moved) for tests; at exit
+// the viewer prints each obstacle's start and final pose.
 
 #include <glad/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -33,6 +42,7 @@
 #include "gl_util.h"
 #include "image_write.h"
 #include "floating.h"
+#include "obstacle_shapes.h"
 #include "scene.h"
 #include "util.h"
 #include "world.h"
@@ -73,7 +83,39 @@ struct Options {
     bool drag = false;
     float drag_from[2] = {0, 0}, drag_to[2] = {0, 0};
     uint32_t drag_first = 5, drag_last = 15;
+    // --drag-obstacle: a synthetic left drag that starts on obstacle drag_obstacle's centre
+    int drag_obstacle = -1;     // scene obstacle index; -1: none
+    float drag_obstacle_by[2] = {0, 0};
 };
+
+/// A scripted drag's text: `count` values (named by `shape`, e.g. "X0,Y0,X1,Y1"), then
+/// optionally the frames F0,F1 it spans (default 5..15). Throws naming option.
+void parse_scripted_drag(const std::string& v, const char* option, const char* shape, int count, float* values,
+                         uint32_t& first, uint32_t& last) {
+    float f[8] = {};
+    int n = 0;
+    for (size_t at = 0; n < 8 && at <= v.size(); ++n) {
+        char* end = nullptr;
+        f[n] = std::strtof(v.c_str() + at, &end);
+        const size_t used = size_t(end - v.c_str());
+        if (used == at || (used < v.size() && v[used] != ',')) {
+            n = -1; // not a number, or not followed by a comma
+            break;
+        }
+        at = used + 1;
+    }
+    float f0 = 5, f1 = 15;
+    if (n == count + 2) {
+        f0 = f[count];
+        f1 = f[count + 1];
+    }
+    if ((n != count && n != count + 2) || f0 < 1 || f1 <= f0)
+        throw Error(std::string(option) + ": expected " + shape + " or " + shape + ",F0,F1 (F0 >= 1, F1 > F0), got '" +
+                    v + "'");
+    std::copy(f, f + count, values);
+    first = uint32_t(f0);
+    last = uint32_t(f1);
+}
 
 void print_usage(std::FILE* f) {
     std::fprintf(f,
@@ -89,11 +131,16 @@ void print_usage(std::FILE* f) {
                  "                      with --screenshot, otherwise until the window closes)\n"
                  "  --drag X0,Y0,X1,Y1[,F0,F1]  scripted left drag (a push) from window pixel X0,Y0 to X1,Y1\n"
                  "                      over frames F0..F1 (default 5..15)\n"
+                 "  --drag-obstacle I,DX,DY[,F0,F1]  scripted left drag that grabs scene obstacle I at its\n"
+                 "                      centre (seen from the camera at frame F0) and moves the cursor by DX,DY\n"
+                 "                      window pixels over frames F0..F1; an error if the press grabs no\n"
+                 "                      obstacle or another one\n"
                  "%s"
                  "  --verbose           pflip's info messages\n"
                  "  -h, --help          this text\n"
                  "mouse: right drag / Alt+left drag orbit, middle drag / Shift+right drag pan, wheel zoom,\n"
-                 "       left drag pushes the liquid. keys: Space pause, S step, R reset, P SSF/particles, Esc quit\n"
+                 "       left drag on an obstacle moves it, elsewhere pushes the liquid.\n"
+                 "keys: Space pause, S step, R reset, P SSF/particles, Esc quit\n"
                  "scenes directory: %s (PF_SCENES_DIR)\n",
                  pfs::ParamOverrides::usage(), pfs::scenes_dir().c_str());
 }
@@ -129,24 +176,28 @@ Options parse_args(int argc, char** argv) {
             o.frames = pfs::parse_u32(args.value(), "--frames", 1, 100000000);
             frames_set = true;
         } else if (a == "--drag") {
-            const std::string v = args.value();
-            float f[6] = {0, 0, 0, 0, 5, 15};
-            const int n = std::sscanf(v.c_str(), "%f,%f,%f,%f,%f,%f", &f[0], &f[1], &f[2], &f[3], &f[4], &f[5]);
-            if ((n != 4 && n != 6) || f[4] < 1 || f[5] <= f[4])
-                throw Error("--drag: expected X0,Y0,X1,Y1 or X0,Y0,X1,Y1,F0,F1 (F0 >= 1, F1 > F0), got '" + v + "'");
+            float f[4];
+            parse_scripted_drag(args.value(), "--drag", "X0,Y0,X1,Y1", 4, f, o.drag_first, o.drag_last);
             o.drag = true;
             o.drag_from[0] = f[0];
             o.drag_from[1] = f[1];
             o.drag_to[0] = f[2];
             o.drag_to[1] = f[3];
-            o.drag_first = uint32_t(f[4]);
-            o.drag_last = uint32_t(f[5]);
+        } else if (a == "--drag-obstacle") {
+            float f[3];
+            parse_scripted_drag(args.value(), "--drag-obstacle", "I,DX,DY", 3, f, o.drag_first, o.drag_last);
+            if (f[0] < 0 || f[0] != std::floor(f[0]) || f[0] >= float(PF_MAX_OBSTACLES))
+                throw Error("--drag-obstacle: I must be an obstacle index, got '" + args.value() + "'");
+            o.drag_obstacle = int(f[0]);
+            o.drag_obstacle_by[0] = f[1];
+            o.drag_obstacle_by[1] = f[2];
         } else if (a == "--verbose") {
             o.verbose = true;
         } else {
             throw Error("unknown argument '" + a + "' (see --help)");
         }
     }
+    if (o.drag && o.drag_obstacle >= 0) throw Error("--drag and --drag-obstacle both script the left button: give one");
     if (!o.screenshot.empty()) {
         if (!frames_set) o.frames = 60;
         o.vsync = false;
@@ -335,12 +386,25 @@ public:
     }
 
     bool frame(uint64_t frame_index);
+    /// Each scene obstacle's pose at load and now, and where its centre is on screen: the
+    /// scripted drag's outcome, for tests.
+    void print_obstacles() const;
+    /// The error the panel shows now (empty if none).
+    const std::string& last_error() const { return last_error_; }
 
 private:
     void load_scene(const std::string& path);
     void reset_scene();
     void handle_mouse(int fb_w, int fb_h, uint64_t frame_index);
     void begin_push(double x, double y, int fb_w, int fb_h);
+    bool scripted_cursor(uint64_t frame_index, double& x, double& y);
+    pf_obstacle obstacle_pose(size_t i) const;
+    std::vector<pf_obstacle> obstacle_poses() const;
+    pf_result place_obstacle(size_t i, const pf_obstacle& o);
+    bool begin_obstacle_drag(double x, double y);
+    void move_grabbed_obstacle(double x, double y);
+    void release_obstacle();
+    void check_scripted_grab() const;
     void ui(int fb_w, int fb_h);
     void ui_scene();
     void ui_simulation();
@@ -390,7 +454,7 @@ private:
     int steps_per_frame_ = 1;
 
     // mouse
-    enum class Drag { none, orbit, pan, push } drag_ = Drag::none;
+    enum class Drag { none, orbit, pan, push, obstacle } drag_ = Drag::none;
     double last_x_ = 0, last_y_ = 0;
     glm::vec3 grab_point_{0.0f}, grab_normal_{0.0f, 0.0f, 1.0f};
     glm::vec3 push_center_{0.0f}, push_dv_{0.0f};
@@ -398,6 +462,10 @@ private:
     float push_radius_frac_ = 0.12f;  // of the largest tank extent
     float push_gain_ = 0.5f;
     float push_max_dv_ = 2.0f;         // m/s added per frame of dragging
+    size_t grabbed_ = 0;               // scene obstacle index while drag_ == Drag::obstacle
+    glm::vec3 grab_offset_{0.0f};      // obstacle centre - grabbed surface point
+    std::vector<pf_obstacle> start_poses_; // scene_'s obstacles as loaded
+    glm::vec2 scripted_from_{0.0f};    // --drag-obstacle: the cursor's start (obstacle centre)
 
     // keys (ImGui 1.86 has no named letter keys): pressed = down now, up last frame
     std::map<int, bool> key_down_;
@@ -421,6 +489,8 @@ void Viewer::load_scene(const std::string& path) {
     effects_error_.clear();
     floating_ = pfs::FloatingBodies{};
     pfs::float_scene_obstacles(scene_, effect_ids_, floating_);
+    start_poses_ = scene_.obstacles;
+    drag_ = Drag::none;
     pfs::check(pf_get_params(sim_.get(), &params_), "pf_get_params");
     preset_ = 0;
     params_error_.clear();
@@ -501,19 +571,148 @@ void Viewer::begin_push(double x, double y, int fb_w, int fb_h) {
     drag_ = Drag::push;
 }
 
+// --drag / --drag-obstacle: during frames F0..F1 the cursor moves linearly from its start to its
+// end with the left button held. --drag-obstacle starts on the obstacle's centre as seen at F0.
+bool Viewer::scripted_cursor(uint64_t frame_index, double& x, double& y) {
+    const bool scripting = opt_.drag || opt_.drag_obstacle >= 0;
+    if (!scripting || frame_index < opt_.drag_first || frame_index > opt_.drag_last) return false;
+    glm::vec2 from(opt_.drag_from[0], opt_.drag_from[1]), to(opt_.drag_to[0], opt_.drag_to[1]);
+    if (opt_.drag_obstacle >= 0) {
+        if (frame_index == opt_.drag_first) {
+            const size_t i = size_t(opt_.drag_obstacle);
+            if (i >= scene_.obstacles.size())
+                throw Error("--drag-obstacle: scene " + scene_.name + " has " + std::to_string(scene_.obstacles.size()) +
+                            " obstacles, no obstacle " + std::to_string(i));
+            int win_w = 0, win_h = 0;
+            glfwGetWindowSize(window_, &win_w, &win_h);
+            const pf_obstacle o = obstacle_pose(i);
+            float depth = 0.0f;
+            if (!camera_.window_position(glm::vec3(o.position[0], o.position[1], o.position[2]), win_w, win_h,
+                                         scripted_from_, depth))
+                throw Error("--drag-obstacle: obstacle " + std::to_string(i) + " is behind the camera");
+        }
+        from = scripted_from_;
+        to = from + glm::vec2(opt_.drag_obstacle_by[0], opt_.drag_obstacle_by[1]);
+    }
+    const double t = double(frame_index - opt_.drag_first) / double(opt_.drag_last - opt_.drag_first);
+    x = from.x + t * (to.x - from.x);
+    y = from.y + t * (to.y - from.y);
+    return true;
+}
+
+// The scripted obstacle drag must have grabbed the obstacle it names: otherwise it would push
+// the liquid and a test of the obstacle's motion would measure nothing.
+void Viewer::check_scripted_grab() const {
+    if (opt_.drag_obstacle < 0) return;
+    if (drag_ != Drag::obstacle)
+        throw Error("--drag-obstacle: the press at window " + std::to_string(scripted_from_.x) + "," +
+                    std::to_string(scripted_from_.y) + " grabbed no obstacle");
+    if (grabbed_ != size_t(opt_.drag_obstacle))
+        throw Error("--drag-obstacle: the press grabbed obstacle " + std::to_string(grabbed_) + ", not " +
+                    std::to_string(opt_.drag_obstacle) + " (another one is in front of it)");
+}
+
+pf_obstacle Viewer::obstacle_pose(size_t i) const { return obstacle_poses()[i]; }
+
+std::vector<pf_obstacle> Viewer::obstacle_poses() const {
+    return floating_.poses(scene_.obstacles, effect_ids_.obstacles);
+}
+
+// One place moves an obstacle: the viewer's copy (what the world draws), the floating body's
+// state (so it goes on from there) and the library's.
+pf_result Viewer::place_obstacle(size_t i, const pf_obstacle& o) {
+    scene_.obstacles[i] = o;
+    floating_.set_pose(effect_ids_.obstacles[i], o);
+    return pf_set_obstacle(sim_.get(), effect_ids_.obstacles[i], &o);
+}
+
+// Left press: the nearest obstacle whose shape the cursor's ray meets is grabbed at the hit
+// point; the drag then moves that point in the camera-facing plane through it.
+bool Viewer::begin_obstacle_drag(double x, double y) {
+    int win_w = 0, win_h = 0;
+    glfwGetWindowSize(window_, &win_w, &win_h);
+    glm::vec3 o, d;
+    camera_.ray(x, y, win_w, win_h, o, d);
+    const std::vector<pf_obstacle> poses = obstacle_poses();
+    float best = -1.0f;
+    for (size_t i = 0; i < poses.size() && i < effect_ids_.obstacles.size(); ++i) {
+        const float t = pfs::ray_obstacle(o, d, poses[i]);
+        if (t >= 0.0f && (best < 0.0f || t < best)) {
+            best = t;
+            grabbed_ = i;
+        }
+    }
+    if (best < 0.0f) return false;
+    const pf_obstacle& g = poses[grabbed_];
+    grab_point_ = o + best * d;
+    grab_normal_ = camera_.forward();
+    grab_offset_ = glm::vec3(g.position[0], g.position[1], g.position[2]) - grab_point_;
+    floating_.set_held(effect_ids_.obstacles[grabbed_], true);
+    drag_ = Drag::obstacle;
+    return true;
+}
+
+// The grabbed point follows the cursor; the obstacle's velocity is its displacement over the
+// simulated time this frame advances (steps x frame_dt), which is how fast the liquid sees its
+// faces move. Paused, no time passes: it moves at rest.
+void Viewer::move_grabbed_obstacle(double x, double y) {
+    int win_w = 0, win_h = 0;
+    glfwGetWindowSize(window_, &win_w, &win_h);
+    glm::vec3 o, d;
+    camera_.ray(x, y, win_w, win_h, o, d);
+    const float t = ray_plane(o, d, grab_point_, grab_normal_);
+    if (t < 0) return;
+    grab_point_ = o + t * d;
+    pf_obstacle ob = obstacle_pose(grabbed_);
+    const glm::vec3 old_centre(ob.position[0], ob.position[1], ob.position[2]);
+    const glm::vec3 centre = grab_point_ + grab_offset_;
+    const bool simulating = !paused_ || step_once_;
+    const float sim_dt = simulating ? scene_.frame_dt * float(steps_per_frame_) : 0.0f;
+    const glm::vec3 velocity = sim_dt > 0.0f ? (centre - old_centre) / sim_dt : glm::vec3(0.0f);
+    for (int a = 0; a < 3; ++a) {
+        ob.position[a] = centre[a];
+        ob.velocity[a] = velocity[a];
+    }
+    if (pf_result r = place_obstacle(grabbed_, ob); r != PF_OK) last_error_ = log_.explain("pf_set_obstacle", r);
+}
+
+// Let go: the obstacle stops where it is (a floating one falls or floats from rest).
+void Viewer::release_obstacle() {
+    pf_obstacle ob = obstacle_pose(grabbed_);
+    std::fill(ob.velocity, ob.velocity + 3, 0.0f);
+    if (pf_result r = place_obstacle(grabbed_, ob); r != PF_OK) last_error_ = log_.explain("pf_set_obstacle", r);
+    floating_.set_held(effect_ids_.obstacles[grabbed_], false);
+}
+
+void Viewer::print_obstacles() const {
+    int win_w = 0, win_h = 0;
+    glfwGetWindowSize(window_, &win_w, &win_h);
+    const std::vector<pf_obstacle> now = obstacle_poses();
+    for (size_t i = 0; i < now.size() && i < start_poses_.size(); ++i) {
+        const pf_obstacle& a = start_poses_[i];
+        const pf_obstacle& b = now[i];
+        const glm::vec3 pa(a.position[0], a.position[1], a.position[2]), pb(b.position[0], b.position[1], b.position[2]);
+        glm::vec2 sa(0.0f), sb(0.0f);
+        float da = 0.0f, db = 0.0f;
+        const bool visible = camera_.window_position(pa, win_w, win_h, sa, da) && camera_.window_position(pb, win_w, win_h, sb, db);
+        std::printf("obstacle %zu: start %.4f %.4f %.4f  final %.4f %.4f %.4f  velocity %.4f %.4f %.4f  moved %.4f m",
+                    i, double(pa.x), double(pa.y), double(pa.z), double(pb.x), double(pb.y), double(pb.z),
+                    double(b.velocity[0]), double(b.velocity[1]), double(b.velocity[2]), double(glm::length(pb - pa)));
+        if (visible)
+            std::printf("  window %.0f,%.0f -> %.0f,%.0f  view depth %.3f -> %.3f m\n", double(sa.x), double(sa.y),
+                        double(sb.x), double(sb.y), double(da), double(db));
+        else
+            std::printf("  (behind the camera)\n");
+    }
+}
+
 void Viewer::handle_mouse(int fb_w, int fb_h, uint64_t frame_index) {
     ImGuiIO& io = ImGui::GetIO();
     double x = 0, y = 0;
     glfwGetCursorPos(window_, &x, &y);
     bool left = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    bool scripted = false;
-    if (opt_.drag && frame_index >= opt_.drag_first && frame_index <= opt_.drag_last) {
-        // --drag: the cursor moves linearly from drag_from to drag_to with the left button held.
-        const double t = double(frame_index - opt_.drag_first) / double(opt_.drag_last - opt_.drag_first);
-        x = opt_.drag_from[0] + t * (opt_.drag_to[0] - opt_.drag_from[0]);
-        y = opt_.drag_from[1] + t * (opt_.drag_to[1] - opt_.drag_from[1]);
-        left = scripted = true;
-    }
+    const bool scripted = scripted_cursor(frame_index, x, y);
+    if (scripted) left = true;
     const bool right = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
     const bool middle = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
     const bool alt = glfwGetKey(window_, GLFW_KEY_LEFT_ALT) == GLFW_PRESS || glfwGetKey(window_, GLFW_KEY_RIGHT_ALT) == GLFW_PRESS;
@@ -525,10 +724,12 @@ void Viewer::handle_mouse(int fb_w, int fb_h, uint64_t frame_index) {
     if (drag_ == Drag::none && (scripted || !io.WantCaptureMouse)) {
         if ((left && alt) || (right && !shift)) drag_ = Drag::orbit;
         else if (middle || (right && shift)) drag_ = Drag::pan;
-        else if (left) begin_push(x, y, fb_w, fb_h);
+        else if (left && !begin_obstacle_drag(x, y)) begin_push(x, y, fb_w, fb_h);
+        if (scripted && frame_index == opt_.drag_first) check_scripted_grab();
     }
+    if (drag_ == Drag::obstacle && !left) release_obstacle();
     if ((drag_ == Drag::orbit && !(left || right)) || (drag_ == Drag::pan && !(middle || right)) ||
-        (drag_ == Drag::push && !left))
+        ((drag_ == Drag::push || drag_ == Drag::obstacle) && !left))
         drag_ = Drag::none;
 
     int win_w = 0, win_h = 0;
@@ -536,6 +737,7 @@ void Viewer::handle_mouse(int fb_w, int fb_h, uint64_t frame_index) {
     switch (drag_) {
     case Drag::orbit: camera_.orbit(float(dx), float(dy)); break;
     case Drag::pan: camera_.pan(float(dx), float(dy), win_h); break;
+    case Drag::obstacle: move_grabbed_obstacle(x, y); break;
     case Drag::push: {
         glm::vec3 o, d;
         camera_.ray(x, y, win_w, win_h, o, d);
@@ -647,6 +849,7 @@ bool Viewer::frame(uint64_t frame_index) {
     world_->resize(fb_w, fb_h);
     world_->fit_clip_planes(camera_);
     camera_.depth = camera_depth_;
+    world_->set_obstacles(obstacle_poses());
     const pf_result r = pfs::draw_frame(*world_, sim_.get(), camera_, look_);
     if (r != PF_OK) last_error_ = std::string(look_.ssf ? "pf_render_ssf: " : "pf_render_particles: ") + pf_result_string(r);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, world_->framebuffer());
@@ -856,11 +1059,11 @@ void Viewer::ui_effects() {
         }
     }
     for (size_t i = 0; i < scene_.obstacles.size() && i < effect_ids_.obstacles.size(); ++i) {
-        pf_obstacle& o = scene_.obstacles[i];
+        pf_obstacle o = obstacle_pose(i); // a floating one where it floats now
         const std::string label = "obstacle " + std::to_string(i) + " position";
         if (ImGui::DragFloat3(label.c_str(), o.position, 0.005f, -1e4f, 1e4f, "%.3f")) {
             log_.clear();
-            report("pf_set_obstacle", pf_set_obstacle(sim_.get(), effect_ids_.obstacles[i], &o));
+            report("pf_set_obstacle", place_obstacle(i, o));
         }
     }
     for (size_t i = 0; i < scene_.emitters.size() && i < effect_ids_.emitters.size(); ++i) {
@@ -1161,6 +1364,9 @@ int run(int argc, char** argv) {
             }
             glfwSwapBuffers(window);
         }
+        viewer.print_obstacles();
+        // Shown in the panel, where a scripted run's log would never see it.
+        if (!viewer.last_error().empty()) std::fprintf(stderr, "pf_viewer: error shown at exit: %s\n", viewer.last_error().c_str());
     }
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
