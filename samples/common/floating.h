@@ -23,8 +23,6 @@ public:
     pf_result step(pf_sim* sim, float frame_dt, const float gravity[3]);
     bool empty() const { return bodies_.empty(); }
 
-    /// Whether obstacle `id` floats.
-    bool floats(uint32_t id) const { return find(id) != nullptr; }
     /// Replaces the pose and velocity of floating obstacle `id` (no-op for others); the caller
     /// gives pflip the same pose.
     void set_pose(uint32_t id, const pf_obstacle& obstacle);

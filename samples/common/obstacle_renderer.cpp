@@ -5,8 +5,6 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include <algorithm>
-
 namespace pfs {
 
 namespace {
@@ -174,11 +172,17 @@ void ObstacleRenderer::draw(const std::vector<pf_obstacle>& obstacles, const Obs
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
     glFrontFace(GL_CCW);
-    for (const pf_obstacle& o : obstacles) draw_one(o, view);
+    bool sdf_bound = false;
+    for (const pf_obstacle& o : obstacles) {
+        draw_one(o, view);
+        sdf_bound = sdf_bound || o.shape == PF_OBSTACLE_SDF;
+    }
     glCullFace(GL_BACK);
     glDisable(GL_CULL_FACE);
-    glBindSampler(0, 0);
-    glBindTexture(GL_TEXTURE_3D, 0);
+    if (sdf_bound) { // unit 0 as it was: the engine's texture unbound, no sampler object
+        glBindSampler(0, 0);
+        glBindTexture(GL_TEXTURE_3D, 0);
+    }
     glBindVertexArray(0);
     glUseProgram(0);
     check_gl("ObstacleRenderer::draw");

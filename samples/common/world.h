@@ -3,7 +3,8 @@
 // far walls and low rims are opaque, the near walls left out so the liquid stays visible, thin
 // corner posts and top bars frame it), an opaque crate in front of the tank so occlusion
 // shows, and the scene's obstacles at the poses the application last gave pflip
-// (set_obstacles; obstacle_renderer.h draws them, SDF obstacles ray-marched in their texture). Everything is drawn with the samples' own GL (pf_glad_app) into the world's own
+// (set_obstacles; obstacle_renderer.h draws them, SDF obstacles ray-marched in their texture).
+// Everything is drawn with the samples' own GL (pf_glad_app) into the world's own
 // framebuffer: a colour texture and a depth texture, exactly the pair pf_render_target wants.
 //
 // Per frame:

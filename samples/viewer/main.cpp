@@ -618,12 +618,14 @@ std::vector<pf_obstacle> Viewer::obstacle_poses() const {
     return floating_.poses(scene_.obstacles, effect_ids_.obstacles);
 }
 
-// One place moves an obstacle: the viewer's copy (what the world draws), the floating body's
-// state (so it goes on from there) and the library's.
+// One place moves an obstacle: the library's, then (if it took it) the viewer's copy (what the
+// world draws) and the floating body's state (so it goes on from there).
 pf_result Viewer::place_obstacle(size_t i, const pf_obstacle& o) {
+    const pf_result r = pf_set_obstacle(sim_.get(), effect_ids_.obstacles[i], &o);
+    if (r != PF_OK) return r;
     scene_.obstacles[i] = o;
     floating_.set_pose(effect_ids_.obstacles[i], o);
-    return pf_set_obstacle(sim_.get(), effect_ids_.obstacles[i], &o);
+    return PF_OK;
 }
 
 // Left press: the nearest obstacle whose shape the cursor's ray meets is grabbed at the hit
@@ -927,7 +929,7 @@ void Viewer::ui_scene() {
     ImGui::TextDisabled("%s", scene_.description.c_str());
     ImGui::TextDisabled("grid %ux%ux%u, cell %.4g m, dt %.4g s", scene_.grid_size[0], scene_.grid_size[1],
                         scene_.grid_size[2], double(scene_.cell_size), double(scene_.frame_dt));
-    if (ImGui::TreeNode("Push (left drag)")) {
+    if (ImGui::TreeNode("Push (left drag off the obstacles)")) {
         ImGui::SliderFloat("radius (of tank)", &push_radius_frac_, 0.02f, 0.5f, "%.2f");
         ImGui::SliderFloat("gain", &push_gain_, 0.05f, 4.0f, "%.2f");
         ImGui::SliderFloat("max dv m/s", &push_max_dv_, 0.1f, 20.0f, "%.1f");
