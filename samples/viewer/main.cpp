@@ -489,6 +489,9 @@ void Viewer::load_scene(const std::string& path) {
     effects_error_.clear();
     floating_ = pfs::FloatingBodies{};
     pfs::float_scene_obstacles(scene_, effect_ids_, floating_);
+    // From here scene_.obstacles are the viewer's poses as the library holds them (SDF ones
+    // with their textures, which pf_set_obstacle needs again).
+    scene_.obstacles = pfs::obstacles_as_added(scene_, effect_ids_);
     start_poses_ = scene_.obstacles;
     drag_ = Drag::none;
     pfs::check(pf_get_params(sim_.get(), &params_), "pf_get_params");
