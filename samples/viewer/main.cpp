@@ -17,11 +17,11 @@
 // obstacles' positions and the emitters' rates.
 //
 // Mouse: right drag (or Alt + left drag) orbits, middle drag (or Shift + right drag) pans,
-// the wheel zooms. Left drag on an obstacle grabs it (the nearest one under the cursor) and
-// moves it in the camera-facing plane through the grabbed point, with the velocity of the drag
-// so it pushes the liquid; a floating obstacle stops floating while held. Left drag anywhere
-// else pushes the liquid (pf_push along the drag). Keys: Space pauses, S steps once, R resets
-// the scene, P toggles SSF / particles, Esc quits.
+// the wheel zooms. Left drag on an obstacle grabs it (the nearest one under the cursor; an SDF
+// obstacle is picked by its box) and moves it in the camera-facing plane through the grabbed
+// point, with the velocity of the drag so it pushes the liquid; a floating obstacle stops
+// floating while held. Left drag anywhere else pushes the liquid (pf_push along the drag).
+// Keys: Space pauses, S steps once, R resets the scene, P toggles SSF / particles, Esc quits.
 //
 // --screenshot PATH --frames N runs N frames, saves the window (UI included) to PATH (PNG, or
 // JPEG for .jpg) and exits: scripted screenshots, and the CTest smoke test under xvfb-run.
