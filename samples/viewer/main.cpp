@@ -225,23 +225,6 @@ std::vector<std::string> list_scenes() {
     return out;
 }
 
-/// Ray / axis-aligned box: entry distance (>= 0) or -1 when missed.
-float ray_box(const glm::vec3& o, const glm::vec3& d, const glm::vec3& lo, const glm::vec3& hi) {
-    float t0 = 0.0f, t1 = 1e30f;
-    for (int a = 0; a < 3; ++a) {
-        if (std::fabs(d[a]) < 1e-12f) {
-            if (o[a] < lo[a] || o[a] > hi[a]) return -1.0f;
-            continue;
-        }
-        float ta = (lo[a] - o[a]) / d[a], tb = (hi[a] - o[a]) / d[a];
-        if (ta > tb) std::swap(ta, tb);
-        t0 = std::max(t0, ta);
-        t1 = std::min(t1, tb);
-        if (t0 > t1) return -1.0f;
-    }
-    return t0;
-}
-
 /// Ray / plane: distance or -1.
 float ray_plane(const glm::vec3& o, const glm::vec3& d, const glm::vec3& p, const glm::vec3& n) {
     const float den = glm::dot(d, n);
@@ -559,7 +542,8 @@ void Viewer::begin_push(double x, double y, int fb_w, int fb_h) {
                 const float tp = glm::dot(op, d);
                 if (tp > 0 && tp < best && glm::dot(op, op) - tp * tp < pick * pick) best = tp;
             }
-            t = best < 1e30f ? best : ray_box(o, d, lo, hi);
+            float enter = -1.0f, exit = -1.0f;
+            t = best < 1e30f ? best : (pfs::ray_box_span(o, d, lo, hi, enter, exit) ? enter : -1.0f);
         }
     }
     if (t < 0) {
