@@ -1,4 +1,5 @@
 #include "obstacle_renderer.h"
+#include "sun_light_glsl.h"
 
 #include "gl_util.h"
 #include "obstacle_shapes.h"
@@ -51,6 +52,8 @@ uniform bool u_zero_to_one;
 layout(binding = 0) uniform sampler3D u_sdf;
 layout(location = 0) out vec4 o_color;
 
+#pragma sun_light
+
 // The library's signed distances (shaders/effects/obstacles/obstacle_sdf.glsl), local frame.
 float shape_distance(vec3 p) {
     if (u_shape == 3) {
@@ -102,14 +105,7 @@ void main() {
     vec3 n = normalize(mat3(u_model) * shape_normal(p, h));
     vec3 world = (u_model * vec4(p, 1.0)).xyz;
 
-    vec3 v = normalize(u_eye - world);
-    vec3 half_vector = normalize(u_sun + v);
-    float diffuse = max(dot(n, u_sun), 0.0);
-    vec3 hemi = mix(vec3(0.36, 0.33, 0.30), vec3(0.62, 0.72, 0.86), 0.5 + 0.5 * n.y);
-    vec3 sun_color = vec3(1.0, 0.95, 0.86);
-    vec3 c = u_color * (0.55 * hemi + 0.8 * diffuse * sun_color)
-           + 0.3 * pow(max(dot(n, half_vector), 0.0), 40.0) * sun_color * step(0.0, dot(n, u_sun));
-    o_color = vec4(c, 1.0);
+    o_color = vec4(sun_lit(u_color, n, world, 0.3, 40.0), 1.0);
 
     vec4 clip = u_view_proj * vec4(world, 1.0);
     float z = clip.z / clip.w;
@@ -144,7 +140,7 @@ bool sdf_texture_normalized(GLuint texture) {
 } // namespace
 
 ObstacleRenderer::ObstacleRenderer() {
-    program_ = link_program(kObstacleVS, kObstacleFS, "obstacle shader");
+    program_ = link_program(kObstacleVS, with_sun_light(kObstacleFS).c_str(), "obstacle shader");
     glGenVertexArrays(1, &vao_);
     glGenSamplers(1, &sampler_);
     glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);

@@ -1,4 +1,5 @@
 #include "world.h"
+#include "sun_light_glsl.h"
 
 #include "util.h"
 
@@ -53,6 +54,8 @@ layout(location = 0) out vec4 o_color;
 
 float hash(vec2 p) { return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453); }
 
+#pragma sun_light
+
 void main() {
     vec3 n = normalize(v_normal);
     vec3 albedo = v_color;
@@ -83,13 +86,7 @@ void main() {
     } else if (v_pattern == 4) {
         spec_strength = 0.6; shininess = 40.0;
     }
-    vec3 v = normalize(u_eye - v_world);
-    vec3 h = normalize(u_sun + v);
-    float diffuse = max(dot(n, u_sun), 0.0);
-    vec3 hemi = mix(vec3(0.36, 0.33, 0.30), vec3(0.62, 0.72, 0.86), 0.5 + 0.5 * n.y);
-    vec3 sun_color = vec3(1.0, 0.95, 0.86);
-    vec3 c = albedo * (0.55 * hemi + 0.8 * diffuse * sun_color)
-           + spec_strength * pow(max(dot(n, h), 0.0), shininess) * sun_color * step(0.0, dot(n, u_sun));
+    vec3 c = sun_lit(albedo, n, v_world, spec_strength, shininess);
     vec2 centre = 0.5 * (u_tank_min.xz + u_tank_max.xz);
     float fog = smoothstep(u_fog.x, u_fog.y, length(v_world.xz - centre));
     o_color = vec4(mix(c, u_fog_color, fog), 1.0);
@@ -183,7 +180,7 @@ struct Mesh {
 
 World::World(const Scene& scene, GLADloadfunc get_proc) {
     clip_control_ = load_clip_control(get_proc);
-    lit_prog_ = link_program(kLitVS, kLitFS, "world shader");
+    lit_prog_ = link_program(kLitVS, with_sun_light(kLitFS).c_str(), "world shader");
     sky_prog_ = link_program(kSkyVS, kSkyFS, "sky shader");
     glGenVertexArrays(1, &empty_vao_);
     obstacle_renderer_ = std::make_unique<ObstacleRenderer>();

@@ -385,6 +385,8 @@ private:
     std::vector<pf_obstacle> obstacle_poses() const;
     pf_result place_obstacle(size_t i, const pf_obstacle& o);
     bool begin_obstacle_drag(double x, double y);
+    // The camera ray through cursor position (x, y) in window coordinates.
+    void cursor_ray(double x, double y, glm::vec3& origin, glm::vec3& dir) const;
     void move_grabbed_obstacle(double x, double y);
     void release_obstacle();
     void check_scripted_grab() const;
@@ -515,11 +517,15 @@ void Viewer::reset_scene() {
 // nearest one close to the ray, else the particles' bounding box) or else the tank's vertical
 // mid-plane facing the camera; the drag then moves along the camera-facing plane through that
 // point, and every frame of movement calls pf_push there with dv along the drag.
-void Viewer::begin_push(double x, double y, int fb_w, int fb_h) {
-    glm::vec3 o, d;
+void Viewer::cursor_ray(double x, double y, glm::vec3& origin, glm::vec3& dir) const {
     int win_w = 0, win_h = 0;
     glfwGetWindowSize(window_, &win_w, &win_h);
-    camera_.ray(x, y, win_w, win_h, o, d);
+    camera_.ray(x, y, win_w, win_h, origin, dir);
+}
+
+void Viewer::begin_push(double x, double y, int fb_w, int fb_h) {
+    glm::vec3 o, d;
+    cursor_ray(x, y, o, d);
     (void)fb_w;
     (void)fb_h;
     const glm::vec3 tlo = world_->tank_min(), thi = world_->tank_max();
@@ -618,10 +624,8 @@ pf_result Viewer::place_obstacle(size_t i, const pf_obstacle& o) {
 // Left press: the nearest obstacle whose shape the cursor's ray meets is grabbed at the hit
 // point; the drag then moves that point in the camera-facing plane through it.
 bool Viewer::begin_obstacle_drag(double x, double y) {
-    int win_w = 0, win_h = 0;
-    glfwGetWindowSize(window_, &win_w, &win_h);
     glm::vec3 o, d;
-    camera_.ray(x, y, win_w, win_h, o, d);
+    cursor_ray(x, y, o, d);
     const std::vector<pf_obstacle> poses = obstacle_poses();
     float best = -1.0f;
     for (size_t i = 0; i < poses.size() && i < effect_ids_.obstacles.size(); ++i) {
@@ -645,10 +649,8 @@ bool Viewer::begin_obstacle_drag(double x, double y) {
 // simulated time this frame advances (steps x frame_dt), which is how fast the liquid sees its
 // faces move. Paused, no time passes: it moves at rest.
 void Viewer::move_grabbed_obstacle(double x, double y) {
-    int win_w = 0, win_h = 0;
-    glfwGetWindowSize(window_, &win_w, &win_h);
     glm::vec3 o, d;
-    camera_.ray(x, y, win_w, win_h, o, d);
+    cursor_ray(x, y, o, d);
     const float t = ray_plane(o, d, grab_point_, grab_normal_);
     if (t < 0) return;
     grab_point_ = o + t * d;
@@ -729,7 +731,7 @@ void Viewer::handle_mouse(int fb_w, int fb_h, uint64_t frame_index) {
     case Drag::obstacle: move_grabbed_obstacle(x, y); break;
     case Drag::push: {
         glm::vec3 o, d;
-        camera_.ray(x, y, win_w, win_h, o, d);
+        cursor_ray(x, y, o, d);
         const float t = ray_plane(o, d, grab_point_, grab_normal_);
         if (t < 0) break;
         const glm::vec3 p = o + t * d;
