@@ -540,7 +540,8 @@ pf_result Simulation::step(float frame_dt) {
     runner_->end_step();
     end_effects_step();
 
-    // Status readback ring: copy now, read once the fence has passed (never wait).
+    // Status readback ring: copy now; the next step takes this one in (waiting only if the GPU
+    // has not finished it by then), pf_get_stats whenever its fence has passed.
     sim_time_ += double(frame_dt);
     const int slot = int(steps_ % kReadbackSlots);
     if (fences_[slot]) read_status_slot(slot);  // taken in already (kStatusLag); never dropped
@@ -636,76 +637,74 @@ void Simulation::take_lagged_status(int64_t step) {
 }
 
 void Simulation::read_status_slot(int s) const {
+    gl_.DeleteSync(fences_[s]);
+    fences_[s] = nullptr;
+    uint32_t words[PF_STATUS_WORDS] = {};
     {
-        gl_.DeleteSync(fences_[s]);
-        fences_[s] = nullptr;
-        uint32_t words[PF_STATUS_WORDS] = {};
-        {
-            // glGetBufferSubData waits for the copy if it has not run yet.
-            gl::StateGuard guard(gl_, gl_state_);
-            readback_[s].download(0, sizeof(words), words);
+        // glGetBufferSubData waits for the copy if it has not run yet.
+        gl::StateGuard guard(gl_, gl_state_);
+        readback_[s].download(0, sizeof(words), words);
+    }
+    StepStatus& got = received_[s];
+    got.valid = 1;
+    got.step = int64_t(fence_step_[s]);
+    std::memcpy(&got.max_speed, &words[PF_STATUS_MAX_SPEED], sizeof(float));
+    got.flags = words[PF_STATUS_FLAGS];
+    got.end_time = fence_time_[s];
+    // The GPU's live count then, plus what was added since, bounds today's count (sinks
+    // only lower it).
+    if (gpu_count_) {
+        const uint64_t bound = uint64_t(words[PF_STATUS_PARTICLE_COUNT]) + (added_total_ - fence_added_[s]);
+        if (bound < particle_count_) particle_count_ = uint32_t(bound);
+    }
+    if (fence_step_[s] > flags_cleared_at_step_) raise_flags(words[PF_STATUS_FLAGS]);
+    if (fence_step_[s] > status_step_) {
+        status_step_ = fence_step_[s];
+        std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
+        solver_iterations_ = words[PF_STATUS_SOLVER_ITERATIONS];
+        recent_iterations_ = words[PF_STATUS_SOLVER_FIRST_ROUND];
+        recent_later_iterations_ = words[PF_STATUS_SOLVER_LATER_ROUNDS];
+        recent_solver_ = fence_solver_[s];
+        std::memcpy(&solver_residual_, &words[PF_STATUS_SOLVER_RESIDUAL], sizeof(float));
+        Metrics m;
+        std::memcpy(&m.divergence_l2, &words[PF_STATUS_DIVERGENCE_L2], sizeof(float));
+        std::memcpy(&m.divergence_max, &words[PF_STATUS_DIVERGENCE_MAX], sizeof(float));
+        std::memcpy(&m.kinetic_energy, &words[PF_STATUS_KINETIC_ENERGY], sizeof(float));
+        std::memcpy(&m.particle_volume, &words[PF_STATUS_PARTICLE_VOLUME], sizeof(float));
+        float height_energy = 0.0f;
+        std::memcpy(&height_energy, &words[PF_STATUS_POTENTIAL_ENERGY], sizeof(float));
+        const uint32_t live = words[PF_STATUS_PARTICLE_COUNT];
+        m.potential_energy = float(double(height_energy) - double(live) * lowest_potential_per_particle());
+        m.fluid_cells = words[PF_STATUS_FLUID_CELLS];
+        metrics_ = m;
+        readback_count_ = live;
+        // The drifts' reference: the first step measured since the particles last changed.
+        if (!metrics_first_set_ && fence_step_[s] >= metrics_epoch_step_) {
+            metrics_first_ = m;
+            metrics_first_set_ = true;
         }
-        StepStatus& got = received_[s];
-        got.valid = true;
-        got.step = int64_t(fence_step_[s]);
-        std::memcpy(&got.max_speed, &words[PF_STATUS_MAX_SPEED], sizeof(float));
-        got.flags = words[PF_STATUS_FLAGS];
-        got.end_time = fence_time_[s];
-        // The GPU's live count then, plus what was added since, bounds today's count (sinks
-        // only lower it).
-        if (gpu_count_) {
-            const uint64_t bound = uint64_t(words[PF_STATUS_PARTICLE_COUNT]) + (added_total_ - fence_added_[s]);
-            if (bound < particle_count_) particle_count_ = uint32_t(bound);
+        // Lost volume against the rest volume of the particles (count / fill density): a
+        // cell counts at most its rest count, so only compression lowers the ratio, and
+        // unlike the drift it needs no earlier measurement (a 1 s frame compresses a dam
+        // break before the first one).
+        const double rest = double(live) / desc_.fill_particles_per_cell * std::pow(double(desc_.cell_size), 3);
+        if (fence_step_[s] > flags_cleared_at_step_ && rest > 0.0 &&
+            double(m.particle_volume) / rest - 1.0 < -double(desc_.params.volume_loss_limit))
+            raise_flags(PF_FLAG_VOLUME_LOST);
+        // Mechanical energy against its reference: without input (gravity does no net work
+        // on a closed system; the projection and the walls only remove energy) it can only
+        // fall, so a gain beyond the limit is numerical. The scale has a floor of every
+        // particle lifted one cell under 9.81 m/s^2, so a liquid at rest near zero energy
+        // does not raise it for rounding.
+        if (!energy_first_set_ && fence_step_[s] >= energy_epoch_step_) {
+            energy_first_ = double(m.kinetic_energy) + m.potential_energy;
+            energy_first_set_ = true;
         }
-        if (fence_step_[s] > flags_cleared_at_step_) raise_flags(words[PF_STATUS_FLAGS]);
-        if (fence_step_[s] > status_step_) {
-            status_step_ = fence_step_[s];
-            std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
-            solver_iterations_ = words[PF_STATUS_SOLVER_ITERATIONS];
-            recent_iterations_ = words[PF_STATUS_SOLVER_FIRST_ROUND];
-            recent_later_iterations_ = words[PF_STATUS_SOLVER_LATER_ROUNDS];
-            recent_solver_ = fence_solver_[s];
-            std::memcpy(&solver_residual_, &words[PF_STATUS_SOLVER_RESIDUAL], sizeof(float));
-            Metrics m;
-            std::memcpy(&m.divergence_l2, &words[PF_STATUS_DIVERGENCE_L2], sizeof(float));
-            std::memcpy(&m.divergence_max, &words[PF_STATUS_DIVERGENCE_MAX], sizeof(float));
-            std::memcpy(&m.kinetic_energy, &words[PF_STATUS_KINETIC_ENERGY], sizeof(float));
-            std::memcpy(&m.particle_volume, &words[PF_STATUS_PARTICLE_VOLUME], sizeof(float));
-            float height_energy = 0.0f;
-            std::memcpy(&height_energy, &words[PF_STATUS_POTENTIAL_ENERGY], sizeof(float));
-            const uint32_t live = words[PF_STATUS_PARTICLE_COUNT];
-            m.potential_energy = float(double(height_energy) - double(live) * lowest_potential_per_particle());
-            m.fluid_cells = words[PF_STATUS_FLUID_CELLS];
-            metrics_ = m;
-            readback_count_ = live;
-            // The drifts' reference: the first step measured since the particles last changed.
-            if (!metrics_first_set_ && fence_step_[s] >= metrics_epoch_step_) {
-                metrics_first_ = m;
-                metrics_first_set_ = true;
-            }
-            // Lost volume against the rest volume of the particles (count / fill density): a
-            // cell counts at most its rest count, so only compression lowers the ratio, and
-            // unlike the drift it needs no earlier measurement (a 1 s frame compresses a dam
-            // break before the first one).
-            const double rest = double(live) / desc_.fill_particles_per_cell * std::pow(double(desc_.cell_size), 3);
-            if (fence_step_[s] > flags_cleared_at_step_ && rest > 0.0 &&
-                double(m.particle_volume) / rest - 1.0 < -double(desc_.params.volume_loss_limit))
-                raise_flags(PF_FLAG_VOLUME_LOST);
-            // Mechanical energy against its reference: without input (gravity does no net work
-            // on a closed system; the projection and the walls only remove energy) it can only
-            // fall, so a gain beyond the limit is numerical. The scale has a floor of every
-            // particle lifted one cell under 9.81 m/s^2, so a liquid at rest near zero energy
-            // does not raise it for rounding.
-            if (!energy_first_set_ && fence_step_[s] >= energy_epoch_step_) {
-                energy_first_ = double(m.kinetic_energy) + m.potential_energy;
-                energy_first_set_ = true;
-            }
-            if (energy_first_set_ && fence_step_[s] > flags_cleared_at_step_) {
-                const double floor = double(live) * particle_mass() * 9.81 * desc_.cell_size;
-                const double scale = std::max(energy_first_, floor);
-                if (double(m.kinetic_energy) + m.potential_energy - energy_first_ > double(desc_.params.energy_gain_limit) * scale)
-                    raise_flags(PF_FLAG_ENERGY_GAINED);
-            }
+        if (energy_first_set_ && fence_step_[s] > flags_cleared_at_step_) {
+            const double floor = double(live) * particle_mass() * 9.81 * desc_.cell_size;
+            const double scale = std::max(energy_first_, floor);
+            if (double(m.kinetic_energy) + m.potential_energy - energy_first_ > double(desc_.params.energy_gain_limit) * scale)
+                raise_flags(PF_FLAG_ENERGY_GAINED);
         }
     }
 }
@@ -840,7 +839,6 @@ pf_result Simulation::clear_particles() {
     fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
     added_speed_ = 0.0f;
     gpu_max_speed_ = 0.0f;
-    cfl_speed_ = 0.0f;  // readbacks of steps before the clear still come in (deterministically)
     return PF_OK;
 }
 

@@ -269,7 +269,7 @@ private:
     static constexpr uint64_t kStatusLag = 1;
     static_assert(kStatusLag < uint64_t(kReadbackSlots), "a slot is reused only after its step was taken in");
     struct StepStatus {
-        bool valid = false;     // false: nothing read into this slot yet
+        uint32_t valid = 0;     // 0: nothing read into this slot yet, 1: read (a word: snapshots hold it)
         int64_t step = 0;
         float max_speed = 0.0f;
         uint32_t flags = 0;

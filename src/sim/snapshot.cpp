@@ -222,6 +222,12 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     if (s.recent_solver > uint32_t(PF_PRESSURE_SOLVER_COUNT) || s.p2g_range_shift > kMaxP2gRangeShift ||
         s.hydrostatic_start_pending > 1 || s.steps < s.status_step)
         return bad("its step state is invalid");
+    const auto speed_ok = [](float v) { return std::isfinite(v) && v >= 0.0f; };
+    const auto time_ok = [](double t) { return std::isfinite(t) && t >= 0.0; };
+    bool readbacks_ok = speed_ok(s.cfl_speed) && time_ok(s.cfl_time) && time_ok(s.sim_time);
+    for (const StepStatus& r : s.received)
+        readbacks_ok = readbacks_ok && r.valid <= 1 && (r.valid == 0 || (speed_ok(r.max_speed) && time_ok(r.end_time)));
+    if (!readbacks_ok) return bad("its CFL state (readback slots, speeds, times) is invalid");
     if (effect_count != kEffectCount) return bad("it holds " + std::to_string(effect_count) + " effects, this build has " +
                                                  std::to_string(kEffectCount));
     std::vector<std::pair<const uint8_t*, size_t>> effect_bytes;
@@ -318,7 +324,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     sim_time_ = s.sim_time;
     for (StepStatus& r : received_) r = StepStatus{};
     for (const StepStatus& saved : s.received) {
-        if (!saved.valid) continue;
+        if (saved.valid == 0) continue;
         StepStatus moved = saved;
         moved.step = rebase_signed(saved.step);
         received_[((moved.step % kReadbackSlots) + kReadbackSlots) % kReadbackSlots] = moved;
