@@ -179,7 +179,6 @@ void Simulation::copy_count_to_uniforms() {
 uint32_t Simulation::live_count() const {
     if (!gpu_count_) return particle_count_;
     gl::StateGuard guard(gl_, gl_state_);
-    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     uint32_t live = 0;
     count_record_.download(PF_COUNT_LIVE * 4, 4, &live);
     particle_count_ = live;  // everything queued has run: the bound is exact again
@@ -500,10 +499,9 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     if (desc_.features & PF_FEATURE_DOMAIN_MOTION) accel += domain_motion().max_acceleration(v_max);
     // Moving obstacles push the liquid at up to their surface speed.
     const float pushed = (desc_.features & PF_FEATURE_OBSTACLES) ? obstacles().max_surface_speed() : 0.0f;
-    // The speed was measured kStatusLag steps ago: it may have grown since, for that time and
-    // this frame's.
-    const float since = float(sim_time_ - cfl_time_) + frame_dt;
-    const float v_est = std::max({v_max + accel * since, wind, pushed});
+    // The speed was measured at the end of the previous step (kStatusLag): it may grow by one
+    // frame of acceleration before this step ends.
+    const float v_est = std::max({v_max + accel * frame_dt, wind, pushed});
     const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
     const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
     if (clamped) *clamped = wanted > double(desc_.params.max_substeps);
@@ -542,13 +540,11 @@ pf_result Simulation::step(float frame_dt) {
 
     // Status readback ring: copy now; the next step takes this one in (waiting only if the GPU
     // has not finished it by then), pf_get_stats whenever its fence has passed.
-    sim_time_ += double(frame_dt);
     const int slot = int(steps_ % kReadbackSlots);
     if (fences_[slot]) read_status_slot(slot);  // taken in already (kStatusLag); never dropped
     runner_->copy(status_, readback_[slot], PF_STATUS_WORDS * 4);
     fences_[slot] = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     gl_.Flush();  // the fence must reach the GPU, or polls that do not flush would never see it pass
-    fence_time_[slot] = sim_time_;
     // Each readback carries the flags raised since the previous one (the sticky union is the
     // host's flags_), so a readback tells which step overflowed (the P2G range widening).
     const uint32_t no_flags = 0;
@@ -622,7 +618,6 @@ void Simulation::take_lagged_status(int64_t step) {
     if (!got.valid || got.step != measured) return;  // no such step (the first ones)
     cfl_speed_ = got.max_speed;
     cfl_step_ = measured;
-    cfl_time_ = got.end_time;
     // A fixed-point sum overflowed in a step run at today's range: widen it from this step on
     // (the overflowing step's result is flagged; integer sums stay deterministic).
     if ((got.flags & PF_FLAG_P2G_OVERFLOW) && measured > p2g_range_changed_at_step_ &&
@@ -650,7 +645,6 @@ void Simulation::read_status_slot(int s) const {
     got.step = int64_t(fence_step_[s]);
     std::memcpy(&got.max_speed, &words[PF_STATUS_MAX_SPEED], sizeof(float));
     got.flags = words[PF_STATUS_FLAGS];
-    got.end_time = fence_time_[s];
     // The GPU's live count then, plus what was added since, bounds today's count (sinks
     // only lower it).
     if (gpu_count_) {
@@ -1060,7 +1054,6 @@ pf_result Simulation::remove_sink(uint32_t id) {
 pf_result Simulation::read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const {
     std::vector<float> tmp(size_t(count) * 4);
     gl::StateGuard guard(gl_, gl_state_);
-    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     const std::pair<const gl::Buffer*, float*> outs[] = {{&pos_, xyz}, {&vel_, vel}};
     for (const auto& [buffer, out] : outs) {
         if (!out) continue;
@@ -1161,7 +1154,6 @@ std::vector<uint32_t> Simulation::read_grid(GridBuffer which) const {
     const gl::Buffer& b = grid_buffer(which);
     std::vector<uint32_t> words(b.bytes() / 4);
     gl::StateGuard guard(gl_, gl_state_);
-    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     b.download(0, b.bytes(), words.data());
     return words;
 }
@@ -1176,7 +1168,6 @@ std::vector<float> Simulation::read_affine() const {
     if (affine_.bytes() == 0) return {};
     std::vector<float> values(size_t(particle_count_) * 12);
     gl::StateGuard guard(gl_, gl_state_);
-    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     affine_.download(0, values.size() * 4, values.data());
     return values;
 }

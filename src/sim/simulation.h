@@ -268,21 +268,18 @@ private:
     // acceleration) asked for ~1.5x the substeps at 0.5 s frames.
     static constexpr uint64_t kStatusLag = 1;
     static_assert(kStatusLag < uint64_t(kReadbackSlots), "a slot is reused only after its step was taken in");
+    static_assert(kStatusLag == 1, "substeps_for adds one frame of acceleration to the measured speed");
     struct StepStatus {
         uint32_t valid = 0;     // 0: nothing read into this slot yet, 1: read (a word: snapshots hold it)
         int64_t step = 0;
         float max_speed = 0.0f;
         uint32_t flags = 0;
-        double end_time = 0.0;  // simulated time at the end of that step, s
     };
     mutable StepStatus received_[kReadbackSlots] = {};
-    double fence_time_[kReadbackSlots] = {};  // simulated time at the end of each readback's step
-    double sim_time_ = 0.0;                   // frame times of all steps, s
     float cfl_speed_ = 0.0f;                  // the max speed the CFL condition starts from...
     // Step numbers the step logic compares are signed: a restored snapshot places them before
     // the restoring simulation's first step when it has run fewer (src/sim/snapshot.cpp).
-    int64_t cfl_step_ = 0;                    // ...measured at the end of this step...
-    double cfl_time_ = 0.0;                   // ...at this simulated time
+    int64_t cfl_step_ = 0;                    // ...measured at the end of this step
     mutable float gpu_max_speed_ = 0.0f;   // its max speed
     mutable uint32_t solver_iterations_ = 0;  // its pressure iterations (most of a substep)
     mutable float solver_residual_ = 0.0f;    // its largest final relative residual

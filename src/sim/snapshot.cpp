@@ -78,7 +78,6 @@ struct Simulation::SnapshotState {
     // CFL input in use: the continuation chooses the same substeps as the original.
     int64_t cfl_step;
     float cfl_speed;
-    double cfl_time, sim_time;
     StepStatus received[kReadbackSlots];
 };
 
@@ -108,8 +107,6 @@ std::vector<uint8_t> Simulation::snapshot_host_state() const {
     s.fill_calls = fill_calls_;
     s.cfl_step = cfl_step_;
     s.cfl_speed = cfl_speed_;
-    s.cfl_time = cfl_time_;
-    s.sim_time = sim_time_;
     for (int k = 0; k < kReadbackSlots; ++k) s.received[k] = received_[k];
     w.put(s);
     w.put(kEffectCount);
@@ -164,7 +161,6 @@ pf_result Simulation::save_snapshot(void* buffer, size_t size) {
     size_t at = sizeof(Header);
     std::memcpy(out + at, host.data(), host.size());
     at += host.size();
-    gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     status_.download(0, size_t(PF_STATUS_WORDS) * 4, out + at);
     at += size_t(PF_STATUS_WORDS) * 4;
     const size_t n = particle_count_;
@@ -223,11 +219,9 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
         s.hydrostatic_start_pending > 1 || s.steps < s.status_step)
         return bad("its step state is invalid");
     const auto speed_ok = [](float v) { return std::isfinite(v) && v >= 0.0f; };
-    const auto time_ok = [](double t) { return std::isfinite(t) && t >= 0.0; };
-    bool readbacks_ok = speed_ok(s.cfl_speed) && time_ok(s.cfl_time) && time_ok(s.sim_time);
-    for (const StepStatus& r : s.received)
-        readbacks_ok = readbacks_ok && r.valid <= 1 && (r.valid == 0 || (speed_ok(r.max_speed) && time_ok(r.end_time)));
-    if (!readbacks_ok) return bad("its CFL state (readback slots, speeds, times) is invalid");
+    bool readbacks_ok = speed_ok(s.cfl_speed);
+    for (const StepStatus& r : s.received) readbacks_ok = readbacks_ok && r.valid <= 1 && (r.valid == 0 || speed_ok(r.max_speed));
+    if (!readbacks_ok) return bad("its CFL state (readback slots, speeds) is invalid");
     if (effect_count != kEffectCount) return bad("it holds " + std::to_string(effect_count) + " effects, this build has " +
                                                  std::to_string(kEffectCount));
     std::vector<std::pair<const uint8_t*, size_t>> effect_bytes;
@@ -320,8 +314,6 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     added_at_step_ = rebase_signed(s.added_at_step);
     cfl_step_ = rebase_signed(s.cfl_step);
     cfl_speed_ = s.cfl_speed;
-    cfl_time_ = s.cfl_time;
-    sim_time_ = s.sim_time;
     for (StepStatus& r : received_) r = StepStatus{};
     for (const StepStatus& saved : s.received) {
         if (saved.valid == 0) continue;
