@@ -148,9 +148,16 @@ bool PassRunner::writes_indirect_records(gl::ProgramId id) {
         case gl::ProgramId::solver_begin:
         case gl::ProgramId::solver_check:
         case gl::ProgramId::solver_report:  // check.comp: its source has the check's stop_solve()
-        case gl::ProgramId::cg_start:
-        case gl::ProgramId::cg_alpha:
-        case gl::ProgramId::cg_beta: return true;
+        // The CG passes whose last workgroup runs a scalar step, which may stop the solve.
+        case gl::ProgramId::cg_init_none:
+        case gl::ProgramId::cg_init_jacobi:
+        case gl::ProgramId::cg_update_none:
+        case gl::ProgramId::cg_update_jacobi:
+        case gl::ProgramId::cg_matvec_none:
+        case gl::ProgramId::cg_matvec_jacobi:
+        case gl::ProgramId::cg_matvec_stored:
+        case gl::ProgramId::cg_zstats:
+        case gl::ProgramId::mg_smooth_zstats: return true;
         default: return false;
     }
 }

@@ -1,6 +1,8 @@
-// Conjugate gradients, start: r = (b - mean) - A x from the warm-started pressure x (x = 0
-// outside FLUID cells). Unless z is stored (PF_PRECOND 2, computed by the preconditioner
-// afterwards), also the partial sums (r.r, r.z, sum z, sum r) for cg_scalars' start step.
+// Conjugate gradients, start (without a stored z: PF_PRECOND 0 none, 1 Jacobi): r = (b - mean)
+// - A x from the warm-started pressure x (x = 0 outside FLUID cells), z = M^-1 r, the partial
+// sums (r.r, r.z, sum z, sum r), and in the last workgroup the start step (cg_scalar_step.glsl).
+// With Jacobi, z is also written out for the next direction (cg_matvec.comp).
+// With a stored z, cg_init_stored.comp.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
@@ -8,28 +10,33 @@ layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_typ
 layout(std430, binding = PF_SLOT_RHS) readonly buffer Rhs { float rhs[]; };
 layout(std430, binding = PF_SLOT_SOLVER_X) buffer X { float x[]; };
 layout(std430, binding = PF_SLOT_SOLVER_R) writeonly buffer R { float r_out[]; };
-layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partials[]; };
+layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) coherent buffer Partials { vec4 partials[]; };
 layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
+#if PF_PRECOND == 1
+layout(std430, binding = PF_SLOT_SOLVER_Z_INIT) writeonly buffer Z { float z_out[]; };
+#endif
 #include "solvers/common/poisson.glsl"
 #include "solvers/common/reduce.glsl"
 #include "solvers/common/state.glsl"
 #include "solvers/cg/cg_precondition.glsl"
+#include "solvers/cg/cg_scalar_step.glsl"
+#include "solvers/cg/cg_start_residual.glsl"
 
 vec4 cell_contribution(int c) {
     float r = 0.0, z = 0.0;
     if (cell_type[c] == PF_CELL_FLUID) {
         PoissonStencil s = poisson_stencil(c);
-        vec3 pair_sum = vec3(0.0);
-        for (int n = 0; n < 6; ++n) {
-            if (s.nb[n] >= 0) pair_sum[n / 2] += x[s.nb[n]];
-        }
-        r = (rhs[c] - rhs_mean()) - (s.diag * x[c] - pair_total(pair_sum));
+        r = start_residual(c, s);
         z = precondition(r, s);
     } else {
         x[c] = 0.0;  // never read by a neighbour's stencil: no race
     }
     r_out[c] = r;
-    // With a stored z (PF_PRECOND 2) the sums come later (cg_zstats) and these are unused.
+#if PF_PRECOND == PF_PRECOND_JACOBI
+    z_out[c] = z;
+#endif
     return vec4(r * r, r * z, z, r);
 }
+void last_group_step(vec4 t) { cg_scalar_step(PF_CG_STEP_START, t); }
+#define PF_LAST_GROUP 1
 #include "solvers/common/orbit_main.glsl"

@@ -1,26 +1,54 @@
-// Conjugate gradients: q = A p on FLUID cells (0 elsewhere) and the partial sums of p.q.
+// Conjugate gradients: the new search direction and its product with A in one pass. On FLUID
+// cells p = (z - m) + beta p_old, where m is the mean of z removed when the system is singular
+// (keeps p out of the null space) and beta = 0 starts afresh (p_old is not read then, so stale
+// values cannot leak in); 0 elsewhere. Then q = A p, each neighbour's p formed here from its z
+// and p_old, so p goes to a second buffer (CG alternates the two) and no cell sees a neighbour
+// half updated; and the partial sums of p.q, whose last workgroup forms alpha
+// (cg_scalar_step.glsl). z is r (PF_PRECOND 0), or read from the z buffer: r / diag written by
+// init and update (1), or the multigrid's (2).
+// Folding the direction update in saves a pass per iteration (on the H100 every pass costs a
+// few microseconds whatever its size); the arithmetic is that of the two passes it replaces.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
-layout(std430, binding = PF_SLOT_SOLVER_P) readonly buffer P { float p[]; };
+#if PF_PRECOND == 0
+layout(std430, binding = PF_SLOT_SOLVER_R) readonly buffer R { float z_in[]; };  // z = r
+#else
+layout(std430, binding = PF_SLOT_SOLVER_Z) readonly buffer Z { float z_in[]; };
+#endif
+layout(std430, binding = PF_SLOT_SOLVER_P) readonly buffer P { float p_old[]; };
+layout(std430, binding = PF_SLOT_SOLVER_P_NEXT) writeonly buffer PNext { float p_next[]; };
 layout(std430, binding = PF_SLOT_SOLVER_Q) writeonly buffer Q { float q[]; };
-layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partials[]; };
+layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) coherent buffer Partials { vec4 partials[]; };
+layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
 #include "solvers/common/poisson.glsl"
 #include "solvers/common/reduce.glsl"
+#include "solvers/common/state.glsl"
+#include "solvers/cg/cg_scalar_step.glsl"
+
+// The new direction at FLUID cell c.
+float direction(int c) {
+    float beta = state_float(PF_SOLVER_BETA);
+    float d = z_in[c] - state_float(PF_SOLVER_Z_MEAN);
+    return beta == 0.0 ? d : d + beta * p_old[c];
+}
 
 vec4 cell_contribution(int c) {
-    float aq = 0.0, pq = 0.0;
+    float pc = 0.0, aq = 0.0;
     if (cell_type[c] == PF_CELL_FLUID) {
         PoissonStencil s = poisson_stencil(c);
+        pc = direction(c);
         vec3 pair_sum = vec3(0.0);
         for (int n = 0; n < 6; ++n) {
-            if (s.nb[n] >= 0) pair_sum[n / 2] += p[s.nb[n]];
+            if (s.nb[n] >= 0) pair_sum[n / 2] += direction(s.nb[n]);
         }
-        aq = s.diag * p[c] - pair_total(pair_sum);
-        pq = p[c] * aq;
+        aq = s.diag * pc - pair_total(pair_sum);
     }
+    p_next[c] = pc;
     q[c] = aq;
-    return vec4(pq, 0.0, 0.0, 0.0);
+    return vec4(pc * aq, 0.0, 0.0, 0.0);
 }
+void last_group_step(vec4 t) { cg_scalar_step(PF_CG_STEP_ALPHA, t); }
+#define PF_LAST_GROUP 1
 #include "solvers/common/orbit_main.glsl"

@@ -1,5 +1,7 @@
-// Conjugate gradients: x += alpha p, r -= alpha q on FLUID cells; unless z is stored
-// (PF_PRECOND 2), also the partial sums (r.r, r.z, sum z, sum r) of the new residual.
+// Conjugate gradients (without a stored z: PF_PRECOND 0 none, 1 Jacobi): x += alpha p, r -= alpha q
+// on FLUID cells, z = M^-1 r, the partial sums (r.r, r.z, sum z, sum r) of the new residual, and
+// in the last workgroup the beta step (cg_scalar_step.glsl). With Jacobi, z is also written out
+// for the next direction (cg_matvec.comp). With a stored z, cg_update_stored.comp.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
@@ -8,12 +10,16 @@ layout(std430, binding = PF_SLOT_SOLVER_X) buffer X { float x[]; };
 layout(std430, binding = PF_SLOT_SOLVER_R) buffer R { float r[]; };
 layout(std430, binding = PF_SLOT_SOLVER_P) readonly buffer P { float p[]; };
 layout(std430, binding = PF_SLOT_SOLVER_Q) readonly buffer Q { float q[]; };
-layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partials[]; };
+layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) coherent buffer Partials { vec4 partials[]; };
 layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
+#if PF_PRECOND == 1
+layout(std430, binding = PF_SLOT_SOLVER_Z) writeonly buffer Z { float z_out[]; };
+#endif
 #include "solvers/common/poisson.glsl"
 #include "solvers/common/reduce.glsl"
 #include "solvers/common/state.glsl"
 #include "solvers/cg/cg_precondition.glsl"
+#include "solvers/cg/cg_scalar_step.glsl"
 
 vec4 cell_contribution(int c) {
     float rn = 0.0, z = 0.0;
@@ -22,10 +28,13 @@ vec4 cell_contribution(int c) {
         x[c] += alpha * p[c];
         rn = r[c] - alpha * q[c];
         r[c] = rn;
-#if PF_PRECOND != PF_PRECOND_STORED
         z = precondition(rn, poisson_stencil(c));
-#endif
     }
-    return vec4(rn * rn, rn * z, z, rn);  // unused with a stored z (cg_zstats sums then)
+#if PF_PRECOND == PF_PRECOND_JACOBI
+    z_out[c] = z;
+#endif
+    return vec4(rn * rn, rn * z, z, rn);
 }
+void last_group_step(vec4 t) { cg_scalar_step(PF_CG_STEP_BETA, t); }
+#define PF_LAST_GROUP 1
 #include "solvers/common/orbit_main.glsl"

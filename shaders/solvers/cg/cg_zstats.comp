@@ -1,18 +1,25 @@
 // Conjugate gradients with a stored preconditioned residual z (multigrid): the partial sums
-// (r.r, r.z, sum z, sum r) over FLUID cells.
+// (r.r, r.z, sum z, sum r) over FLUID cells, and CG's scalar step u_cg_step in the last
+// workgroup (cg_scalar_step.glsl). Used by a multigrid whose fine grid is its coarsest level.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_SOLVER_R) readonly buffer R { float r[]; };
 layout(std430, binding = PF_SLOT_SOLVER_Z) readonly buffer Z { float z[]; };
-layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partials[]; };
+layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) coherent buffer Partials { vec4 partials[]; };
+layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
+layout(location = PF_LOC_SOLVER_CG_STEP) uniform uint u_cg_step;  // run by the last workgroup
 #include "solvers/common/poisson.glsl"
 #include "solvers/common/reduce.glsl"
+#include "solvers/common/state.glsl"
+#include "solvers/cg/cg_scalar_step.glsl"
 
 vec4 cell_contribution(int c) {
     if (cell_type[c] != PF_CELL_FLUID) return vec4(0.0);
     float rc = r[c], zc = z[c];
     return vec4(rc * rc, rc * zc, zc, rc);
 }
+void last_group_step(vec4 t) { cg_scalar_step(u_cg_step, t); }
+#define PF_LAST_GROUP 1
 #include "solvers/common/orbit_main.glsl"

@@ -1,7 +1,16 @@
 // main() of the reduction kernels: one invocation per mirror orbit (poisson.glsl) runs the
 // kernel's per-cell work, vec4 cell_contribution(int c), on the orbit's cells and adds the
 // results mirror-exactly; the workgroup sums go to the partials (reduce.glsl).
-// Include after defining cell_contribution.
+// With PF_LAST_GROUP defined, the last workgroup to finish (counted with an atomic in the
+// state buffer, reset by that workgroup) then adds up all the partials in a fixed order and
+// calls the kernel's void last_group_step(vec4 total) in invocation 0: a scalar step without a
+// pass of its own. The kernel must declare `partials` coherent (the last workgroup reads what
+// the others wrote) and `state`.
+// Include after defining cell_contribution (and last_group_step).
+#ifdef PF_LAST_GROUP
+shared bool s_last_group;
+#endif
+
 void main() {
     int o = int(flat_id());
     vec4 total = vec4(0.0);
@@ -12,4 +21,19 @@ void main() {
         total = (v[0] + v[1]) + (v[2] + v[3]);
     }
     store_workgroup_sum(total);
+#ifdef PF_LAST_GROUP
+    uint groups = gl_NumWorkGroups.x * gl_NumWorkGroups.y;
+    if (gl_LocalInvocationIndex == 0u) {
+        memoryBarrierBuffer();  // this workgroup's partial is visible before it is counted
+        s_last_group = atomicAdd(state[PF_SOLVER_ARRIVALS], 1u) + 1u == groups;
+    }
+    barrier();
+    if (!s_last_group) return;  // uniform across the workgroup
+    memoryBarrierBuffer();
+    vec4 sum = sum_partials(groups);
+    if (gl_LocalInvocationIndex == 0u) {
+        state[PF_SOLVER_ARRIVALS] = 0u;
+        last_group_step(sum);
+    }
+#endif
 }

@@ -11,7 +11,7 @@
 #define PF_SOLVER_SINGULAR 2     /* uint: 1 when no cell is AIR (pure Neumann: constants are a null space) */
 #define PF_SOLVER_FLUID_CELLS 3  /* uint: FLUID cells of this solve */
 #define PF_SOLVER_RZ 4           /* float: r.z of the current Krylov iterate */
-                                 /* word 5: unused */
+#define PF_SOLVER_ARRIVALS 5     /* uint: workgroups of the current reduction pass that have finished (orbit_main.glsl) */
 #define PF_SOLVER_ALPHA 6        /* float: CG step length */
 #define PF_SOLVER_BETA 7         /* float: CG direction update */
 #define PF_SOLVER_Z_MEAN 8       /* float: mean of z removed when singular */
@@ -41,5 +41,11 @@
 #define PF_LOC_SOLVER_TOLERANCE 5 /* float: relative residual to reach */
 #define PF_LOC_SOLVER_ITERATIONS 6 /* uint: iterations done since the previous convergence check */
 #define PF_LOC_SOLVER_COARSE_DIMS 7 /* ivec4: the next coarser multigrid level's size */
+#define PF_LOC_SOLVER_CG_STEP 8  /* uint: the CG scalar step a z-summing pass runs last (cg_scalar_step.glsl) */
+
+/* CG's scalar steps (shaders/solvers/cg/cg_scalar_step.glsl). */
+#define PF_CG_STEP_START 0u      /* after the first r and z: residual test, beta = 0 */
+#define PF_CG_STEP_ALPHA 1u      /* after p.A p: alpha */
+#define PF_CG_STEP_BETA 2u       /* after an update's r and z: residual test, beta */
 
 #endif

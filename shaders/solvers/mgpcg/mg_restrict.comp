@@ -1,41 +1,74 @@
 // Multigrid, per coarse cell: r_coarse = (1/2) P^T tmp, gathered from the 4x4x4 fine cells
-// whose prolongation stencil reaches it (multigrid.glsl). Summed per axis pair in a fixed
-// order, so the result does not depend on scheduling.
+// whose prolongation stencil reaches it (multigrid.glsl). tmp is the fine residual, 0 on cells
+// that are not FLUID, so no fine type is read. The 64 terms are unrolled with their weights
+// made per axis first (0 outside the level): the loads are independent and issue together
+// (a loop that skipped cells serialised them: ~21 us a pass even on the smallest levels, H100).
+// Summed in a fixed order, so the result does not depend on scheduling.
+// PF_MG_START 1 also begins the coarse level's V-cycle: its first red half-sweep from zero,
+// e = r / diag on red FLUID cells and 0 elsewhere (gauss_seidel.comp's PF_GS_FROM_ZERO),
+// which needs nothing but this cell's r — one pass less per level.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
-layout(std430, binding = PF_SLOT_MG_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_MG_TMP) readonly buffer Tmp { float tmp[]; };
 layout(std430, binding = PF_SLOT_MG_COARSE_TYPE) readonly buffer CoarseType { uint coarse_type[]; };
 layout(std430, binding = PF_SLOT_MG_COARSE_R) writeonly buffer CoarseR { float coarse_r[]; };
-#include "solvers/common/poisson.glsl"
+#if PF_MG_START
+layout(std430, binding = PF_SLOT_MG_COARSE_E) writeonly buffer CoarseE { float coarse_e[]; };
+#endif
+#include "common/slots.h"
+#include "common/dispatch.glsl"
 #include "solvers/mgpcg/multigrid.glsl"
+
+layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // the fine level
+
+// The diagonal of the coarse Poisson operator at cc: in-level neighbours that are not SOLID.
+float coarse_diag(ivec3 cc) {
+    const ivec3 nbs[6] = ivec3[6](ivec3(-1, 0, 0), ivec3(1, 0, 0), ivec3(0, -1, 0), ivec3(0, 1, 0),
+                                  ivec3(0, 0, -1), ivec3(0, 0, 1));
+    float diag = 0.0;
+    for (int n = 0; n < 6; ++n) {
+        ivec3 q = cc + nbs[n];
+        if (any(lessThan(q, ivec3(0))) || any(greaterThanEqual(q, u_coarse_dims.xyz))) continue;
+        if (coarse_type[coarse_index(q)] != PF_CELL_SOLID) diag += 1.0;
+    }
+    return diag;
+}
 
 void main() {
     int c = int(flat_id());
     if (c >= u_coarse_dims.w) return;
-    if (coarse_type[c] != PF_CELL_FLUID) {
-        coarse_r[c] = 0.0;
-        return;
-    }
     ivec3 cc = ivec3(c % u_coarse_dims.x, (c / u_coarse_dims.x) % u_coarse_dims.y, c / (u_coarse_dims.x * u_coarse_dims.y));
-    float sum = 0.0;
-    for (int dz = -1; dz <= 2; ++dz) {
-        int fz = 2 * cc.z + dz;
-        if (fz < 0 || fz >= u_dims.z) continue;
-        float wz = prolong_weight_1d(fz, cc.z, u_coarse_dims.z);
-        for (int dy = -1; dy <= 2; ++dy) {
-            int fy = 2 * cc.y + dy;
-            if (fy < 0 || fy >= u_dims.y) continue;
-            float wyz = wz * prolong_weight_1d(fy, cc.y, u_coarse_dims.y);
-            for (int dx = -1; dx <= 2; ++dx) {
-                int fx = 2 * cc.x + dx;
-                if (fx < 0 || fx >= u_dims.x) continue;
-                int f = level_index(ivec3(fx, fy, fz));
-                if (cell_type[f] != PF_CELL_FLUID) continue;
-                sum += wyz * prolong_weight_1d(fx, cc.x, u_coarse_dims.x) * tmp[f];
+    float r = 0.0;
+    bool fluid = coarse_type[c] == PF_CELL_FLUID;
+    if (fluid) {
+        // Per axis: the fine indices 2 cc - 1 .. 2 cc + 2 (clamped into the level) and weights.
+        ivec4 fx, fy, fz;
+        vec4 wx, wy, wz;
+        for (int d = 0; d < 4; ++d) {
+            ivec3 f = 2 * cc + (d - 1);
+            bvec3 in_level = bvec3(f.x >= 0 && f.x < u_dims.x, f.y >= 0 && f.y < u_dims.y, f.z >= 0 && f.z < u_dims.z);
+            fx[d] = clamp(f.x, 0, u_dims.x - 1);
+            fy[d] = clamp(f.y, 0, u_dims.y - 1);
+            fz[d] = clamp(f.z, 0, u_dims.z - 1);
+            wx[d] = in_level.x ? prolong_weight_1d(f.x, cc.x, u_coarse_dims.x) : 0.0;
+            wy[d] = in_level.y ? prolong_weight_1d(f.y, cc.y, u_coarse_dims.y) : 0.0;
+            wz[d] = in_level.z ? prolong_weight_1d(f.z, cc.z, u_coarse_dims.z) : 0.0;
+        }
+        float sum = 0.0;
+        for (int dz = 0; dz < 4; ++dz) {
+            for (int dy = 0; dy < 4; ++dy) {
+                float wyz = wz[dz] * wy[dy];
+                int row = u_dims.x * (fy[dy] + u_dims.y * fz[dz]);
+                for (int dx = 0; dx < 4; ++dx) sum += wyz * wx[dx] * tmp[row + fx[dx]];
             }
         }
+        r = 0.5 * sum;
     }
-    coarse_r[c] = 0.5 * sum;
+    coarse_r[c] = r;
+#if PF_MG_START
+    bool red = ((cc.x + cc.y + cc.z) & 1) == 0;
+    float diag = fluid && red ? coarse_diag(cc) : 0.0;
+    coarse_e[c] = diag > 0.0 ? r / diag : 0.0;
+#endif
 }

@@ -28,11 +28,11 @@ ProgramId ConjugateGradientSolver::update_program() const {
     }
 }
 
-ProgramId ConjugateGradientSolver::direction_program() const {
+ProgramId ConjugateGradientSolver::matvec_program() const {
     switch (kind_) {
-        case Preconditioner::none: return ProgramId::cg_direction_none;
-        case Preconditioner::jacobi: return ProgramId::cg_direction_jacobi;
-        default: return ProgramId::cg_direction_stored;
+        case Preconditioner::none: return ProgramId::cg_matvec_none;
+        case Preconditioner::jacobi: return ProgramId::cg_matvec_jacobi;
+        default: return ProgramId::cg_matvec_stored;
     }
 }
 
@@ -41,14 +41,13 @@ pf_result ConjugateGradientSolver::init(const gl::Api& gl, PassRunner& runner, c
     grid_ = grid;
     const size_t bytes = size_t(grid.cells) * 4;
     r_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_r");
-    p_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_p");
+    p_[0] = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_p");
+    p_[1] = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_p");
     q_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_q");
     working_type_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_working_type");
-    if (kind_ == Preconditioner::stored) z_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_z");
+    if (kind_ != Preconditioner::none) z_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_z");
     std::string error = control_.init(gl, runner, grid);
-    const ProgramId programs[] = {init_program(),      update_program(),    direction_program(),
-                                  ProgramId::cg_matvec, ProgramId::cg_start, ProgramId::cg_alpha,
-                                  ProgramId::cg_beta,   ProgramId::cg_zstats, ProgramId::separation_active_set,
+    const ProgramId programs[] = {init_program(), update_program(), matvec_program(), ProgramId::separation_active_set,
                                   ProgramId::separation_clamp};
     for (ProgramId id : programs) {
         if (!error.empty()) break;
@@ -106,50 +105,59 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
     const gl::Buffer& x = problem.pressure;
     const gl::Buffer& state = control_.state();
     const gl::Buffer& partials = control_.partials();
-    const Indirect cells = control_.record(0), orbits = control_.orbit_record();
+    const Indirect orbits = control_.orbit_record();
     const Uniform dims = control_.dims_uniform();
-    auto scalars = [&](ProgramId id) {
-        runner.run({id, stat_, PF_WORKGROUP_SIZE, {{PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state}},
-                    {}, {Uniform::uint1(PF_LOC_SOLVER_COUNT, control_.partial_count())}});
+    // The preconditioner's last pass sums z and runs the scalar step `step` (cg_scalar_step.glsl).
+    auto precondition = [&](bool first_sweep_done, uint32_t step) {
+        stored_->apply(runner, precondition_stat_, type, r_, z_, first_sweep_done, step);
     };
-    auto precondition = [&] {
-        stored_->apply(runner, precondition_stat_, type, r_, z_);
-        runner.run({ProgramId::cg_zstats, stat_, 0,
-                    {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_R, &r_}, {PF_SLOT_SOLVER_Z, &z_},
-                     {PF_SLOT_SOLVER_PARTIALS, &partials}},
-                    orbits, {dims}});
-    };
-    auto direction = [&] {
-        const Bind source = stored_ ? Bind{PF_SLOT_SOLVER_Z, &z_} : Bind{PF_SLOT_SOLVER_R, &r_};
-        runner.run({direction_program(), stat_, 0,
-                    {{PF_SLOT_CELL_TYPE, &type}, source, {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_STATE, &state}},
-                    cells, {dims}});
-    };
-
+    // z: r itself without a preconditioner, else the z buffer (Jacobi's is written by init and
+    // update; plain CG's kernels leave z_out's slot unused).
+    const Bind z = kind_ == Preconditioner::none ? Bind{PF_SLOT_SOLVER_R, &r_} : Bind{PF_SLOT_SOLVER_Z, &z_};
+    const gl::Buffer& z_out = kind_ == Preconditioner::none ? r_ : z_;
     control_.begin(runner, stat_, problem, another_round);
     if (stored_) stored_->begin(runner, precondition_stat_, type);
-    runner.run({init_program(), stat_, control_.orbit_count(),
-                {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_RHS, &problem.rhs}, {PF_SLOT_SOLVER_X, &x},
-                 {PF_SLOT_SOLVER_R, &r_}, {PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state}},
-                {}, {dims}});
-    if (stored_) precondition();
-    scalars(ProgramId::cg_start);
-    direction();
+    if (stored_) {
+        // r per cell; the preconditioner sums z and runs the start step.
+        runner.run({init_program(), stat_, grid_.cells,
+                    {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_RHS, &problem.rhs}, {PF_SLOT_SOLVER_X, &x},
+                     {PF_SLOT_SOLVER_R, &r_}, {PF_SLOT_SOLVER_STATE, &state}},
+                    {}, {dims}});
+        precondition(false, PF_CG_STEP_START);
+    } else {
+        // r, z and their sums per orbit; the last workgroup runs the start step.
+        runner.run({init_program(), stat_, control_.orbit_count(),
+                    {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_RHS, &problem.rhs}, {PF_SLOT_SOLVER_X, &x},
+                     {PF_SLOT_SOLVER_R, &r_}, {PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state},
+                     {PF_SLOT_SOLVER_Z_INIT, &z_out}},
+                    {}, {dims}});
+    }
     const uint32_t issued = issued_iterations(problem);
     for (uint32_t k = 0; k < issued; ++k) {
-        runner.run({ProgramId::cg_matvec, stat_, 0,
-                    {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_Q, &q_},
-                     {PF_SLOT_SOLVER_PARTIALS, &partials}},
+        // The direction from z and the previous one (alternating buffers), q = A p, p.q; the
+        // last workgroup forms alpha.
+        const gl::Buffer& p_old = p_[k % 2];
+        const gl::Buffer& p = p_[(k + 1) % 2];
+        runner.run({matvec_program(), stat_, 0,
+                    {{PF_SLOT_CELL_TYPE, &type}, z, {PF_SLOT_SOLVER_P, &p_old}, {PF_SLOT_SOLVER_P_NEXT, &p},
+                     {PF_SLOT_SOLVER_Q, &q_}, {PF_SLOT_SOLVER_PARTIALS, &partials}, {PF_SLOT_SOLVER_STATE, &state}},
                     orbits, {dims}});
-        scalars(ProgramId::cg_alpha);
-        runner.run({update_program(), stat_, 0,
-                    {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_X, &x}, {PF_SLOT_SOLVER_R, &r_},
-                     {PF_SLOT_SOLVER_P, &p_}, {PF_SLOT_SOLVER_Q, &q_}, {PF_SLOT_SOLVER_PARTIALS, &partials},
-                     {PF_SLOT_SOLVER_STATE, &state}},
-                    orbits, {dims}});
-        if (stored_) precondition();
-        scalars(ProgramId::cg_beta);
-        if (k + 1 < issued) direction();
+        if (stored_) {
+            // x, r per cell and the V-cycle's first half-sweep; the V-cycle's last pass forms beta.
+            runner.run({update_program(), stat_, 0,
+                        {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_X, &x}, {PF_SLOT_SOLVER_R, &r_},
+                         {PF_SLOT_SOLVER_P, &p}, {PF_SLOT_SOLVER_Q, &q_}, {PF_SLOT_SOLVER_STATE, &state},
+                         {PF_SLOT_SOLVER_MG_START, &stored_->first_sweep()}},
+                        control_.record(0), {dims}});
+            precondition(true, PF_CG_STEP_BETA);
+        } else {
+            // x, r, z and their sums per orbit; the last workgroup forms beta.
+            runner.run({update_program(), stat_, 0,
+                        {{PF_SLOT_CELL_TYPE, &type}, {PF_SLOT_SOLVER_X, &x}, {PF_SLOT_SOLVER_R, &r_},
+                         {PF_SLOT_SOLVER_P, &p}, {PF_SLOT_SOLVER_Q, &q_}, {PF_SLOT_SOLVER_PARTIALS, &partials},
+                         {PF_SLOT_SOLVER_STATE, &state}, {PF_SLOT_SOLVER_Z, &z_out}},
+                        orbits, {dims}});
+        }
     }
 }
 

@@ -2,8 +2,8 @@
 // PCG with the Jacobi (diagonal) preconditioner, and — through StoredPreconditioner — CG with a
 // preconditioner that writes z = M^-1 r into a buffer (the multigrid V-cycle of MGPCG).
 // Warm-started from the previous substep's pressure; every scalar (alpha, beta, the residual
-// test) is formed on the GPU by one-workgroup kernels, and convergence empties the remaining
-// iterations' indirect dispatches. A singular system (no AIR cell) is made consistent by
+// test) is formed on the GPU by the last workgroup of the pass that sums its terms, and
+// convergence empties the remaining iterations' indirect dispatches. A singular system (no AIR cell) is made consistent by
 // removing the mean of b, and the mean of z is removed every iteration (the null space is the
 // constants). With separation on (p >= 0), the unconstrained solve is followed by
 // kActiveSetRounds primal-dual active-set rounds: cells with p < 0 are held at p = 0, held
@@ -17,17 +17,23 @@
 
 namespace pf {
 
-// A preconditioner that reads r and writes z (both fine-grid cell buffers).
+// A preconditioner that reads r and writes z (both fine-grid cell buffers), and CG's sums of z.
 class StoredPreconditioner {
 public:
     virtual ~StoredPreconditioner() = default;
     virtual std::string init(const gl::Api& gl, PassRunner& runner, SolveControl& control) = 0;
     // Once per Krylov solve, before the first apply: the system's cell types are fixed until the next.
     virtual void begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_type) = 0;
-    // z = M^-1 r on FLUID cells of `cell_type`; dispatches through the control's records so a
-    // converged solve skips it. M must be symmetric positive definite (CG requires it).
+    // Where CG's update writes the preconditioner's first step, which needs only each cell's
+    // new r: r / diag on red FLUID cells, 0 elsewhere (cg_update.comp, PF_PRECOND 2).
+    virtual const gl::Buffer& first_sweep() const = 0;
+    // z = M^-1 r on FLUID cells of `cell_type`; its last pass sums (r.r, r.z, sum z, sum r) over
+    // the control's orbits and runs CG's scalar step `cg_step` (PF_CG_STEP_START or _BETA) in its
+    // last workgroup (shaders/solvers/cg/cg_scalar_step.glsl). Dispatches through the control's
+    // records so a converged solve skips it. `first_sweep_done`: CG's update wrote
+    // first_sweep() from this r. M must be symmetric positive definite (CG requires it).
     virtual void apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_type, const gl::Buffer& r,
-                       const gl::Buffer& z) = 0;
+                       const gl::Buffer& z, bool first_sweep_done, uint32_t cg_step) = 0;
 };
 
 class ConjugateGradientSolver final : public PressureSolver {
@@ -48,7 +54,7 @@ public:
 private:
     gl::ProgramId init_program() const;
     gl::ProgramId update_program() const;
-    gl::ProgramId direction_program() const;
+    gl::ProgramId matvec_program() const;
     // One Krylov solve of `problem` from its pressure (a round of an active-set solve when
     // another_round), without the final report.
     void krylov(PassRunner& runner, const PressureProblem& problem, bool another_round);
@@ -58,7 +64,7 @@ private:
     std::unique_ptr<StoredPreconditioner> stored_;
     SolverGrid grid_{};
     SolveControl control_;
-    gl::Buffer r_, p_, q_, z_, working_type_;
+    gl::Buffer r_, p_[2], q_, z_, working_type_;  // p: the previous and the new direction
     StatId stat_ = 0, precondition_stat_ = 0;
 };
 

@@ -17,25 +17,29 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         level.cells = uint32_t(dims.x * dims.y * dims.z);
         const bool fine = levels_.empty();
         level.record = fine ? control.record(0) : control.record(control.add_record(level.cells));
+        const glm::ivec3 next = (dims + 1) / 2;
+        const bool last = level.cells <= PF_MG_COARSE_CELLS || glm::any(glm::lessThan(next, glm::ivec3(2))) ||
+                          levels_.size() + 1 == PF_MG_MAX_LEVELS;
         const size_t bytes = size_t(level.cells) * 4;
-        if (!fine) {
+        if (fine) {
+            start_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_start");
+        } else {
             level.type = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_type");
             level.r = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_r");
-            level.e = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_e");
+            level.out = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_out");
+            if (!last) level.e = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_e");
         }
-        const glm::ivec3 next = (dims + 1) / 2;
-        const bool coarsest = level.cells <= PF_MG_COARSE_CELLS || glm::any(glm::lessThan(next, glm::ivec3(2))) ||
-                              levels_.size() + 1 == PF_MG_MAX_LEVELS;
-        if (!coarsest) level.tmp = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_tmp");
         levels_.push_back(std::move(level));
-        if (coarsest) break;
+        if (last) break;
         dims = next;
     }
     if (levels_.back().cells > PF_MG_COARSE_CELLS)
         return "multigrid: the coarsest level has " + std::to_string(levels_.back().cells) + " cells (more than " +
                std::to_string(PF_MG_COARSE_CELLS) + ")";
     for (ProgramId id : {ProgramId::mg_smooth, ProgramId::mg_smooth_from_zero, ProgramId::mg_coarsen_types,
-                         ProgramId::mg_residual, ProgramId::mg_restrict, ProgramId::mg_prolong, ProgramId::mg_coarse_solve}) {
+                         ProgramId::mg_residual, ProgramId::mg_restrict, ProgramId::mg_restrict_start,
+                         ProgramId::mg_prolong_smooth, ProgramId::mg_smooth_zstats, ProgramId::mg_coarse_solve,
+                         ProgramId::cg_zstats}) {
         if (std::string error = runner.prepare(id); !error.empty()) return error;
     }
     return {};
@@ -55,58 +59,87 @@ void Multigrid::begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_ty
     }
 }
 
-void Multigrid::smooth(PassRunner& runner, StatId stat, size_t l, bool from_zero, bool red_first) {
-    const Level& level = levels_[l];
-    for (uint32_t half = 0; half < 2; ++half) {
-        const ProgramId id = from_zero && half == 0 ? ProgramId::mg_smooth_from_zero : ProgramId::mg_smooth;
-        runner.run({id, stat, 0,
-                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
-                     {PF_SLOT_SOLVER_STATE, &control_->state()}},
-                    level.record,
-                    {SolveControl::dims_uniform(level.dims),
-                     Uniform::uint1(PF_LOC_SOLVER_COLOR, (half == 0) == red_first ? 0u : 1u),
-                     Uniform::float1(PF_LOC_SOLVER_OMEGA, 1.0f)}});
-    }
+void Multigrid::half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::Buffer& x, uint32_t color) {
+    runner.run({ProgramId::mg_smooth, stat, 0,
+                {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &x},
+                 {PF_SLOT_SOLVER_STATE, &control_->state()}},
+                levels_[l].record,
+                {SolveControl::dims_uniform(levels_[l].dims), Uniform::uint1(PF_LOC_SOLVER_COLOR, color),
+                 Uniform::float1(PF_LOC_SOLVER_OMEGA, 1.0f)}});
 }
 
-void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l) {
+void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_step) {
     const Level& level = levels_[l];
     const Uniform dims = SolveControl::dims_uniform(level.dims);
-    if (l + 1 == levels_.size()) {
+    if (coarsest(l)) {
+        // One workgroup (of PF_MG_COARSE_INVOCATIONS): PF_WORKGROUP_SIZE invocations make one group.
         runner.run({ProgramId::mg_coarse_solve, stat, PF_WORKGROUP_SIZE,
-                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
+                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &out_of(l)},
                      {PF_SLOT_SOLVER_STATE, &control_->state()}},
                     {},
                     {dims}});
         return;
     }
     const Level& coarse = levels_[l + 1];
-    for (uint32_t s = 0; s < kSmoothSweeps; ++s) smooth(runner, stat, l, s == 0, true);
+    // e holds the red half-sweep from zero (made with r); the black one completes the sweep.
+    half_sweep(runner, stat, l, e_of(l), 1u);
     runner.run({ProgramId::mg_residual, stat, 0,
                 {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
-                 {PF_SLOT_MG_TMP, &level.tmp}},
+                 {PF_SLOT_MG_TMP, &out_of(l)}},
                 level.record,
                 {dims}});
-    runner.run({ProgramId::mg_restrict, stat, 0,
-                {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_TMP, &level.tmp}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
-                 {PF_SLOT_MG_COARSE_R, &coarse.r}},
-                coarse.record,
-                {dims, coarse_dims(coarse)}});
-    vcycle(runner, stat, l + 1);
-    runner.run({ProgramId::mg_prolong, stat, 0,
-                {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_E, &e_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
-                 {PF_SLOT_MG_COARSE_E, &coarse.e}},
+    if (coarsest(l + 1)) {
+        runner.run({ProgramId::mg_restrict, stat, 0,
+                    {{PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
+                     {PF_SLOT_MG_COARSE_R, &coarse.r}},
+                    coarse.record,
+                    {dims, coarse_dims(coarse)}});
+    } else {
+        runner.run({ProgramId::mg_restrict_start, stat, 0,
+                    {{PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
+                     {PF_SLOT_MG_COARSE_R, &coarse.r}, {PF_SLOT_MG_COARSE_E, &coarse.e}},
+                    coarse.record,
+                    {dims, coarse_dims(coarse)}});
+    }
+    vcycle(runner, stat, l + 1, cg_step);
+    runner.run({ProgramId::mg_prolong_smooth, stat, 0,
+                {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
+                 {PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_E, &out_of(l + 1)}},
                 level.record,
                 {dims, coarse_dims(coarse)}});
-    for (uint32_t s = 0; s < kSmoothSweeps; ++s) smooth(runner, stat, l, false, false);
+    if (l > 0) {
+        half_sweep(runner, stat, l, out_of(l), 0u);
+        return;
+    }
+    runner.run({ProgramId::mg_smooth_zstats, stat, 0,
+                {{PF_SLOT_MG_TYPE, &type_of(0)}, {PF_SLOT_MG_R, &r_of(0)}, {PF_SLOT_MG_E, &out_of(0)},
+                 {PF_SLOT_SOLVER_PARTIALS, &control_->partials()}, {PF_SLOT_SOLVER_STATE, &control_->state()}},
+                control_->orbit_record(),
+                {dims, Uniform::uint1(PF_LOC_SOLVER_CG_STEP, cg_step)}});
 }
 
 void Multigrid::apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_type, const gl::Buffer& r,
-                      const gl::Buffer& z) {
+                      const gl::Buffer& z, bool first_sweep_done, uint32_t cg_step) {
     fine_type_ = &cell_type;
     fine_r_ = &r;
-    fine_e_ = &z;
-    vcycle(runner, stat, 0);
+    fine_z_ = &z;
+    const Uniform dims = SolveControl::dims_uniform(levels_[0].dims);
+    if (!first_sweep_done && !coarsest(0)) {
+        runner.run({ProgramId::mg_smooth_from_zero, stat, 0,
+                    {{PF_SLOT_MG_TYPE, &cell_type}, {PF_SLOT_MG_R, &r}, {PF_SLOT_MG_E, &start_},
+                     {PF_SLOT_SOLVER_STATE, &control_->state()}},
+                    levels_[0].record,
+                    {dims, Uniform::uint1(PF_LOC_SOLVER_COLOR, 0u), Uniform::float1(PF_LOC_SOLVER_OMEGA, 1.0f)}});
+    }
+    vcycle(runner, stat, 0, cg_step);
+    if (coarsest(0)) {
+        // A grid small enough to be its own coarsest level: its solve has no fused sums.
+        runner.run({ProgramId::cg_zstats, stat, 0,
+                    {{PF_SLOT_CELL_TYPE, &cell_type}, {PF_SLOT_SOLVER_R, &r}, {PF_SLOT_SOLVER_Z, &z},
+                     {PF_SLOT_SOLVER_PARTIALS, &control_->partials()}, {PF_SLOT_SOLVER_STATE, &control_->state()}},
+                    control_->orbit_record(),
+                    {dims, Uniform::uint1(PF_LOC_SOLVER_CG_STEP, cg_step)}});
+    }
 }
 
 }  // namespace pf

@@ -2,10 +2,18 @@
 // Poisson solver for fluids simulation on large grids"), as CG's preconditioner: z = V(r).
 // Levels halve the grid (rounding up) until one holds at most PF_MG_COARSE_CELLS cells. Coarse
 // cell types: AIR if any child is AIR, else FLUID if any child is, else SOLID. Each level
-// smooths with red-black Gauss-Seidel (red then black before the coarse correction, black then
-// red after it), transfers residuals with R = P^T / 2 and corrections with cell-centred
-// trilinear P, and the coarsest level runs symmetric red-black sweeps in one workgroup. Every
-// piece is symmetric, so the V-cycle is a symmetric preconditioner, as CG requires.
+// smooths with one red-black Gauss-Seidel sweep from zero before the coarse correction (red,
+// black) and one after it (black, red), transfers residuals with R = P^T / 2 and corrections
+// with cell-centred trilinear P, and the coarsest level runs symmetric red-black sweeps in one
+// workgroup. Every piece is symmetric, so the V-cycle is a symmetric preconditioner, as CG
+// requires.
+//
+// Passes per level (docs/design.md §4.6): the first red half-sweep needs only the cell's own r,
+// so it is done by the pass that makes r (CG's update on the fine grid, the restriction on
+// coarser ones); the black half-sweep; the residual; the restriction; the prolongation fused
+// with the black half-sweep after it (into a second buffer); the last red half-sweep (on the
+// fine grid fused with CG's sums of z). Five passes a level where there were seven: on the H100
+// each pass costs a few microseconds whatever its size, and the V-cycle is most of MGPCG's time.
 #pragma once
 #include <vector>
 
@@ -15,13 +23,11 @@ namespace pf {
 
 class Multigrid final : public StoredPreconditioner {
 public:
-    // Smoothing sweeps (red + black) before and after each coarse correction.
-    static constexpr uint32_t kSmoothSweeps = 1;
-
     std::string init(const gl::Api& gl, PassRunner& runner, SolveControl& control) override;
     void begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_type) override;
-    void apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_type, const gl::Buffer& r,
-               const gl::Buffer& z) override;
+    const gl::Buffer& first_sweep() const override { return start_; }
+    void apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_type, const gl::Buffer& r, const gl::Buffer& z,
+               bool first_sweep_done, uint32_t cg_step) override;
 
     size_t levels() const { return levels_.size(); }
 
@@ -30,21 +36,28 @@ private:
         glm::ivec3 dims{0};
         uint32_t cells = 0;
         Indirect record{};
-        gl::Buffer type, r, e, tmp;  // level 0 borrows type, r and e from the solve
+        // type, r: the level's system; e: the correction while pre-smoothing; out: the residual
+        // after pre-smoothing, then the level's result (the coarsest level: only its result).
+        // Level 0 borrows type, r and out (= z) from the solve; its e is start_.
+        gl::Buffer type, r, e, out;
     };
     // The buffers of level l for this cycle (level 0's come from the caller).
     const gl::Buffer& type_of(size_t l) const { return l == 0 ? *fine_type_ : levels_[l].type; }
     const gl::Buffer& r_of(size_t l) const { return l == 0 ? *fine_r_ : levels_[l].r; }
-    const gl::Buffer& e_of(size_t l) const { return l == 0 ? *fine_e_ : levels_[l].e; }
-    void smooth(PassRunner& runner, StatId stat, size_t l, bool from_zero, bool red_first);
-    void vcycle(PassRunner& runner, StatId stat, size_t l);
+    const gl::Buffer& e_of(size_t l) const { return l == 0 ? start_ : levels_[l].e; }
+    const gl::Buffer& out_of(size_t l) const { return l == 0 ? *fine_z_ : levels_[l].out; }
+    bool coarsest(size_t l) const { return l + 1 == levels_.size(); }
+    // One colour of a Gauss-Seidel sweep on level l's buffer x.
+    void half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::Buffer& x, uint32_t color);
+    void vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_step);
     static Uniform coarse_dims(const Level& coarse);
 
     const SolveControl* control_ = nullptr;
     std::vector<Level> levels_;
+    gl::Buffer start_;  // level 0's e: the first red half-sweep, written by CG's update
     const gl::Buffer* fine_type_ = nullptr;
     const gl::Buffer* fine_r_ = nullptr;
-    const gl::Buffer* fine_e_ = nullptr;
+    const gl::Buffer* fine_z_ = nullptr;
 };
 
 }  // namespace pf

@@ -1,0 +1,25 @@
+// Conjugate gradients with a stored z (the multigrid V-cycle), start, per cell: r = (b - mean)
+// - A x from the warm-started pressure x (x = 0 outside FLUID cells, r = 0 there). The
+// preconditioner makes z and its sums afterwards, and runs the start step (cg_scalar_step.glsl).
+#include "common/sim.glsl"
+#include "solvers/common/solver_state.h"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+layout(std430, binding = PF_SLOT_RHS) readonly buffer Rhs { float rhs[]; };
+layout(std430, binding = PF_SLOT_SOLVER_X) buffer X { float x[]; };
+layout(std430, binding = PF_SLOT_SOLVER_R) writeonly buffer R { float r_out[]; };
+layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
+#include "solvers/common/poisson.glsl"
+#include "solvers/common/state.glsl"
+#include "solvers/cg/cg_start_residual.glsl"
+
+void main() {
+    int c = int(flat_id());
+    if (c >= u_dims.w) return;
+    float r = 0.0;
+    if (cell_type[c] == PF_CELL_FLUID)
+        r = start_residual(c, poisson_stencil(c));
+    else
+        x[c] = 0.0;  // never read by a neighbour's stencil: no race
+    r_out[c] = r;
+}

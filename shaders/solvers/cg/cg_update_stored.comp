@@ -1,0 +1,32 @@
+// Conjugate gradients with a stored z (the multigrid V-cycle), per cell: x += alpha p, r -= alpha q
+// on FLUID cells, and the V-cycle's first pass, which needs nothing but the cell's new r: the red
+// half-sweep from zero, start = r / diag on red FLUID cells and 0 elsewhere (gauss_seidel.comp's
+// PF_GS_FROM_ZERO) — one pass less per iteration. The V-cycle's last pass sums z and runs the
+// beta step (mg_smooth_zstats.comp).
+#include "common/sim.glsl"
+#include "solvers/common/solver_state.h"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+layout(std430, binding = PF_SLOT_SOLVER_X) buffer X { float x[]; };
+layout(std430, binding = PF_SLOT_SOLVER_R) buffer R { float r[]; };
+layout(std430, binding = PF_SLOT_SOLVER_P) readonly buffer P { float p[]; };
+layout(std430, binding = PF_SLOT_SOLVER_Q) readonly buffer Q { float q[]; };
+layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
+layout(std430, binding = PF_SLOT_SOLVER_MG_START) writeonly buffer Start { float start[]; };
+#include "solvers/common/poisson.glsl"
+#include "solvers/common/state.glsl"
+
+void main() {
+    int c = int(flat_id());
+    if (c >= u_dims.w) return;
+    float first = 0.0;
+    if (cell_type[c] == PF_CELL_FLUID) {
+        float alpha = state_float(PF_SOLVER_ALPHA);
+        x[c] += alpha * p[c];
+        float rn = r[c] - alpha * q[c];
+        r[c] = rn;
+        float diag = cell_color(c) == 0u ? poisson_stencil(c).diag : 0.0;
+        first = diag > 0.0 ? rn / diag : 0.0;
+    }
+    start[c] = first;  // read by the V-cycle's black half-sweep (not in this pass)
+}
