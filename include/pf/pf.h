@@ -176,7 +176,7 @@ typedef struct pf_sim_params {
                                        a CG step), 1..10000; 0 = default 40 */
     float jacobi_omega;           /**< Jacobi relaxation weight in (0, 1]; 0 = default 1 (the original) */
     float cfl;                    /**< max cells a particle may cross per substep, (0, 16]; 0 = default 1 */
-    uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; 0 = default 8 */
+    uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; 0 = default 16 */
     uint32_t extrapolation_layers;/**< face layers velocity is extended into air, 1..16; 0 = default 2 */
     uint32_t separation;          /**< 1: pressure is kept >= 0 (projected Jacobi, Gerszewski & Bargteil
                                        2013), so liquid can pull away from walls and the lid instead of

@@ -140,9 +140,11 @@ TEST_F(Volume, CorrectionKeepsANoisyTankFlatterThanWithout) {
 }
 
 // The particle-density volume change of the small dam break below after `frames` frames of
-// frame_dt, measured on the CPU from the particles (NaN if a step failed).
-double dam_break_volume_change(int frames, float frame_dt) {
-    const pf_sim_desc d = long_run_desc(16, 16, 16, pf_default_sim_params().volume_correction);
+// frame_dt, measured on the CPU from the particles (NaN if a step failed); max_substeps 0 keeps
+// the default cap.
+double dam_break_volume_change(int frames, float frame_dt, uint32_t max_substeps = 0) {
+    pf_sim_desc d = long_run_desc(16, 16, 16, pf_default_sim_params().volume_correction);
+    if (max_substeps) d.params.max_substeps = max_substeps;
     pf_sim* raw = nullptr;
     EXPECT_EQ(pf_create(&d, &raw), PF_OK) << last_log();
     SimPtr sim(raw);
@@ -168,15 +170,20 @@ TEST_F(Volume, DamBreakKeepsItsVolumeAtSixtyFramesASecond) {
     EXPECT_LT(std::abs(change), 0.02);
 }
 
-// The same dam break at frame dt 0.5 s (8 substeps of 1/16 s, beyond CFL). The issue asks for
-// 5%; NOT REACHED: measured -8.5%, -9.2% and -9.0% with the default 0.1 (-6.5% with 0.3 or 0.6,
-// -38% without the correction). The loss is count noise in a liquid that never settles at 1/16 s
-// substeps, not clumps or walls (docs/design.md §4.5 gives the measurements and what was tried).
-// What is asserted is what is reached, with margin: within 11%.
+// The same dam break at frame dt 0.5 s: CFL wants more substeps than the default cap of 16
+// allows (1/32 s each). Measured on llvmpipe: -3.0% with the default 0.1 correction (-1.2% with
+// a cap of 30). The issue's bound, 5%, is asserted. The control: with the earlier default cap
+// of 8 (1/16 s substeps) the same run loses -9.3% (earlier builds -8.5% to -9.2%): the loss
+// follows the substep length, not the frame length — count noise in a liquid that never
+// settles at those substeps, not clumps or walls (docs/design.md §4.5: measurements and what
+// was tried). Asserted: at least 3 points more with the cap of 8.
 TEST_F(Volume, DamBreakAtHalfSecondFramesLosesLittleVolume) {
-    const double change = dam_break_volume_change(20, 0.5f);
+    ASSERT_EQ(pf_default_sim_params().max_substeps, 16u);
+    const double change = dam_break_volume_change(20, 0.5f), cap8 = dam_break_volume_change(20, 0.5f, 8);
     RecordProperty("volume_change_10s", std::to_string(change));
-    EXPECT_LT(std::abs(change), 0.11);
+    RecordProperty("volume_change_10s_cap8", std::to_string(cap8));
+    EXPECT_LT(std::abs(change), 0.05);
+    EXPECT_LT(cap8, change - 0.03);
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ namespace {
 class LargeSteps : public Stability {
 protected:
     // A dam break: a 0.6 x 0.6 x 0.8 m block in a 1.6 x 0.8 x 0.8 m tank of 0.1 m cells, with
-    // the default cap of 8 substeps (max_substeps 0) or another.
+    // the default cap of 16 substeps (max_substeps 0) or another.
     void dam_break(float dt, int frames, uint32_t max_substeps = 0) {
         pf_sim_desc d = desc(16, 8, 8, 0.1f);
         if (max_substeps) d.params.max_substeps = max_substeps;
@@ -49,7 +49,7 @@ protected:
             EXPECT_EQ(st.flags & PF_FLAG_SUBSTEPS_CLAMPED, 0u);
             EXPECT_GT(worst_drift, -d.params.volume_loss_limit);
         } else {
-            EXPECT_NE(st.flags & PF_FLAG_SUBSTEPS_CLAMPED, 0u) << "CFL wanted more than 8 substeps at dt " << dt;
+            EXPECT_NE(st.flags & PF_FLAG_SUBSTEPS_CLAMPED, 0u) << "CFL wanted more than the default cap of substeps at dt " << dt;
             EXPECT_EQ(log_.warnings_with("PF_FLAG_SUBSTEPS_CLAMPED"), 1u) << "one warning, not one per frame";
         }
         // Either the liquid kept its volume or the library said it did not.
