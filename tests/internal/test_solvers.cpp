@@ -247,9 +247,9 @@ TEST_P(Solvers, SeparationSatisfiesComplementarity) {
 
 // The accuracy ladder: for the same work, MGPCG reaches a residual Jacobi does not. Budget:
 // 200 Jacobi sweeps (+ 25 residual checks) read and write the fine grid about 250 times; 10
-// MGPCG iterations about 110 times (per iteration: matvec, update, direction, z statistics,
-// 4 smoothing half-sweeps, residual and prolongation on the fine grid, the coarser levels an
-// eighth of that each).
+// MGPCG iterations about 80 times (per iteration on the fine grid: direction with A p, update,
+// black half-sweep, residual, restriction, prolongation with a half-sweep, the last half-sweep
+// with z's sums; the coarser levels an eighth of that each).
 class SolverLadder : public Solvers {};
 
 TEST_P(SolverLadder, MgpcgBeatsJacobiOnTheSameBudget) {

@@ -3,9 +3,10 @@
 // preconditioner that writes z = M^-1 r into a buffer (the multigrid V-cycle of MGPCG).
 // Warm-started from the previous substep's pressure; every scalar (alpha, beta, the residual
 // test) is formed on the GPU by the last workgroup of the pass that sums its terms, and
-// convergence empties the remaining iterations' indirect dispatches. A singular system (no AIR cell) is made consistent by
-// removing the mean of b, and the mean of z is removed every iteration (the null space is the
-// constants). With separation on (p >= 0), the unconstrained solve is followed by
+// convergence empties the remaining iterations' indirect dispatches. An iteration is two passes
+// (the direction with A p, the update) plus the stored preconditioner's. A singular system (no
+// AIR cell) is made consistent by removing the mean of b, and the mean of z is removed every
+// iteration (the null space is the constants). With separation on (p >= 0), the unconstrained solve is followed by
 // kActiveSetRounds primal-dual active-set rounds: cells with p < 0 are held at p = 0, held
 // cells whose residual asks for pressure are released, and the system is solved again from
 // the current pressure (docs/design.md §4.6).
@@ -25,7 +26,7 @@ public:
     // Once per Krylov solve, before the first apply: the system's cell types are fixed until the next.
     virtual void begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_type) = 0;
     // Where CG's update writes the preconditioner's first step, which needs only each cell's
-    // new r: r / diag on red FLUID cells, 0 elsewhere (cg_update.comp, PF_PRECOND 2).
+    // new r: r / diag on red FLUID cells, 0 elsewhere (cg_update_stored.comp).
     virtual const gl::Buffer& first_sweep() const = 0;
     // z = M^-1 r on FLUID cells of `cell_type`; its last pass sums (r.r, r.z, sum z, sum r) over
     // the control's orbits and runs CG's scalar step `cg_step` (PF_CG_STEP_START or _BETA) in its
