@@ -36,7 +36,7 @@
 #define PF_SLOT_SOLVER_STATUS 0  /* the simulation's status buffer, in the final check only */
 #define PF_SLOT_SOLVER_Z_INIT 4  /* cg_init with Jacobi: the z it makes (slot Z holds the rhs there) */
 #define PF_SLOT_SOLVER_P_NEXT 0  /* cg_matvec: the new search direction (CG alternates two p buffers) */
-#define PF_SLOT_SOLVER_MG_START 3 /* cg_update with multigrid: the V-cycle's first red half-sweep (z's slot) */
+#define PF_SLOT_SOLVER_MG_START 3 /* cg_update_stored: the V-cycle's first red half-sweep (z's slot) */
 #define PF_SLOT_SOLVER_WORKING_TYPE 2 /* cell types with separated cells held at p = 0 (CG family) */
 /* storage blocks of the multigrid kernels (shaders/solvers/mgpcg/): a level and the next coarser one */
 #define PF_SLOT_MG_TYPE 6        /* the level's cell types */
