@@ -3,11 +3,8 @@
 # picture); at each obstacle's projected centre, which pf_headless prints, the two images must
 # differ. Removing the obstacle drawing makes the images equal there and fails the test.
 #   -DHEADLESS=... -DCHECK=pf_png_check -DSCENE=path.json -DOUT=dir -DSIZE=WxH
-foreach(v HEADLESS CHECK SCENE OUT SIZE)
-  if(NOT DEFINED ${v})
-    message(FATAL_ERROR "headless_obstacles_drawn.cmake: ${v} not set")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/require_defined.cmake")
+pf_require_defined(headless_obstacles_drawn.cmake HEADLESS CHECK SCENE OUT SIZE)
 file(REMOVE_RECURSE "${OUT}")
 
 foreach(run drawn hidden)

@@ -10,11 +10,8 @@
 #    1 px for the printed whole pixels.
 #   -DXVFB_RUN=... -DVIEWER=... -DCHECK=pf_png_check -DOUT=path.png -DSIZE=WxH -DSCENES=dir
 #   -DSCENE=name -DOBSTACLE=I -DDX=px -DDY=px -DFIRST=F0 -DLAST=F1 -DFRAMES=N -DRADIUS_MM=r
-foreach(v XVFB_RUN VIEWER CHECK OUT SIZE SCENES SCENE OBSTACLE DX DY FIRST LAST FRAMES RADIUS_MM)
-  if(NOT DEFINED ${v})
-    message(FATAL_ERROR "viewer_obstacle_drag.cmake: ${v} not set")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/require_defined.cmake")
+pf_require_defined(viewer_obstacle_drag.cmake XVFB_RUN VIEWER CHECK OUT SIZE SCENES SCENE OBSTACLE DX DY FIRST LAST FRAMES RADIUS_MM)
 file(REMOVE "${OUT}")
 set(ENV{PF_SCENES_DIR} "${SCENES}")
 execute_process(

@@ -2,11 +2,8 @@
 # --screenshot, then checks the picture with pf_png_check.
 #   -DXVFB_RUN=... -DVIEWER=... -DCHECK=... -DOUT=path.png -DSIZE=WxH -DSCENES=dir
 #   [-DEXTRA="--solver mgpcg ..."]  more viewer options, space-separated
-foreach(v XVFB_RUN VIEWER CHECK OUT SIZE)
-  if(NOT DEFINED ${v})
-    message(FATAL_ERROR "viewer_smoke.cmake: ${v} not set")
-  endif()
-endforeach()
+include("${CMAKE_CURRENT_LIST_DIR}/require_defined.cmake")
+pf_require_defined(viewer_smoke.cmake XVFB_RUN VIEWER CHECK OUT SIZE)
 file(REMOVE "${OUT}")
 set(ENV{PF_SCENES_DIR} "${SCENES}")
 separate_arguments(extra UNIX_COMMAND "${EXTRA}")
