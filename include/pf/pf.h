@@ -162,13 +162,13 @@ typedef enum pf_advection {
 
 /** Parameters that may change between steps (pf_set_params). Start from pf_default_sim_params().
  *  Fields marked "0 = default" take their default when zero; with struct_size set, gravity,
- *  flip_ratio, separation and volume_correction take zero literally (with struct_size 0, every
- *  zero field takes its default). */
+ *  flip_ratio, separation, pressure_solver, transfer, advection, p2g and volume_correction take
+ *  zero literally (with struct_size 0, every zero field takes its default). */
 typedef struct pf_sim_params {
     uint32_t struct_size;         /**< sizeof(pf_sim_params) as the caller compiled it (pf_default_sim_params()
                                        sets it); 0: a zero-initialised struct, in which every field (each
                                        element of an array) that is 0 takes its default, gravity, flip_ratio,
-                                       separation and volume_correction included */
+                                       separation, pressure_solver and volume_correction included */
     float gravity[3];             /**< body acceleration in m/s^2; default (0, -9.81, 0) */
     float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 (ignored with
                                        PF_TRANSFER_APIC) */
@@ -178,16 +178,18 @@ typedef struct pf_sim_params {
     float cfl;                    /**< max cells a particle may cross per substep, (0, 16]; 0 = default 1 */
     uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; 0 = default 16 */
     uint32_t extrapolation_layers;/**< face layers velocity is extended into air, 1..16; 0 = default 2 */
-    uint32_t separation;          /**< 1: pressure is kept >= 0 (projected Jacobi, Gerszewski & Bargteil
-                                       2013), so liquid can pull away from walls and the lid instead of
-                                       clinging to them by suction; 0: the original's plain Jacobi.
-                                       0 or 1; default 1 (a zero value is taken literally) */
-    pf_pressure_solver pressure_solver; /**< which solver; default (0) PF_PRESSURE_SOLVER_JACOBI. Every solver
+    uint32_t separation;          /**< 1: pressure is kept >= 0 (Gerszewski & Bargteil 2013), so liquid can
+                                       pull away from walls and the lid instead of clinging to them by
+                                       suction; 0: pressure of either sign (the original). 0 or 1; default 0
+                                       (the fast and accurate presets set 1) */
+    pf_pressure_solver pressure_solver; /**< which solver; default PF_PRESSURE_SOLVER_MGPCG (0, which is
+                                       PF_PRESSURE_SOLVER_JACOBI once struct_size is set, takes the default
+                                       only in a zero-initialised struct). Every solver
                                        stops at pressure_tolerance or after pressure_iterations; with
                                        separation the stationary ones project every update onto p >= 0 and
                                        the CG family runs active-set rounds (docs/design.md §4.6) */
     float pressure_tolerance;     /**< relative residual |b - A p| / |b| at which a solve stops, (0, 1);
-                                       0 = default 1e-4. Checked on the GPU, never waited for */
+                                       0 = default 1e-3. Checked on the GPU, never waited for */
     float sor_omega;              /**< over-relaxation of PF_PRESSURE_SOLVER_RBGS in (0, 2); 0 = default 1.6 */
     pf_transfer transfer;         /**< grid-particle transfer; default (0) PF_TRANSFER_PIC_FLIP */
     pf_advection advection;       /**< particle integrator; default (0) PF_ADVECTION_EULER */
@@ -209,9 +211,11 @@ typedef struct pf_sim_params {
  *  has their cost and accuracy on an H100). Each is a complete pf_sim_params with the default
  *  gravity; change any field afterwards. */
 typedef enum pf_quality {
-    PF_QUALITY_FAST = 0,         /**< the default: 40 projected Jacobi sweeps (separation on), PIC/FLIP 0.95,
-                                      explicit Euler, volume correction 0.1 */
-    PF_QUALITY_BALANCED = 1,     /**< MGPCG to a relative residual of 1e-3, separation off, otherwise fast */
+    PF_QUALITY_FAST = 0,         /**< the original's scheme: 40 projected Jacobi sweeps (separation on),
+                                      otherwise balanced */
+    PF_QUALITY_BALANCED = 1,     /**< the defaults (pf_default_sim_params): MGPCG to a relative residual of
+                                      1e-3, separation off, PIC/FLIP 0.95, explicit Euler, volume
+                                      correction 0.1 */
     PF_QUALITY_ACCURATE = 2,     /**< MGPCG to 1e-5 with separation (active-set rounds), APIC */
     PF_QUALITY_COUNT = 3,
     PF_QUALITY_FORCE32 = 0x7fffffff

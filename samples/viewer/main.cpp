@@ -298,7 +298,7 @@ const std::vector<ParamPreset>& param_presets() {
              pfs::apply_preset(PF_QUALITY_FAST, p);
              return p;
          }},
-        {"balanced", "PF_QUALITY_BALANCED: MGPCG to 1e-3, separation off",
+        {"balanced", "PF_QUALITY_BALANCED (the library default): MGPCG to 1e-3, separation off",
          [](const pfs::Scene& scene) {
              pf_sim_params p = scene.params;
              pfs::apply_preset(PF_QUALITY_BALANCED, p);

@@ -574,7 +574,7 @@ TEST_F(ApiValidation, SetParamsAcceptsBoundaryValues) {
 // Zero means default
 
 // A zero-initialised pf_sim_params (struct_size 0) means the defaults for every field, gravity,
-// flip_ratio, separation and volume_correction included (issue 9: it used to give gravity 0, pure
+// flip_ratio, pressure_solver and volume_correction included (issue 9: it used to give gravity 0, pure
 // PIC and separation off). Zero gravity is asked for with struct_size set (pf_default_sim_params).
 TEST_F(ApiValidation, ZeroedParamsTakeEveryDefaultAndStructSizeMakesZeroLiteral) {
     const pf_sim_params def = pf_default_sim_params();
@@ -586,16 +586,18 @@ TEST_F(ApiValidation, ZeroedParamsTakeEveryDefaultAndStructSizeMakesZeroLiteral)
     EXPECT_EQ(0, std::memcmp(&got, &def, sizeof got)) << params_str(got) << " vs " << params_str(def);
     EXPECT_EQ(got.gravity[1], -9.81f);
     EXPECT_EQ(got.flip_ratio, 0.95f);
-    EXPECT_EQ(got.separation, 1u);
+    EXPECT_EQ(got.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
     EXPECT_EQ(got.volume_correction, 0.1f);
-    // With struct_size set, zero is literal: gravity 0, pure PIC.
+    // With struct_size set, zero is literal: gravity 0, pure PIC, the Jacobi solver (enum 0).
     pf_sim_params still = pf_default_sim_params();
     still.gravity[1] = 0.0f;
     still.flip_ratio = 0.0f;
+    still.pressure_solver = PF_PRESSURE_SOLVER_JACOBI;
     ASSERT_EQ(pf_set_params(sim_.get(), &still), PF_OK) << last_log();
     ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
     EXPECT_EQ(got.gravity[1], 0.0f);
     EXPECT_EQ(got.flip_ratio, 0.0f);
+    EXPECT_EQ(got.pressure_solver, PF_PRESSURE_SOLVER_JACOBI);
     // Observable: with zero gravity a liquid at rest stays at rest (default gravity would give
     // 9.81 m/s^2 * 1/60 s = 0.16 m/s after one frame). Bound: 1e-4 m/s.
     ParticleState before = read_all(sim_.get());
@@ -634,7 +636,7 @@ TEST_F(CreateValidation, ZeroedDescParamsTakeDefaults) {
     // Zero-initialised (struct_size 0): every field takes its default.
     EXPECT_EQ(got.gravity[1], -9.81f);
     EXPECT_EQ(got.flip_ratio, 0.95f);
-    EXPECT_EQ(got.separation, 1u);
+    EXPECT_EQ(got.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
     EXPECT_EQ(0, std::memcmp(&got, &def, sizeof got));
     EXPECT_EQ(pf_step(s.get(), kDt), PF_OK) << last_log();
 }
@@ -886,14 +888,17 @@ TEST_F(ApiValidation, ClearParticlesKeepsParams) {
 // ---------------------------------------------------------------------------------------------
 // Quality presets
 
-TEST(QualityPresets, EachIsValidDistinctAndFastIsTheDefault) {
+// Issue 6: the default configuration is the balanced preset.
+TEST(QualityPresets, EachIsValidDistinctAndBalancedIsTheDefault) {
     pf_sim_params fast{}, balanced{}, accurate{};
     ASSERT_EQ(pf_quality_params(PF_QUALITY_FAST, &fast), PF_OK);
     ASSERT_EQ(pf_quality_params(PF_QUALITY_BALANCED, &balanced), PF_OK);
     ASSERT_EQ(pf_quality_params(PF_QUALITY_ACCURATE, &accurate), PF_OK);
     const pf_sim_params def = pf_default_sim_params();
-    EXPECT_TRUE(same_params(fast, def)) << params_str(fast);
+    EXPECT_TRUE(same_params(balanced, def)) << params_str(balanced);
     EXPECT_FALSE(same_params(balanced, fast));
+    EXPECT_EQ(fast.pressure_solver, PF_PRESSURE_SOLVER_JACOBI);
+    EXPECT_EQ(fast.separation, 1u);
     EXPECT_FALSE(same_params(accurate, balanced));
     EXPECT_EQ(balanced.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
     EXPECT_EQ(accurate.transfer, PF_TRANSFER_APIC);

@@ -175,7 +175,7 @@ TEST_F(DebugLabels, PassesRunInBalancedDebugGroups) {
     EXPECT_EQ(size_t(step.pops), step.pushed.size());
     EXPECT_EQ(step.deepest, 2) << "pass groups nest directly inside pflip/step";
     for (const char* pass : {"pflip/clear", "pflip/p2g", "pflip/grid_forces", "pflip/classify", "pflip/pressure_setup",
-                             "pflip/jacobi", "pflip/velocity_update", "pflip/extrapolate", "pflip/g2p", "pflip/advect",
+                             "pflip/mgpcg", "pflip/velocity_update", "pflip/extrapolate", "pflip/g2p", "pflip/advect",
                              "pflip/metrics"})
         EXPECT_TRUE(contains(step.pushed, pass)) << pass;
     for (const std::string& g : step.pushed) EXPECT_EQ(g.rfind("pflip/", 0), 0u) << g;

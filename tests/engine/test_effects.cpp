@@ -72,10 +72,10 @@ SimPtr make_scene(Effects& t, uint32_t features) {
 }
 
 // The core step's list, in order: the core passes, the hydrostatic start and the metrics, then
-// the default solver's entry (Jacobi).
+// the default solver's entries (MGPCG and its V-cycle).
 const std::vector<std::string> kCoreList = {"clear",       "p2g", "grid_forces", "classify", "pressure_setup",
                                             "velocity_update", "extrapolate", "g2p", "advect", "metrics",
-                                            "hydrostatic_start", "jacobi"};
+                                            "hydrostatic_start", "mgpcg", "mgpcg/precondition"};
 
 TEST_F(Effects, EveryEffectOffListsExactlyTheCorePasses) {
     SimPtr sim = make_scene(*this, 0);

@@ -98,8 +98,11 @@ size_t inside_count(const ParticleState& p, const std::vector<pf_obstacle>& obst
 
 void fill_tank_around_block(pf_sim* sim);
 
+// The presets' solvers: the default (balanced: MGPCG to 1e-3, separation off), the fast preset's
+// projected Jacobi, and MGPCG with separation's active-set rounds (the accurate preset's).
 struct SolverCase {
-    pf_pressure_solver solver;
+    pf_quality preset;
+    uint32_t separation;
     const char* name;
 };
 
@@ -108,8 +111,11 @@ protected:
     pf_sim_desc desc(uint32_t nx, uint32_t ny, uint32_t nz) const {
         pf_sim_desc d = test_desc(nx, ny, nz, 0.05f);
         d.features = PF_FEATURE_OBSTACLES;
-        d.params.pressure_solver = GetParam().solver;
-        if (GetParam().solver == PF_PRESSURE_SOLVER_MGPCG) d.params.pressure_tolerance = 1e-3f;
+        pf_sim_params preset{};
+        EXPECT_EQ(pf_quality_params(GetParam().preset, &preset), PF_OK);
+        d.params.pressure_solver = preset.pressure_solver;
+        d.params.pressure_tolerance = preset.pressure_tolerance;
+        d.params.separation = GetParam().separation;
         return d;
     }
     void add(pf_sim* sim, const std::vector<pf_obstacle>& obstacles) {
@@ -132,18 +138,23 @@ pf_obstacle box(double x, double y, double z, double hx, double hy, double hz) {
     return o;
 }
 
-// A column of liquid falls on a sphere wider than itself: it must part and flow down both sides
-// (a fifth of it on each side of the sphere, below its equator, after 0.75 s), and none of it may
-// ever be inside (were the sphere ignored, the column would fall straight through it).
-TEST_P(Obstacles, LiquidPouredOnASphereFlowsAroundIt) {
+// A column of liquid falls on a sphere wider than itself for 0.75 s; returns the fractions of it
+// left and right of the sphere below its equator, and checks that none of it is ever inside
+// (were the sphere ignored, the column would fall straight through it).
+struct Parted {
+    double left = 0, right = 0;
+};
+Parted pour_on_a_sphere(const pf_sim_desc& d) {
     const pf_obstacle ball = sphere(0.4, 0.45, 0.4, 0.15);
-    SimPtr sim = create(desc(16, 24, 16));
-    ASSERT_TRUE(sim);
-    add(sim.get(), {ball});
+    pf_sim* raw = nullptr;
+    EXPECT_EQ(pf_create(&d, &raw), PF_OK) << last_log();
+    SimPtr sim(raw);
+    if (!sim) return {};
+    EXPECT_EQ(pf_add_obstacle(sim.get(), &ball, nullptr), PF_OK) << last_log();
     const float lo[3] = {0.3f, 0.75f, 0.3f}, hi[3] = {0.5f, 0.95f, 0.5f};
-    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    EXPECT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
     for (int f = 0; f < 45; ++f) {
-        ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+        EXPECT_EQ(pf_step(sim.get(), kFrame), PF_OK);
         if (f % 9 == 8) EXPECT_EQ(inside_count(read_all(sim.get()), {ball}), 0u) << "frame " << f;
     }
     const ParticleState p = read_all(sim.get());
@@ -153,10 +164,40 @@ TEST_P(Obstacles, LiquidPouredOnASphereFlowsAroundIt) {
         left += p.pos[i * 3] < 0.4f - 0.1f;
         right += p.pos[i * 3] > 0.4f + 0.1f;
     }
-    EXPECT_GT(left, p.count() / 5) << "left of the sphere, below its equator";
-    EXPECT_GT(right, p.count() / 5) << "right of the sphere, below its equator";
-    RecordProperty("left_fraction", std::to_string(double(left) / p.count()));
-    RecordProperty("right_fraction", std::to_string(double(right) / p.count()));
+    return {double(left) / double(p.count()), double(right) / double(p.count())};
+}
+
+// The liquid parts and flows down both sides. With separation a fifth of it is on each side
+// (measured about 0.30 with both solvers); without it the liquid clings to the sphere by suction
+// and less has left (measured 0.18 to 0.22, see the next test), so the default is held to a
+// tenth: it must still part.
+TEST_P(Obstacles, LiquidPouredOnASphereFlowsAroundIt) {
+    const Parted parted = pour_on_a_sphere(desc(16, 24, 16));
+    const double least = GetParam().separation ? 0.2 : 0.1;
+    EXPECT_GT(parted.left, least) << "left of the sphere, below its equator";
+    EXPECT_GT(parted.right, least) << "right of the sphere, below its equator";
+    RecordProperty("left_fraction", std::to_string(parted.left));
+    RecordProperty("right_fraction", std::to_string(parted.right));
+}
+
+class ObstacleSeparation : public GpuTest {};
+
+// What the default's separation off costs around obstacles: the same pour with separation on
+// leaves clearly more liquid below the sphere's equator on each side (measured 0.30 / 0.30
+// against 0.18 / 0.22 with MGPCG, llvmpipe). This is the default's documented trade-off
+// (docs/accuracy.md, "Presets"): separation's active-set rounds cost MGPCG 2.6x its iterations.
+TEST_F(ObstacleSeparation, SeparationLetsPouredLiquidLeaveTheSphere) {
+    pf_sim_desc d = test_desc(16, 24, 16, 0.05f);
+    d.features = PF_FEATURE_OBSTACLES;
+    const Parted clinging = pour_on_a_sphere(d);
+    d.params.separation = 1;
+    const Parted separating = pour_on_a_sphere(d);
+    RecordProperty("default_left", std::to_string(clinging.left));
+    RecordProperty("default_right", std::to_string(clinging.right));
+    RecordProperty("separation_left", std::to_string(separating.left));
+    RecordProperty("separation_right", std::to_string(separating.right));
+    EXPECT_GT(separating.left, clinging.left + 0.05);
+    EXPECT_GT(separating.right, clinging.right + 0.05);
 }
 
 // Liquid sloshing for 1.5 s around a tilted box standing on the floor, a tilted capsule and a
@@ -467,9 +508,10 @@ TEST_P(Obstacles, SdfBoxFeelsBuoyancyRhoGV) {
     glDeleteTextures(1, &tex);
 }
 
-INSTANTIATE_TEST_SUITE_P(DefaultAndMgpcg, Obstacles,
-                         ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_JACOBI, "jacobi"},
-                                           SolverCase{PF_PRESSURE_SOLVER_MGPCG, "mgpcg"}),
+INSTANTIATE_TEST_SUITE_P(Presets, Obstacles,
+                         ::testing::Values(SolverCase{PF_QUALITY_BALANCED, 0, "balanced"},
+                                           SolverCase{PF_QUALITY_FAST, 1, "fast"},
+                                           SolverCase{PF_QUALITY_BALANCED, 1, "mgpcg_separation"}),
                          [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
 
 class ObstacleArguments : public GpuTest {};
@@ -477,15 +519,19 @@ class ObstacleArguments : public GpuTest {};
 // Liquid poured on a sphere given as the engine's SDF texture, in each accepted format: the sphere
 // sits off the texture's centre (local (0.05, 0, 0)) and the obstacle is turned 90 degrees about
 // z, so the sphere is at position + (0, 0.05, 0) in the world only if the library applies the
-// transform as documented. The liquid parts around it (a fifth on each side below its equator)
+// transform as documented. The liquid parts around it (a fifth on each side below its equator
+// with separation, a tenth with the default's separation off: see the analytic sphere above)
 // and no particle is found inside the true sphere deeper than the texture resolves distances:
-// 2 mm (float formats, GL_R16), 5 mm (GL_R8: 0.8 m of range in 255 steps is 3 mm).
-class SdfFormats : public GpuTest, public ::testing::WithParamInterface<GLenum> {};
+// 2 mm (float formats, GL_R16), 5 mm (GL_R8: 0.8 m of range in 255 steps is 3 mm; before the
+// push widened its flat central differences, the default's pour ended 10.3 mm inside).
+class SdfFormats : public GpuTest, public ::testing::WithParamInterface<std::tuple<GLenum, uint32_t>> {};
 
 TEST_P(SdfFormats, LiquidPouredOnAnSdfSphereFlowsAroundIt) {
-    const GLenum format = GetParam();
+    const GLenum format = std::get<0>(GetParam());
+    const uint32_t separation = std::get<1>(GetParam());
     pf_sim_desc d = test_desc(16, 24, 16, 0.05f);
     d.features = PF_FEATURE_OBSTACLES;
+    d.params.separation = separation;
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
     const double h[3] = {0.25, 0.22, 0.22}, radius = 0.15;
@@ -522,21 +568,25 @@ TEST_P(SdfFormats, LiquidPouredOnAnSdfSphereFlowsAroundIt) {
         left += p.pos[i * 3] < 0.4f - 0.1f;
         right += p.pos[i * 3] > 0.4f + 0.1f;
     }
-    EXPECT_GT(left, p.count() / 5);
-    EXPECT_GT(right, p.count() / 5);
+    const size_t least = separation ? p.count() / 5 : p.count() / 10;
+    EXPECT_GT(left, least);
+    EXPECT_GT(right, least);
     RecordProperty("deepest_inside_m", std::to_string(deepest));
     RecordProperty("left_fraction", std::to_string(double(left) / p.count()));
     RecordProperty("right_fraction", std::to_string(double(right) / p.count()));
     glDeleteTextures(1, &tex);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryFormat, SdfFormats, ::testing::Values(GLenum(GL_R32F), GLenum(GL_R16F), GLenum(GL_R8), GLenum(GL_R16)),
-                         [](const ::testing::TestParamInfo<GLenum>& info) {
-                             switch (info.param) {
-                                 case GL_R32F: return std::string("r32f");
-                                 case GL_R16F: return std::string("r16f");
-                                 case GL_R8: return std::string("r8");
-                                 default: return std::string("r16");
+INSTANTIATE_TEST_SUITE_P(EveryFormat, SdfFormats,
+                         ::testing::Combine(::testing::Values(GLenum(GL_R32F), GLenum(GL_R16F), GLenum(GL_R8), GLenum(GL_R16)),
+                                            ::testing::Values(0u, 1u)),
+                         [](const ::testing::TestParamInfo<std::tuple<GLenum, uint32_t>>& info) {
+                             const char* separation = std::get<1>(info.param) ? "_separation" : "_default";
+                             switch (std::get<0>(info.param)) {
+                                 case GL_R32F: return std::string("r32f") + separation;
+                                 case GL_R16F: return std::string("r16f") + separation;
+                                 case GL_R8: return std::string("r8") + separation;
+                                 default: return std::string("r16") + separation;
                              }
                          });
 

@@ -122,6 +122,12 @@ TEST_F(Metrics, KineticEnergyOfAFreeFallGrowsWithTimeSquared) {
     // the blob's rim (the lid 1 cell above the blob costs 1% of the energy in the first frame).
     pf_sim_desc d = test_desc(16, 24, 16, 0.05f);
     d.params.volume_correction = 0;  // a free fall: no pressure may act (cells change counts as they fall)
+    // The sorted gather's float sums give every face the blob's velocity to float rounding. The
+    // default fixed-point P2G rounds each face's momentum (max_speed / 2^21 over the face's
+    // weight, large on the rim's barely reached faces); a converged projection (the default
+    // MGPCG) then acts on that rounding: measured 1.3e-4 of the energy too much at frame 3, 2e-7
+    // with the gather (docs/accuracy.md, "Particle-to-grid").
+    d.params.p2g = PF_P2G_SORTED_GATHER;
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
     const float lo[3] = {0.25f, 0.7f, 0.25f}, hi[3] = {0.55f, 0.9f, 0.55f};
@@ -135,8 +141,9 @@ TEST_F(Metrics, KineticEnergyOfAFreeFallGrowsWithTimeSquared) {
         st = settled_stats(sim.get());
         ASSERT_EQ(st.metrics_step, uint64_t(f));
         const double t = f * frame, expected = 0.5 * mass * (g * t) * (g * t);
-        // Float velocities summed over 1152 particles: rounding is ~1e-6 relative.
-        EXPECT_NEAR(st.kinetic_energy, expected, 1e-4 * expected) << "frame " << f;
+        // Float velocities summed over 1152 particles: rounding is ~1e-6 relative (measured at
+        // most 2.1e-7 in 15 frames).
+        EXPECT_NEAR(st.kinetic_energy, expected, 1e-5 * expected) << "frame " << f;
     }
 }
 

@@ -25,6 +25,8 @@ protected:
     // Projects random velocities once and measures the divergence before and after.
     Result project(uint32_t iterations, uint32_t separation) {
         pf_sim_desc d = test_desc(16, 16, 16, 0.05f);
+        d.params.pressure_solver = PF_PRESSURE_SOLVER_JACOBI;  // the fast preset's (the others: test_solvers.cpp)
+        d.params.pressure_tolerance = 1e-4f;
         d.params.pressure_iterations = iterations;
         d.params.separation = separation;
         d.params.volume_correction = 0;  // the projection alone: a divergence-free target

@@ -278,6 +278,29 @@ TEST_P(SolverLadder, MgpcgIterationsStayFlatAsTheGridDoubles) {
     EXPECT_GT(pcg_fine.iterations, pcg_coarse.iterations + 10);  // what it is flat against
 }
 
+// Flat and thin grids (a 2.5D game's tank, a long channel) are valid grids and MGPCG is the
+// default solver, so the hierarchy must reach its one-workgroup coarse level on them too: axes
+// of two or three cells coarsen to one and two, an axis of one cell stays one and R takes the
+// matching Galerkin scale (multigrid.glsl). Until 2026-11-23 pf_create refused these three
+// ("the coarsest level has 3072 cells"). Each converges to the tolerance the CPU measures, in
+// a handful of iterations where PCG needs far more (measured 10, 11, 5 against 121, 114, 22).
+// The bound of 12 catches a wrong restriction scale: R = P^T / 2 on the flat grid took 16.
+TEST_P(SolverLadder, MgpcgCoarsensFlatAndThinGrids) {
+    const glm::ivec3 grids[] = {{64, 24, 2}, {96, 24, 1}, {200, 3, 3}};
+    for (const glm::ivec3& n : grids) {
+        const Problem pb = bubbly_tank(n, 31, 0.0);
+        const Solved mg = solve_with(PF_PRESSURE_SOLVER_MGPCG, pb, 1e-4f, 300);
+        const Solved pcg = solve_with(PF_PRESSURE_SOLVER_PCG, pb, 1e-4f, 300);
+        ASSERT_EQ(mg.p.size(), pb.rhs.size()) << n.x << "x" << n.y << "x" << n.z;
+        EXPECT_LE(relative_residual(pb, mg.p, false), 1.5e-4) << n.x << "x" << n.y << "x" << n.z;
+        const std::string name = std::to_string(n.x) + "x" + std::to_string(n.y) + "x" + std::to_string(n.z);
+        RecordProperty("mgpcg_" + name, int(mg.iterations));
+        RecordProperty("pcg_" + name, int(pcg.iterations));
+        EXPECT_LE(mg.iterations, 12u) << name;
+        EXPECT_LT(3 * mg.iterations, pcg.iterations) << name;
+    }
+}
+
 // Mirror symmetry: every reduction adds mirror orbits in a fixed order, so a solver whose cell
 // updates are mirror-exact (Jacobi; CG and PCG, whose scalars come from those reductions) stops
 // after the same iteration and returns the bit-exact mirror image of the solution — the

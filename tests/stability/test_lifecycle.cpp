@@ -29,8 +29,8 @@ TEST_P(Lifecycle, DestroyAfterThousandsOfSteps) {
     ASSERT_EQ(pf_create(&d, &sim), PF_OK);
     const float lo[3] = {0, 0, 0}, hi[3] = {0.2f, 0.3f, 0.2f};
     ASSERT_EQ(pf_fill_box(sim, lo, hi, nullptr), PF_OK);
-    // 2000 steps with the default preset, 1000 with the costlier ones (CI's fast mode).
-    const int steps = GetParam() == PF_QUALITY_FAST || long_mode() ? 2000 : 1000;
+    // 2000 steps with the default (balanced) preset, 1000 with the others (CI's fast mode).
+    const int steps = GetParam() == PF_QUALITY_BALANCED || long_mode() ? 2000 : 1000;
     for (int s = 0; s < steps; ++s) ASSERT_EQ(pf_step(sim, 1.0f / 60.0f), PF_OK) << "step " << s;
     check(sim, d, 2 * 3 * 2 * 8, "after the long run");
     pf_destroy(sim);
@@ -68,10 +68,10 @@ TEST_P(Lifecycle, TwoSimulationsSteppingAlternately) {
     EXPECT_EQ(std::memcmp(pb.pos.data(), plb.pos.data(), pb.pos.size() * 4), 0) << "b differs from its lone run";
 }
 
-// 1000 rounds with the default (fast) preset; in CI's fast mode 200 with the other presets (their
+// 1000 rounds with the default (balanced) preset; in CI's fast mode 200 with the other presets (their
 // extra programs compile in every round), PF_STABILITY_LONG: 10,000 with every preset.
 TEST_P(Lifecycle, CreateStepDestroyAThousandTimes) {
-    const int rounds = long_mode() ? 10000 : (GetParam() == PF_QUALITY_FAST ? 1000 : 200);
+    const int rounds = long_mode() ? 10000 : (GetParam() == PF_QUALITY_BALANCED ? 1000 : 200);
     const pf_sim_desc d = desc(4, 4, 4, 0.1f);
     long after_warmup = 0;
     for (int round = 0; round < rounds; ++round) {

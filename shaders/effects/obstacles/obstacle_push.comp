@@ -52,16 +52,23 @@ void main() {
     vec3 x = pos[i].xyz;
     vec3 v = vel[i].xyz;
     float margin = PF_OBSTACLE_PUSH_MARGIN * sim.dx;
-    float h = 0.01 * sim.dx;  // central-difference step
     bool moved = false;
     for (int attempt = 0; attempt < 2; ++attempt) {
         int k;
         float d = scene_distance(x, k);
         if (k < 0 || d >= margin) break;
         uint o = uint(k);
-        vec3 grad = vec3(obstacle_distance(o, x + vec3(h, 0, 0)) - obstacle_distance(o, x - vec3(h, 0, 0)),
-                         obstacle_distance(o, x + vec3(0, h, 0)) - obstacle_distance(o, x - vec3(0, h, 0)),
-                         obstacle_distance(o, x + vec3(0, 0, h)) - obstacle_distance(o, x - vec3(0, 0, h)));
+        // Central differences, 0.01 cells apart; where they are flat, 8 and 64 times wider. A
+        // quantised SDF texture (GL_R8: 3 mm steps of distance) is flat over the small step, and
+        // "straight up" there pushed particles under a sphere's equator into it (1 cm deep,
+        // SdfFormats test).
+        vec3 grad = vec3(0.0);
+        float h = 0.01 * sim.dx;
+        for (int widen = 0; widen < 3 && grad == vec3(0.0); ++widen, h *= 8.0) {
+            grad = vec3(obstacle_distance(o, x + vec3(h, 0, 0)) - obstacle_distance(o, x - vec3(h, 0, 0)),
+                        obstacle_distance(o, x + vec3(0, h, 0)) - obstacle_distance(o, x - vec3(0, h, 0)),
+                        obstacle_distance(o, x + vec3(0, 0, h)) - obstacle_distance(o, x - vec3(0, 0, h)));
+        }
         float len = length(grad);
         vec3 n = len > 0.0 ? grad / len : vec3(0.0, 1.0, 0.0);  // at a medial point: straight up
         vec3 pushed = x + (margin - d) * n;

@@ -22,6 +22,12 @@ layout(std430, binding = PF_SLOT_MG_COARSE_E) writeonly buffer CoarseE { float c
 
 layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // the fine level
 
+// R's factor 4 / 2^d for the d axes this level coarsens (multigrid.glsl): 1/2 on a 3D grid.
+float restrict_scale() {
+    ivec3 coarsened = ivec3(lessThan(u_coarse_dims.xyz, u_dims.xyz));
+    return 4.0 / float(1 << (coarsened.x + coarsened.y + coarsened.z));
+}
+
 // The diagonal of the coarse Poisson operator at cc: in-level neighbours that are not SOLID.
 float coarse_diag(ivec3 cc) {
     const ivec3 nbs[6] = ivec3[6](ivec3(-1, 0, 0), ivec3(1, 0, 0), ivec3(0, -1, 0), ivec3(0, 1, 0),
@@ -63,7 +69,7 @@ void main() {
                 for (int dx = 0; dx < 4; ++dx) sum += wyz * wx[dx] * tmp[row + fx[dx]];
             }
         }
-        r = 0.5 * sum;
+        r = restrict_scale() * sum;
     }
     coarse_r[c] = r;
 #if PF_MG_START

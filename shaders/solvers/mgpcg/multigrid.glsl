@@ -6,6 +6,9 @@
 // take part on either side: AIR is a zero correction (Dirichlet).
 // The factor 1/2 of R: a coarse cell sums weights 8 over its 4x4x4 fine cells, and the coarse
 // operator (unscaled, spacing 2h) is 4 times the fine one, so R of a constant is 4 times it.
+// An axis of one cell is not coarsened (weight 1, not 2, per axis): with d coarsened axes the
+// weights sum to 2^d and the factor is 4 / 2^d (Galerkin: P^T A P is 2^d / 4 times the coarse
+// operator), 1 on a flat grid.
 layout(location = PF_LOC_SOLVER_COARSE_DIMS) uniform ivec4 u_coarse_dims;
 
 // Weight of coarse index c (of nc) in the prolongation onto fine index f, one axis.

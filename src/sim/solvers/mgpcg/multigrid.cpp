@@ -18,8 +18,9 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         const bool fine = levels_.empty();
         level.record = fine ? control.record(0) : control.record(control.add_record(level.cells));
         const glm::ivec3 next = (dims + 1) / 2;
-        const bool last = level.cells <= PF_MG_COARSE_CELLS || glm::any(glm::lessThan(next, glm::ivec3(2))) ||
-                          levels_.size() + 1 == PF_MG_MAX_LEVELS;
+        // Axes of two or three cells coarsen to one and two like any other (the prolongation clamps
+        // onto the level); only an axis of one cell stays as it is.
+        const bool last = level.cells <= PF_MG_COARSE_CELLS || levels_.size() + 1 == PF_MG_MAX_LEVELS;
         const size_t bytes = size_t(level.cells) * 4;
         if (fine) {
             start_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_start");

@@ -1,10 +1,12 @@
 // The multigrid V-cycle of MGPCG (McAdams, Sifakis & Teran 2010, "A parallel multigrid
 // Poisson solver for fluids simulation on large grids"), as CG's preconditioner: z = V(r).
-// Levels halve the grid (rounding up) until one holds at most PF_MG_COARSE_CELLS cells. Coarse
+// Levels halve the grid (rounding up; an axis of one cell stays one) until one holds at most
+// PF_MG_COARSE_CELLS cells, so flat and thin grids (a 2.5D tank of 256x128x2) coarsen too. Coarse
 // cell types: AIR if any child is AIR, else FLUID if any child is, else SOLID. Each level
 // smooths with one red-black Gauss-Seidel sweep from zero before the coarse correction (red,
-// black) and one after it (black, red), transfers residuals with R = P^T / 2 and corrections
-// with cell-centred trilinear P, and the coarsest level runs symmetric red-black sweeps in one
+// black) and one after it (black, red), transfers residuals with R = P^T / 2 (the Galerkin scale
+// 4 / 2^d for d coarsened axes: 1 on a flat grid, mg_restrict.comp) and corrections with
+// cell-centred trilinear P, and the coarsest level runs symmetric red-black sweeps in one
 // workgroup. Every piece is symmetric, so the V-cycle is a symmetric preconditioner, as CG
 // requires.
 //
