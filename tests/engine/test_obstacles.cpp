@@ -1,4 +1,4 @@
-// Static obstacles (PF_FEATURE_OBSTACLES) on the default solver (projected Jacobi) and on MGPCG:
+// Static obstacles (PF_FEATURE_OBSTACLES) under the presets' solvers (the default MGPCG, projected Jacobi, MGPCG with separation):
 // liquid poured on a sphere flows around it; no particle is inside any obstacle at any check of
 // a long sloshing run; a one-cell-thick wall holds a dam break; a tank at rest with a box in it
 // stays at rest. Moving obstacles and their forces: a submerged box feels rho g V (buoyancy); a

@@ -150,8 +150,8 @@ void Snapshots::continuation(const Config& c) {
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
-TEST_F(Snapshots, RestoreContinuesBitIdenticallyDefaultScheme) {
-    continuation({"default", PF_PRESSURE_SOLVER_JACOBI, PF_TRANSFER_PIC_FLIP, 0});
+TEST_F(Snapshots, RestoreContinuesBitIdenticallyJacobiScheme) {
+    continuation({"jacobi", PF_PRESSURE_SOLVER_JACOBI, PF_TRANSFER_PIC_FLIP, 0});
 }
 
 TEST_F(Snapshots, RestoreContinuesBitIdenticallyMgpcgApicEffects) {
@@ -275,7 +275,7 @@ TEST_F(Snapshots, BadBuffersAreRefusedAndChangeNothing) {
 
 // The GL state promise holds for all three calls.
 TEST_F(Snapshots, LeavesTheEngineStateAlone) {
-    SimPtr sim = scene({"default", PF_PRESSURE_SOLVER_JACOBI, PF_TRANSFER_PIC_FLIP, 0});
+    SimPtr sim = scene({"jacobi", PF_PRESSURE_SOLVER_JACOBI, PF_TRANSFER_PIC_FLIP, 0});
     pf_sim* s = sim.get();
     run(s, 2);
     Engine engine(EngineProgram::graphics);
