@@ -176,8 +176,7 @@ typedef struct pf_sim_params {
                                        a CG step), 1..10000; 0 = default 40 */
     float jacobi_omega;           /**< Jacobi relaxation weight in (0, 1]; 0 = default 1 (the original) */
     float cfl;                    /**< max cells a particle may cross per substep, (0, 16]; 0 = default 1 */
-    uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; 0 = default 32 (only
-                                       frames long enough for CFL to want more use them) */
+    uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; 0 = default 16 */
     uint32_t extrapolation_layers;/**< face layers velocity is extended into air, 1..16; 0 = default 2 */
     uint32_t separation;          /**< 1: pressure is kept >= 0 (Gerszewski & Bargteil 2013), so liquid can
                                        pull away from walls and the lid instead of clinging to them by
@@ -198,7 +197,7 @@ typedef struct pf_sim_params {
                                        fraction of a FLUID cell's excess particle count (beyond
                                        fill_particles_per_cell) the pressure projection spreads out per
                                        substep, against PIC/FLIP's slow compression. 0 = off (a zero value is
-                                       taken literally, like flip_ratio); default 0.2 */
+                                       taken literally, like flip_ratio); default 0.1 */
     pf_p2g p2g;                   /**< particle-to-grid scheme; default (0) PF_P2G_FIXED_POINT */
     float volume_loss_limit;      /**< fraction of its rest volume (particle count / fill_particles_per_cell
                                        cells) pf_stats.particle_volume may lose before PF_FLAG_VOLUME_LOST is
@@ -216,7 +215,7 @@ typedef enum pf_quality {
                                       otherwise balanced */
     PF_QUALITY_BALANCED = 1,     /**< the defaults (pf_default_sim_params): MGPCG to a relative residual of
                                       1e-3, separation off, PIC/FLIP 0.95, explicit Euler, volume
-                                      correction 0.2 */
+                                      correction 0.1 */
     PF_QUALITY_ACCURATE = 2,     /**< MGPCG to 1e-5 with separation (active-set rounds), APIC */
     PF_QUALITY_COUNT = 3,
     PF_QUALITY_FORCE32 = 0x7fffffff

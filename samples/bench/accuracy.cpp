@@ -92,7 +92,6 @@ std::vector<Config> sweep_configs() {
         p.separation = 0;
     });
     add("volume", "no_volume_correction", [](pf_sim_params& p) { p.volume_correction = 0.0f; });
-    add("volume", "volume_correction_0.1", [](pf_sim_params& p) { p.volume_correction = 0.1f; });  // the default until 2026-11-23
     add("volume", "volume_correction_0.3", [](pf_sim_params& p) { p.volume_correction = 0.3f; });
     add("transfer", "pic", [](pf_sim_params& p) { p.flip_ratio = 0.0f; });
     add("transfer", "flip_0.95", [](pf_sim_params&) {});

@@ -587,7 +587,7 @@ TEST_F(ApiValidation, ZeroedParamsTakeEveryDefaultAndStructSizeMakesZeroLiteral)
     EXPECT_EQ(got.gravity[1], -9.81f);
     EXPECT_EQ(got.flip_ratio, 0.95f);
     EXPECT_EQ(got.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
-    EXPECT_EQ(got.volume_correction, 0.2f);
+    EXPECT_EQ(got.volume_correction, 0.1f);
     // With struct_size set, zero is literal: gravity 0, pure PIC, the Jacobi solver (enum 0).
     pf_sim_params still = pf_default_sim_params();
     still.gravity[1] = 0.0f;

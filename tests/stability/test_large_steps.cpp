@@ -13,7 +13,7 @@ namespace {
 class LargeSteps : public Stability {
 protected:
     // A dam break: a 0.6 x 0.6 x 0.8 m block in a 1.6 x 0.8 x 0.8 m tank of 0.1 m cells, with
-    // the default cap of 32 substeps (max_substeps 0) or another.
+    // the default cap of 16 substeps (max_substeps 0) or another.
     void dam_break(float dt, int frames, uint32_t max_substeps = 0) {
         pf_sim_desc d = desc(16, 8, 8, 0.1f);
         if (max_substeps) d.params.max_substeps = max_substeps;
