@@ -9,8 +9,7 @@
 
 layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // nx, ny, nz, cells of this level
 
-const ivec3 kPoissonNeighbours[6] = ivec3[6](ivec3(-1, 0, 0), ivec3(1, 0, 0), ivec3(0, -1, 0),
-                                             ivec3(0, 1, 0), ivec3(0, 0, -1), ivec3(0, 0, 1));
+#include "solvers/common/poisson_neighbours.glsl"
 
 ivec3 level_coord(int c) { return ivec3(c % u_dims.x, (c / u_dims.x) % u_dims.y, c / (u_dims.x * u_dims.y)); }
 int level_index(ivec3 ijk) { return ijk.x + u_dims.x * (ijk.y + u_dims.y * ijk.z); }

@@ -19,6 +19,7 @@ layout(std430, binding = PF_SLOT_MG_COARSE_E) writeonly buffer CoarseE { float c
 #include "common/slots.h"
 #include "common/dispatch.glsl"
 #include "solvers/mgpcg/multigrid.glsl"
+#include "solvers/common/poisson_neighbours.glsl"
 
 layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // the fine level
 
@@ -28,13 +29,13 @@ float restrict_scale() {
     return 4.0 / float(1 << (coarsened.x + coarsened.y + coarsened.z));
 }
 
-// The diagonal of the coarse Poisson operator at cc: in-level neighbours that are not SOLID.
+// The diagonal of the coarse Poisson operator at cc: in-level neighbours that are not SOLID
+// (poisson.glsl's diag, over the coarse level; that file's stencil reads the fine cell types,
+// which this pass does not bind).
 float coarse_diag(ivec3 cc) {
-    const ivec3 nbs[6] = ivec3[6](ivec3(-1, 0, 0), ivec3(1, 0, 0), ivec3(0, -1, 0), ivec3(0, 1, 0),
-                                  ivec3(0, 0, -1), ivec3(0, 0, 1));
     float diag = 0.0;
     for (int n = 0; n < 6; ++n) {
-        ivec3 q = cc + nbs[n];
+        ivec3 q = cc + kPoissonNeighbours[n];
         if (any(lessThan(q, ivec3(0))) || any(greaterThanEqual(q, u_coarse_dims.xyz))) continue;
         if (coarse_type[coarse_index(q)] != PF_CELL_SOLID) diag += 1.0;
     }
