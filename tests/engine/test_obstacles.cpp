@@ -142,8 +142,22 @@ pf_obstacle box(double x, double y, double z, double hx, double hy, double hz) {
 // left and right of the sphere below its equator, and checks that none of it is ever inside
 // (were the sphere ignored, the column would fall straight through it).
 struct Parted {
-    double left = 0, right = 0;
+    size_t left = 0, right = 0, count = 0;  // particles left and right of it, below its equator; all
+    double left_fraction() const { return count ? double(left) / double(count) : 0.0; }
+    double right_fraction() const { return count ? double(right) / double(count) : 0.0; }
 };
+// The particles that have passed a sphere at x = z = 0.4 m of equator y = 0.45 m on either side
+// (more than 0.1 m from its axis in x, below the equator): how a poured column parted.
+Parted parted_below_equator(const ParticleState& p) {
+    Parted parted;
+    parted.count = p.count();
+    for (size_t i = 0; i < p.count(); ++i) {
+        if (p.pos[i * 3 + 1] > 0.45f) continue;
+        parted.left += p.pos[i * 3] < 0.4f - 0.1f;
+        parted.right += p.pos[i * 3] > 0.4f + 0.1f;
+    }
+    return parted;
+}
 Parted pour_on_a_sphere(const pf_sim_desc& d) {
     const pf_obstacle ball = sphere(0.4, 0.45, 0.4, 0.15);
     pf_sim* raw = nullptr;
@@ -157,14 +171,7 @@ Parted pour_on_a_sphere(const pf_sim_desc& d) {
         EXPECT_EQ(pf_step(sim.get(), kFrame), PF_OK);
         if (f % 9 == 8) EXPECT_EQ(inside_count(read_all(sim.get()), {ball}), 0u) << "frame " << f;
     }
-    const ParticleState p = read_all(sim.get());
-    size_t left = 0, right = 0;
-    for (size_t i = 0; i < p.count(); ++i) {
-        if (p.pos[i * 3 + 1] > 0.45f) continue;
-        left += p.pos[i * 3] < 0.4f - 0.1f;
-        right += p.pos[i * 3] > 0.4f + 0.1f;
-    }
-    return {double(left) / double(p.count()), double(right) / double(p.count())};
+    return parted_below_equator(read_all(sim.get()));
 }
 
 // The liquid parts and flows down both sides. With separation a fifth of it is on each side
@@ -174,10 +181,10 @@ Parted pour_on_a_sphere(const pf_sim_desc& d) {
 TEST_P(Obstacles, LiquidPouredOnASphereFlowsAroundIt) {
     const Parted parted = pour_on_a_sphere(desc(16, 24, 16));
     const double least = GetParam().separation ? 0.2 : 0.1;
-    EXPECT_GT(parted.left, least) << "left of the sphere, below its equator";
-    EXPECT_GT(parted.right, least) << "right of the sphere, below its equator";
-    RecordProperty("left_fraction", std::to_string(parted.left));
-    RecordProperty("right_fraction", std::to_string(parted.right));
+    EXPECT_GT(parted.left_fraction(), least) << "left of the sphere, below its equator";
+    EXPECT_GT(parted.right_fraction(), least) << "right of the sphere, below its equator";
+    RecordProperty("left_fraction", std::to_string(parted.left_fraction()));
+    RecordProperty("right_fraction", std::to_string(parted.right_fraction()));
 }
 
 class ObstacleSeparation : public GpuTest {};
@@ -192,12 +199,12 @@ TEST_F(ObstacleSeparation, SeparationLetsPouredLiquidLeaveTheSphere) {
     const Parted clinging = pour_on_a_sphere(d);
     d.params.separation = 1;
     const Parted separating = pour_on_a_sphere(d);
-    RecordProperty("default_left", std::to_string(clinging.left));
-    RecordProperty("default_right", std::to_string(clinging.right));
-    RecordProperty("separation_left", std::to_string(separating.left));
-    RecordProperty("separation_right", std::to_string(separating.right));
-    EXPECT_GT(separating.left, clinging.left + 0.05);
-    EXPECT_GT(separating.right, clinging.right + 0.05);
+    RecordProperty("default_left", std::to_string(clinging.left_fraction()));
+    RecordProperty("default_right", std::to_string(clinging.right_fraction()));
+    RecordProperty("separation_left", std::to_string(separating.left_fraction()));
+    RecordProperty("separation_right", std::to_string(separating.right_fraction()));
+    EXPECT_GT(separating.left_fraction(), clinging.left_fraction() + 0.05);
+    EXPECT_GT(separating.right_fraction(), clinging.right_fraction() + 0.05);
 }
 
 // Liquid sloshing for 1.5 s around a tilted box standing on the floor, a tilted capsule and a
@@ -561,19 +568,13 @@ TEST_P(SdfFormats, LiquidPouredOnAnSdfSphereFlowsAroundIt) {
         deepest = std::min(deepest, worst);
     }
     EXPECT_GT(deepest, -tolerance) << "deepest particle inside the true sphere, m";
-    const ParticleState p = read_all(sim.get());
-    size_t left = 0, right = 0;
-    for (size_t i = 0; i < p.count(); ++i) {
-        if (p.pos[i * 3 + 1] > 0.45f) continue;
-        left += p.pos[i * 3] < 0.4f - 0.1f;
-        right += p.pos[i * 3] > 0.4f + 0.1f;
-    }
-    const size_t least = separation ? p.count() / 5 : p.count() / 10;
-    EXPECT_GT(left, least);
-    EXPECT_GT(right, least);
+    const Parted parted = parted_below_equator(read_all(sim.get()));
+    const size_t least = separation ? parted.count / 5 : parted.count / 10;
+    EXPECT_GT(parted.left, least);
+    EXPECT_GT(parted.right, least);
     RecordProperty("deepest_inside_m", std::to_string(deepest));
-    RecordProperty("left_fraction", std::to_string(double(left) / p.count()));
-    RecordProperty("right_fraction", std::to_string(double(right) / p.count()));
+    RecordProperty("left_fraction", std::to_string(parted.left_fraction()));
+    RecordProperty("right_fraction", std::to_string(parted.right_fraction()));
     glDeleteTextures(1, &tex);
 }
 

@@ -291,9 +291,9 @@ TEST_P(SolverLadder, MgpcgCoarsensFlatAndThinGrids) {
         const Problem pb = bubbly_tank(n, 31, 0.0);
         const Solved mg = solve_with(PF_PRESSURE_SOLVER_MGPCG, pb, 1e-4f, 300);
         const Solved pcg = solve_with(PF_PRESSURE_SOLVER_PCG, pb, 1e-4f, 300);
-        ASSERT_EQ(mg.p.size(), pb.rhs.size()) << n.x << "x" << n.y << "x" << n.z;
-        EXPECT_LE(relative_residual(pb, mg.p, false), 1.5e-4) << n.x << "x" << n.y << "x" << n.z;
         const std::string name = std::to_string(n.x) + "x" + std::to_string(n.y) + "x" + std::to_string(n.z);
+        ASSERT_EQ(mg.p.size(), pb.rhs.size()) << name;
+        EXPECT_LE(relative_residual(pb, mg.p, false), 1.5e-4) << name;
         RecordProperty("mgpcg_" + name, int(mg.iterations));
         RecordProperty("pcg_" + name, int(pcg.iterations));
         EXPECT_LE(mg.iterations, 12u) << name;
