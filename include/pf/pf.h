@@ -12,7 +12,8 @@
  * as the caller compiled it, set by the header-inline pf_default_*() (through pf_init_*()). New
  * fields are only ever appended, so the library reads the first struct_size bytes a caller
  * compiled against an older header passes and takes the defaults for the rest, and writes no
- * more than struct_size bytes of an output struct (struct_size 0 on output: this header's size).
+ * more than struct_size bytes of an output struct (struct_size 0 on output: the struct's first
+ * published size, so set it to sizeof to receive the fields appended since, e.g. pf_stats.liquid_volume).
  * pf_sim_desc.header_version, set to PF_VERSION by pf_default_sim_desc(), lets pf_create refuse a
  * header of another major.minor version than the library's.
  *
@@ -382,6 +383,18 @@ typedef struct pf_stats {
     float energy_drift;               /**< (kinetic + potential) / (the same at its reference) - 1; the reference
                                            is the first step measured after particles are added or cleared, a
                                            pf_push or pf_set_params (inputs of energy) */
+    float interior_density;           /**< mean particle count of the interior FLUID cells (every face neighbour
+                                           FLUID, SOLID or a domain wall) / fill_particles_per_cell, a metrics
+                                           figure: 1 at rest density, above 1 where the liquid is compressed;
+                                           0 when no cell is interior */
+    float liquid_volume;              /**< the liquid's volume at that density, m^3: the particles' rest volume
+                                           (particle_count * cell_size^3 / fill_particles_per_cell) /
+                                           interior_density (the rest volume when no cell is interior). Unlike
+                                           particle_volume it does not count the cell-to-cell spread of particle
+                                           counts (sampling noise of a disordered liquid) as lost volume
+                                           (docs/design.md §4.11) */
+    float liquid_volume_drift;        /**< liquid_volume / (liquid_volume at the first measured step) - 1, same
+                                           reference as fluid_cell_drift */
 } pf_stats;
 
 /** One entry of the per-pass statistics list (pf_get_pass_stats). The list is built at run
@@ -477,8 +490,8 @@ PF_API pf_result pf_clear_particles(pf_sim* sim);
 /** Advance by frame_dt seconds (0 < frame_dt <= 1) in CFL-limited substeps. */
 PF_API pf_result pf_step(pf_sim* sim, float frame_dt);
 
-/** Current step parameters: out->struct_size bytes are written (0: this header's size), and
- *  out->struct_size is set to the bytes written. */
+/** Current step parameters: out->struct_size bytes are written (0: the first layout, 80 bytes;
+ *  pf_default_sim_params() sets sizeof), and out->struct_size is set to the bytes written. */
 PF_API pf_result pf_get_params(const pf_sim* sim, pf_sim_params* out);
 /** Replace the step parameters; validated as in pf_create, nothing changes on error. */
 PF_API pf_result pf_set_params(pf_sim* sim, const pf_sim_params* params);
@@ -497,7 +510,8 @@ PF_API pf_result pf_get_gl_buffers(const pf_sim* sim, pf_gl_buffers* out);
 /** @addtogroup pf_stats
  *  @{ */
 /** Counters and per-pass GPU timings (no stall: timings are from the newest finished step).
- *  out->struct_size bytes are written (0: this header's size); out->struct_size is set to them. */
+ *  out->struct_size bytes are written (0: the first layout, 240 bytes, which ends before
+ *  liquid_volume; set it to sizeof(pf_stats)); out->struct_size is set to them. */
 PF_API pf_result pf_get_stats(const pf_sim* sim, pf_stats* out);
 /** Clear the sticky PF_FLAG_* bits. */
 PF_API pf_result pf_clear_flags(pf_sim* sim);

@@ -302,6 +302,9 @@ class Stats(_Struct):
         ("solver_residual", ctypes.c_float),
         ("potential_energy", ctypes.c_float),
         ("energy_drift", ctypes.c_float),
+        ("interior_density", ctypes.c_float),
+        ("liquid_volume", ctypes.c_float),
+        ("liquid_volume_drift", ctypes.c_float),
     ]
 
 

@@ -306,6 +306,7 @@ class Simulation:
     def stats(self):
         """pf_get_stats (no stall: GPU figures lag a few steps)."""
         out = t.Stats()
+        out.struct_size = ctypes.sizeof(out)  # 0 would mean the first layout, without the newer fields
         self._call("pf_get_stats", ctypes.byref(out))
         return out
 

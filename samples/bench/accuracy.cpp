@@ -191,17 +191,50 @@ double angular_momentum_y(const Particles& p) {
     return l;
 }
 
-// Volume of the cells the particles fill, each cell counting min(count / 8, 1) of itself.
-double particle_volume(const Particles& p, glm::uvec3 n, double dx) {
+// Particles per cell (8 per cell at rest: the lattice fill).
+std::vector<uint32_t> cell_counts(const Particles& p, glm::uvec3 n, double dx) {
     std::vector<uint32_t> count(size_t(n.x) * n.y * n.z, 0);
     for (size_t i = 0; i < p.count(); ++i) {
         glm::ivec3 c;
         for (int a = 0; a < 3; ++a) c[a] = std::clamp(int(std::floor(p.pos[i * 3 + a] / dx)), 0, int(n[a]) - 1);
         ++count[size_t(c.x) + n.x * (size_t(c.y) + n.y * size_t(c.z))];
     }
+    return count;
+}
+
+// Volume of the cells the particles fill, each cell counting min(count / 8, 1) of itself
+// (pf_stats.particle_volume).
+double particle_volume(const Particles& p, glm::uvec3 n, double dx) {
     double v = 0;
-    for (uint32_t c : count) v += std::min(double(c) / 8.0, 1.0);
+    for (uint32_t c : cell_counts(p, n, dx)) v += std::min(double(c) / 8.0, 1.0);
     return v * dx * dx * dx;
+}
+
+// Mass over density (pf_stats.liquid_volume): the particles' rest volume over their mean count
+// in interior cells (every face neighbour holds particles or is a wall), rest 8.
+double liquid_volume(const Particles& p, glm::uvec3 n, double dx) {
+    const std::vector<uint32_t> count = cell_counts(p, n, dx);
+    auto at = [&](glm::ivec3 c) { return count[size_t(c.x) + n.x * (size_t(c.y) + n.y * size_t(c.z))]; };
+    double sum = 0;
+    size_t interior = 0;
+    for (int z = 0; z < int(n.z); ++z)
+        for (int y = 0; y < int(n.y); ++y)
+            for (int x = 0; x < int(n.x); ++x) {
+                const glm::ivec3 c{x, y, z};
+                if (at(c) == 0) continue;
+                bool inner = true;
+                for (int a = 0; a < 3; ++a)
+                    for (int s : {-1, 1}) {
+                        glm::ivec3 q = c;
+                        q[a] += s;
+                        if (q[a] >= 0 && q[a] < int(n[a]) && at(q) == 0) inner = false;
+                    }
+                if (!inner) continue;
+                sum += at(c);
+                ++interior;
+            }
+    const double rest_volume = double(p.count()) / 8.0 * dx * dx * dx;
+    return interior ? rest_volume / (sum / double(interior) / 8.0) : rest_volume;
 }
 
 std::vector<Case> make_cases(uint32_t n) {
@@ -307,6 +340,7 @@ std::vector<Case> make_cases(uint32_t n) {
         };
         c.measure = [g](const Particles& a, const Particles& b, double dx, Run& r) {
             r.metrics["volume_drift_pct"] = 100.0 * (particle_volume(b, g, dx) / particle_volume(a, g, dx) - 1.0);
+            r.metrics["liquid_volume_drift_pct"] = 100.0 * (liquid_volume(b, g, dx) / liquid_volume(a, g, dx) - 1.0);
         };
         cases.push_back(c);
     }

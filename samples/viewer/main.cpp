@@ -832,6 +832,7 @@ bool Viewer::frame(uint64_t frame_index) {
         step_wall_ms_ = pfs::now_ms() - s0;
         step_once_ = false;
     }
+    stats_.struct_size = sizeof stats_;  // this header's layout (0 would be the first one)
     pf_get_stats(sim_.get(), &stats_);
     pfs::get_pass_list(sim_.get(), passes_);
     record_step();
@@ -1271,6 +1272,12 @@ void Viewer::ui_accuracy() {
         ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1), "converged");
     tooltip("per step: the most iterations and the largest final residual of its substeps");
     ImGui::Text("%s, %s", pfs::transfer_name(p.transfer), pfs::advection_name(p.advection));
+    // The metrics of pf_stats (docs/design.md §4.11): what the step left, a few steps late.
+    ImGui::Text("divergence %.2e (max %.2e) 1/s", double(s.divergence_l2), double(s.divergence_max));
+    ImGui::Text("liquid volume %+.2f%%, density %.3f", 100.0 * double(s.liquid_volume_drift), double(s.interior_density));
+    tooltip("mass over density: the particles' rest volume over their mean count in interior cells, against "
+            "the first measured step; density is that mean over the rest count (1 at rest)");
+    ImGui::Text("energy %+.2f%% (kinetic %.3g J)", 100.0 * double(s.energy_drift), double(s.kinetic_energy));
     ImGui::TextWrapped("flags: %s", pfs::flag_names(s.flags).c_str());
     if (s.flags && ImGui::SmallButton("clear flags")) pf_clear_flags(sim_.get());
 }

@@ -154,7 +154,8 @@
 #define PF_STATUS_PARTICLE_VOLUME 10   /* dx^3 sum over cells of min(count / rest count, 1), m^3 */
 #define PF_STATUS_POTENTIAL_ENERGY 11  /* m sum -g . (x - origin) over the particles, J */
 #define PF_STATUS_PARTICLE_COUNT 12    /* live particles at the step's end (uint) */
-#define PF_STATUS_WORDS 13
+#define PF_STATUS_INTERIOR_DENSITY 13 /* mean count / rest over interior FLUID cells (0: none) */
+#define PF_STATUS_WORDS 14
 
 /* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */
 #define PF_GPU_FLAG_P2G_OVERFLOW 1u

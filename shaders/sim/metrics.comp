@@ -4,7 +4,10 @@
 // workgroup writes two partial sums, added in a fixed order by metrics_finish.comp (no float
 // atomics, so the same state always gives the same bits):
 //   partials[2g]     = (sum div^2, max |div|, FLUID cells, sum min(count / rest, 1))
-//   partials[2g + 1] = (sum |v|^2, sum -g . (x - origin), 0, 0)
+//   partials[2g + 1] = (sum |v|^2, sum -g . (x - origin), sum count / rest over interior
+//                       FLUID cells, interior FLUID cells)
+// An interior cell is FLUID with every face neighbour FLUID, SOLID or a domain wall: its
+// count is not thinned by a free surface, so their mean is the liquid's density.
 // div is the discrete divergence of the face velocities over a FLUID cell, in 1/s: after the
 // velocity update (extrapolation only writes faces between two AIR cells, G2P and advection
 // only read faces), so it is what the pressure solve of the step's last substep left.
@@ -18,12 +21,12 @@ layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_typ
 layout(std430, binding = PF_SLOT_METRICS_PARTIALS) writeonly buffer Partials { vec4 partials[]; };
 
 shared vec4 s_grid[PF_WORKGROUP_SIZE];
-shared vec2 s_energy[PF_WORKGROUP_SIZE];  // (|v|^2, height along -g)
+shared vec4 s_particles[PF_WORKGROUP_SIZE];  // (|v|^2, height along -g, interior density, interior cells)
 
 void main() {
     uint id = flat_id();
     vec4 grid = vec4(0.0);  // (div^2, |div|, fluid, volume fraction)
-    vec2 energy = vec2(0.0);  // (|v|^2, -g . (x - origin))
+    vec4 particles = vec4(0.0);  // (|v|^2, -g . (x - origin), count / rest if interior, interior)
     if (id < uint(sim.grid.w) && cell_type[id] == PF_CELL_FLUID) {
         int c = int(id);
         ivec3 ijk = ivec3(c % sim.grid.x, (c / sim.grid.x) % sim.grid.y, c / (sim.grid.x * sim.grid.y));
@@ -34,27 +37,34 @@ void main() {
             div += face_vel[face_index(axis, hi)] - face_vel[face_index(axis, ijk)];
         }
         div /= sim.dx;
-        grid = vec4(div * div, abs(div), 1.0, min(float(cell_count[c]) / sim.rest_particles, 1.0));
+        float density = float(cell_count[c]) / sim.rest_particles;
+        grid = vec4(div * div, abs(div), 1.0, min(density, 1.0));
+        bool interior = true;
+        for (int n = 0; n < 6; ++n) {
+            ivec3 nb = ijk + kNeighbours[n];
+            if (cell_inside(nb) && cell_type[cell_index(nb)] == PF_CELL_AIR) interior = false;
+        }
+        if (interior) particles.zw = vec2(density, 1.0);
     }
     if (id < sim.particle_count)
-        energy = vec2(dot(vel[id].xyz, vel[id].xyz), -dot(sim.gravity.xyz, pos[id].xyz - sim.origin.xyz));
+        particles.xy = vec2(dot(vel[id].xyz, vel[id].xyz), -dot(sim.gravity.xyz, pos[id].xyz - sim.origin.xyz));
 
     // The workgroup's sums (the max in .y) as a fixed binary tree, as in solvers/common/reduce.glsl.
     uint lid = gl_LocalInvocationIndex;
     s_grid[lid] = grid;
-    s_energy[lid] = energy;
+    s_particles[lid] = particles;
     barrier();
     for (uint stride = uint(PF_WORKGROUP_SIZE) / 2u; stride > 0u; stride >>= 1u) {
         if (lid < stride) {
             vec4 a = s_grid[lid], b = s_grid[lid + stride];
             s_grid[lid] = vec4(a.x + b.x, max(a.y, b.y), a.z + b.z, a.w + b.w);
-            s_energy[lid] += s_energy[lid + stride];
+            s_particles[lid] += s_particles[lid + stride];
         }
         barrier();
     }
     if (lid == 0u) {
         uint g = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
         partials[2u * g] = s_grid[0];
-        partials[2u * g + 1u] = vec4(s_energy[0], 0.0, 0.0);
+        partials[2u * g + 1u] = s_particles[0];
     }
 }

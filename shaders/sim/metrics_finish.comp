@@ -12,22 +12,31 @@ layout(location = PF_LOC_METRICS_GROUPS) uniform uint u_groups;
 shared vec4 s_sum[PF_WORKGROUP_SIZE];   // (div^2, max |div|, volume fraction, |v|^2)
 shared uint s_fluid[PF_WORKGROUP_SIZE];
 shared float s_height[PF_WORKGROUP_SIZE];  // sum of -g . (x - origin)
+shared float s_interior[PF_WORKGROUP_SIZE];  // sum of count / rest over interior cells
+shared uint s_interior_cells[PF_WORKGROUP_SIZE];
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
     vec4 sum = vec4(0.0);
     uint fluid = 0u;
     float height = 0.0;
+    float interior = 0.0;
+    uint interior_cells = 0u;
     for (uint g = lid; g < u_groups; g += uint(PF_WORKGROUP_SIZE)) {
         vec4 grid = partials[2u * g];
         sum += vec4(grid.x, 0.0, grid.w, partials[2u * g + 1u].x);
         sum.y = max(sum.y, grid.y);
         fluid += uint(grid.z);
-        height += partials[2u * g + 1u].y;
+        vec4 particles = partials[2u * g + 1u];
+        height += particles.y;
+        interior += particles.z;
+        interior_cells += uint(particles.w);
     }
     s_sum[lid] = sum;
     s_fluid[lid] = fluid;
     s_height[lid] = height;
+    s_interior[lid] = interior;
+    s_interior_cells[lid] = interior_cells;
     barrier();
     for (uint stride = uint(PF_WORKGROUP_SIZE) / 2u; stride > 0u; stride >>= 1u) {
         if (lid < stride) {
@@ -35,6 +44,8 @@ void main() {
             s_sum[lid] = vec4(a.x + b.x, max(a.y, b.y), a.z + b.z, a.w + b.w);
             s_fluid[lid] += s_fluid[lid + stride];
             s_height[lid] += s_height[lid + stride];
+            s_interior[lid] += s_interior[lid + stride];
+            s_interior_cells[lid] += s_interior_cells[lid + stride];
         }
         barrier();
     }
@@ -50,4 +61,6 @@ void main() {
     status[PF_STATUS_PARTICLE_VOLUME] = floatBitsToUint(cell_volume * total.z);
     status[PF_STATUS_POTENTIAL_ENERGY] = floatBitsToUint(particle_mass * s_height[0]);
     status[PF_STATUS_PARTICLE_COUNT] = sim.particle_count;
+    uint inner = s_interior_cells[0];
+    status[PF_STATUS_INTERIOR_DENSITY] = floatBitsToUint(inner > 0u ? s_interior[0] / float(inner) : 0.0);
 }

@@ -670,6 +670,11 @@ void Simulation::read_status_slot(int s) const {
         const uint32_t live = words[PF_STATUS_PARTICLE_COUNT];
         m.potential_energy = float(double(height_energy) - double(live) * lowest_potential_per_particle());
         m.fluid_cells = words[PF_STATUS_FLUID_CELLS];
+        std::memcpy(&m.interior_density, &words[PF_STATUS_INTERIOR_DENSITY], sizeof(float));
+        // Mass over density: the particles' volume at rest density, divided by the density they
+        // hold where no free surface thins the count (docs/design.md §4.11).
+        const double rest_volume = double(live) / desc_.fill_particles_per_cell * std::pow(double(desc_.cell_size), 3);
+        m.liquid_volume = float(m.interior_density > 0.0f ? rest_volume / m.interior_density : rest_volume);
         metrics_ = m;
         readback_count_ = live;
         // The drifts' reference: the first step measured since the particles last changed.
@@ -1104,6 +1109,10 @@ void Simulation::stats(pf_stats& out) const {
     out.fluid_cells = metrics_.fluid_cells;
     out.particle_volume = metrics_.particle_volume;
     out.potential_energy = metrics_.potential_energy;
+    out.interior_density = metrics_.interior_density;
+    out.liquid_volume = metrics_.liquid_volume;
+    if (metrics_first_set_ && metrics_first_.liquid_volume > 0.0f)
+        out.liquid_volume_drift = float(double(metrics_.liquid_volume) / metrics_first_.liquid_volume - 1.0);
     if (energy_first_set_ && energy_first_ > 0.0)
         out.energy_drift = float((double(metrics_.kinetic_energy) + metrics_.potential_energy) / energy_first_ - 1.0);
     if (metrics_first_set_ && metrics_first_.fluid_cells > 0)

@@ -297,6 +297,8 @@ private:
     struct Metrics {
         float divergence_l2 = 0, divergence_max = 0, kinetic_energy = 0, particle_volume = 0;
         float potential_energy = 0;  // from the domain's lowest corner along g, J
+        float interior_density = 0;  // mean count / rest over interior FLUID cells (0: none)
+        float liquid_volume = 0;     // the particles' rest volume / interior_density, m^3
         uint32_t fluid_cells = 0;
     };
     mutable Metrics metrics_{};

@@ -148,8 +148,19 @@ TEST_F(Abi, OlderStatsGetOnlyTheirBytes) {
     EXPECT_EQ(written, kOld);
     EXPECT_EQ(capacity, 1u << 16);  // RenderTest's max_particles
     for (size_t i = kOld; i < buf.size(); ++i) ASSERT_EQ(buf[i], 0xFF) << "byte " << i << " written beyond struct_size";
-    // Zero (a zero-initialised pf_stats): this header's whole struct.
+    // Zero (a zero-initialised pf_stats, which may be an older header's): the first layout, the
+    // struct as it was when struct_size was introduced (it ended before liquid_volume), and not a
+    // byte more: the library cannot know how large a zeroed struct is.
+    constexpr uint32_t kFirst = offsetof(pf_stats, liquid_volume);
+    std::vector<uint8_t> zeroed(sizeof(pf_stats) + 64, 0xFF);
+    std::memset(zeroed.data(), 0, 4);
+    ASSERT_EQ(pf_get_stats(sim_.get(), reinterpret_cast<pf_stats*>(zeroed.data())), PF_OK);
+    std::memcpy(&written, zeroed.data(), 4);
+    EXPECT_EQ(written, kFirst);
+    for (size_t i = kFirst; i < zeroed.size(); ++i) ASSERT_EQ(zeroed[i], 0xFF) << "byte " << i << " written beyond the first layout";
+    // struct_size = sizeof: this header's whole struct.
     pf_stats st{};
+    st.struct_size = sizeof st;
     ASSERT_EQ(pf_get_stats(sim_.get(), &st), PF_OK);
     EXPECT_EQ(st.struct_size, uint32_t(sizeof(pf_stats)));
     EXPECT_EQ(st.max_particles, capacity);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <glad/gl.h>
+
 #include "support/sim_fixture.h"
 
 namespace pf::test {
@@ -183,6 +185,86 @@ TEST_F(Volume, DamBreakAtHalfSecondFramesLosesLittleVolume) {
     RecordProperty("volume_change_10s_cap8", std::to_string(cap8));
     EXPECT_LT(std::abs(change), 0.05);
     EXPECT_LT(cap8, change - 0.03);
+}
+
+// The issue's own dam break (issue 6): a 48 x 24 x 8 tank of 5 cm cells, a 0.8 x 0.9 x 0.4 m
+// column, the default configuration, run 10 s. Its volume is the liquid volume, mass over
+// density (liquid_volume_of, pf_stats.liquid_volume): the capped count sum of particle_volume
+// also reads the cell-to-cell spread of counts in a disordered liquid as loss (measured at the
+// end of the 1/60 run: interior cells hold 7.98 particles on average, rest 8, with a standard
+// deviation of 0.71, which costs the capped sum 2.6%; docs/design.md §4.5).
+struct DamBreakRun {
+    double liquid_end = 0, liquid_worst = 0;  // drift of the liquid volume: at 10 s, largest |drift| sampled
+    double particle_end = 0;                  // drift of the capped count sum at 10 s (reported)
+    double gpu_liquid_end = 0;                // pf_stats.liquid_volume_drift of the last step
+};
+DamBreakRun issue_dam_break(float frame_dt, float volume_correction) {
+    pf_sim_desc d = test_desc(48, 24, 8, 0.05f);
+    d.params = pf_default_sim_params();
+    d.params.volume_correction = volume_correction;
+    d.max_particles = 1u << 16;
+    DamBreakRun out;
+    pf_sim* raw = nullptr;
+    EXPECT_EQ(pf_create(&d, &raw), PF_OK) << last_log();
+    SimPtr sim(raw);
+    if (!sim) return out;
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.8f, 0.9f, 0.4f};
+    EXPECT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    const std::vector<uint32_t> count0 = cell_counts_of(read_all(sim.get()), d);
+    const double liquid0 = liquid_volume_of(count0, d), particle0 = particle_volume_of(count0, d);
+    const int frames = int(std::lround(10.0 / frame_dt)), every = std::max(1, int(std::lround(0.25 / frame_dt)));
+    for (int f = 1; f <= frames; ++f) {
+        EXPECT_EQ(pf_step(sim.get(), frame_dt), PF_OK);
+        if (f % every != 0 && f != frames) continue;
+        const std::vector<uint32_t> count = cell_counts_of(read_all(sim.get()), d);
+        const double liquid = liquid_volume_of(count, d) / liquid0 - 1.0;
+        if (std::abs(liquid) > std::abs(out.liquid_worst)) out.liquid_worst = liquid;
+        if (f == frames) {
+            out.liquid_end = liquid;
+            out.particle_end = particle_volume_of(count, d) / particle0 - 1.0;
+        }
+    }
+    glFinish();  // the last step's readback fence has passed (pf_get_stats never waits)
+    pf_stats st{};
+    st.struct_size = sizeof st;
+    EXPECT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+    out.gpu_liquid_end = st.liquid_volume_drift;
+    return out;
+}
+
+void record(const char* prefix, const DamBreakRun& r) {
+    const std::string p(prefix);
+    ::testing::Test::RecordProperty(p + "liquid_volume_change_10s", std::to_string(r.liquid_end));
+    ::testing::Test::RecordProperty(p + "liquid_volume_change_worst", std::to_string(r.liquid_worst));
+    ::testing::Test::RecordProperty(p + "gpu_liquid_volume_drift_10s", std::to_string(r.gpu_liquid_end));
+    ::testing::Test::RecordProperty(p + "particle_volume_change_10s", std::to_string(r.particle_end));
+}
+
+// At frame dt 1/60 the issue asks for 2% after 10 s. Measured on llvmpipe: +0.2% at 10 s,
+// between -0.6% and +1.4% at every quarter second; the capped count sum ends at -2.6%. Asserted:
+// 2% at the end and at every sample. The GPU's own figure (from the last substep's P2G counts)
+// within the same 2%. About 35 s on llvmpipe.
+TEST_F(Volume, IssueDamBreakKeepsItsLiquidVolumeAtSixtyFramesASecond) {
+    const DamBreakRun r = issue_dam_break(1.0f / 60.0f, pf_default_sim_params().volume_correction);
+    record("", r);
+    EXPECT_LT(std::abs(r.liquid_end), 0.02);
+    EXPECT_LT(std::abs(r.liquid_worst), 0.02);
+    EXPECT_LT(std::abs(r.gpu_liquid_end), 0.02);
+}
+
+// At frame dt 0.5 s (16 substeps of 1/32 s, fewer than CFL wants) the issue asks for 5% after
+// 10 s. Measured on llvmpipe: -0.4% at 10 s (-4.8% after the first frame, whose impact
+// compresses the column; -8.6% in the capped count sum at 10 s). The control without the
+// correction ends at -42% (interior cells hold 13.8 particles, rest 8): the measure sees
+// compression. Asserted: 5% at the end with the default, more than 20% lost without.
+TEST_F(Volume, IssueDamBreakKeepsItsLiquidVolumeAtHalfSecondFrames) {
+    const DamBreakRun on = issue_dam_break(0.5f, pf_default_sim_params().volume_correction);
+    const DamBreakRun off = issue_dam_break(0.5f, 0.0f);
+    record("", on);
+    record("off_", off);
+    EXPECT_LT(std::abs(on.liquid_end), 0.05);
+    EXPECT_LT(std::abs(on.gpu_liquid_end), 0.05);
+    EXPECT_LT(off.liquid_end, -0.20);
 }
 
 }  // namespace

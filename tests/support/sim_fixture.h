@@ -70,6 +70,36 @@ inline double particle_volume_of(const std::vector<uint32_t>& count, const pf_si
     return cells * double(d.cell_size) * d.cell_size * d.cell_size;
 }
 
+// Liquid volume (pf_stats.liquid_volume, without obstacles): the particles' rest volume
+// (count * dx^3 / fill_particles_per_cell) over their mean density in interior cells, those
+// holding a particle whose face neighbours all hold one or are domain walls. The rest volume
+// when no cell is interior.
+inline double liquid_volume_of(const std::vector<uint32_t>& count, const pf_sim_desc& d) {
+    const int n[3] = {int(d.grid_size[0]), int(d.grid_size[1]), int(d.grid_size[2])};
+    auto at = [&](int x, int y, int z) { return count[size_t(x) + size_t(n[0]) * (size_t(y) + size_t(n[1]) * size_t(z))]; };
+    double particles = 0, interior_sum = 0;
+    size_t interior = 0;
+    for (int z = 0; z < n[2]; ++z)
+        for (int y = 0; y < n[1]; ++y)
+            for (int x = 0; x < n[0]; ++x) {
+                const uint32_t c = at(x, y, z);
+                particles += c;
+                if (c == 0) continue;
+                const int nb[6][3] = {{x - 1, y, z}, {x + 1, y, z}, {x, y - 1, z}, {x, y + 1, z}, {x, y, z - 1}, {x, y, z + 1}};
+                bool inner = true;
+                for (const auto& q : nb) {
+                    const bool wall = q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= n[0] || q[1] >= n[1] || q[2] >= n[2];
+                    if (!wall && at(q[0], q[1], q[2]) == 0) inner = false;
+                }
+                if (!inner) continue;
+                interior_sum += c;
+                ++interior;
+            }
+    const double rest = double(d.fill_particles_per_cell);
+    const double rest_volume = particles / rest * double(d.cell_size) * d.cell_size * d.cell_size;
+    return interior ? rest_volume / (interior_sum / double(interior) / rest) : rest_volume;
+}
+
 // Depth of a liquid at rest: the mean over occupied cell columns (x, z) of the highest particle's
 // height above the grid's floor, in metres.
 inline double surface_depth_of(const ParticleState& p, const pf_sim_desc& d) {
