@@ -201,7 +201,7 @@ typedef struct pf_sim_params {
                                        taken literally, like flip_ratio); default 0.1 */
     pf_p2g p2g;                   /**< particle-to-grid scheme; default (0) PF_P2G_FIXED_POINT */
     float volume_loss_limit;      /**< fraction of its rest volume (particle count / fill_particles_per_cell
-                                       cells) pf_stats.particle_volume may lose before PF_FLAG_VOLUME_LOST is
+                                       cells) pf_stats.liquid_volume may lose before PF_FLAG_VOLUME_LOST is
                                        raised and logged, (0, 1]; 0 = default 0.1 */
     float energy_gain_limit;      /**< fraction by which kinetic + potential energy may rise above its reference
                                        (pf_stats.energy_drift; at least every particle lifted one cell) before
@@ -319,9 +319,10 @@ enum {
     PF_FLAG_SPEED_CLAMPED = 1u << 2,   /**< a particle exceeded max_speed and was clamped */
     PF_FLAG_SUBSTEPS_CLAMPED = 1u << 3, /**< CFL wanted more than max_substeps: particles moved more than
                                              cfl cells per substep (the step is less accurate, docs/stability.md) */
-    PF_FLAG_VOLUME_LOST = 1u << 4,     /**< particle_volume fell more than params.volume_loss_limit below the
-                                            particles' rest volume (count / fill_particles_per_cell cells): the
-                                            liquid has compressed that much */
+    PF_FLAG_VOLUME_LOST = 1u << 4,     /**< liquid_volume (mass over density) fell more than
+                                            params.volume_loss_limit below the particles' rest volume
+                                            (count / fill_particles_per_cell cells): the liquid has
+                                            compressed that much */
     PF_FLAG_ENERGY_GAINED = 1u << 5,   /**< kinetic + potential energy rose more than params.energy_gain_limit
                                             above its reference (pf_stats.energy_drift) with no input: the
                                             step is numerically unsound (e.g. an unconverged pressure solve) */

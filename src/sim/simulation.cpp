@@ -682,13 +682,13 @@ void Simulation::read_status_slot(int s) const {
             metrics_first_ = m;
             metrics_first_set_ = true;
         }
-        // Lost volume against the rest volume of the particles (count / fill density): a
-        // cell counts at most its rest count, so only compression lowers the ratio, and
-        // unlike the drift it needs no earlier measurement (a 1 s frame compresses a dam
-        // break before the first one).
-        const double rest = double(live) / desc_.fill_particles_per_cell * std::pow(double(desc_.cell_size), 3);
-        if (fence_step_[s] > flags_cleared_at_step_ && rest > 0.0 &&
-            double(m.particle_volume) / rest - 1.0 < -double(desc_.params.volume_loss_limit))
+        // Lost volume: the liquid volume (mass over density) against the particles' rest
+        // volume. Only compression of the bulk lowers it (the capped count sum of
+        // particle_volume also falls where counts merely spread, and a liquid at rest density
+        // raised the flag), and unlike the drift it needs no earlier measurement (a 1 s frame
+        // compresses a dam break before the first one).
+        if (fence_step_[s] > flags_cleared_at_step_ && rest_volume > 0.0 &&
+            double(m.liquid_volume) / rest_volume - 1.0 < -double(desc_.params.volume_loss_limit))
             raise_flags(PF_FLAG_VOLUME_LOST);
         // Mechanical energy against its reference: without input (gravity does no net work
         // on a closed system; the projection and the walls only remove energy) it can only
@@ -813,7 +813,7 @@ void Simulation::raise_flags(uint32_t bits) const {
                                 "typically an unconverged pressure solve; a converged solver (PF_QUALITY_BALANCED) "
                                 "or smaller frame times fix it (PF_FLAG_ENERGY_GAINED)"},
         {PF_FLAG_VOLUME_LOST, "the liquid lost more than params.volume_loss_limit of its rest volume to compression "
-                              "(pf_stats.particle_volume); consider a converged pressure solver, volume "
+                              "(pf_stats.liquid_volume); consider a converged pressure solver, volume "
                               "correction or smaller frame times (PF_FLAG_VOLUME_LOST)"},
         {PF_FLAG_EMITTERS_FULL, "the emitters wanted more particles than desc.max_particles leaves room for: "
                                 "emission stopped at the capacity (PF_FLAG_EMITTERS_FULL)"},

@@ -84,7 +84,9 @@ Soundness Stability::check(pf_sim* sim, const pf_sim_desc& d, size_t expected_co
     EXPECT_EQ(s.outside, 0u) << when << ": particles outside the domain";
     EXPECT_EQ(s.nonfinite_grid, 0u) << when << ": non-finite face velocities or pressures";
     s.energy = energy_of(p, d);
-    s.volume = particle_volume_of(cell_counts_of(p, d), d);
+    const std::vector<uint32_t> count = cell_counts_of(p, d);
+    s.volume = particle_volume_of(count, d);
+    s.liquid = liquid_volume_of(count, d);
     s.max_speed = max_speed_of(p);
     return s;
 }

@@ -37,6 +37,7 @@ struct Soundness {
     size_t count = 0;                // live particles
     Energy energy;
     double volume = 0;               // particle-density volume (particle_volume_of), m^3
+    double liquid = 0;               // liquid volume, mass over density (liquid_volume_of), m^3
     double max_speed = 0;            // m/s
 };
 

@@ -92,8 +92,9 @@ TEST_P(Column, RandomlyFilledColumnSettlesOrIsReported) {
         // still shuffle (the max, in the table). Its level within one cell of the start.
         EXPECT_LT(late_rms, 0.02 * unit);
         EXPECT_LT(std::abs(level_change), 1.0 * d.cell_size);
-        // (PF_FLAG_VOLUME_LOST is raised at the start, rightly: the random fill puts ~14% of the
-        // particles beyond their cells' rest count, which the correction then evens out.)
+        // (The random fill puts ~14% of the particles beyond their cells' rest count, which the
+        // correction then evens out; PF_FLAG_VOLUME_LOST measures mass over density, and the
+        // fill's mean density is the rest density.)
         EXPECT_EQ(st.flags & PF_FLAG_ENERGY_GAINED, 0u) << "a sound run raised PF_FLAG_ENERGY_GAINED";
     } else {
         EXPECT_NE(st.flags & PF_FLAG_ENERGY_GAINED, 0u) << "the 40-sweep column went unreported";
