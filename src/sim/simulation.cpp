@@ -45,12 +45,7 @@ Simulation::Simulation(const pf_sim_desc& desc) : desc_(desc), log_(desc.logger)
     desc_.features = 0;  // init() turns them on
 }
 
-Simulation::~Simulation() {
-    if (!gl_.DeleteSync) return;  // GL never loaded: nothing was created
-    for (GLsync& f : fences_) {
-        if (f) gl_.DeleteSync(f);
-    }
-}
+Simulation::~Simulation() = default;  // the readback ring deletes its fences
 
 pf_result Simulation::create(const pf_sim_desc& desc, std::unique_ptr<Simulation>& out) {
     std::unique_ptr<Simulation> sim(new Simulation(desc));
@@ -121,7 +116,7 @@ pf_result Simulation::init() {
     uniforms_ = gl::Buffer(gl_, sizeof(SimUniforms), GL_DYNAMIC_DRAW, "sim_uniforms");
     count_record_ = gl::Buffer(gl_, PF_COUNT_WORDS * 4, GL_DYNAMIC_COPY, "count_record");
     status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY, "status");
-    for (auto& b : readback_) b = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_STREAM_READ, "status_readback");
+    readback_.init(gl_, PF_STATUS_WORDS * 4, "status_readback");
     runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM);
     requests_ = std::make_unique<ParticleReadback>(gl_);
     const uint64_t metric_items = std::max<uint64_t>(uint64_t(cells_), desc_.max_particles);
@@ -541,10 +536,9 @@ pf_result Simulation::step(float frame_dt) {
     // Status readback ring: copy now; the next step takes this one in (waiting only if the GPU
     // has not finished it by then), pf_get_stats whenever its fence has passed.
     const int slot = int(steps_ % kReadbackSlots);
-    if (fences_[slot]) read_status_slot(slot);  // taken in already (kStatusLag); never dropped
-    runner_->copy(status_, readback_[slot], PF_STATUS_WORDS * 4);
-    fences_[slot] = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-    gl_.Flush();  // the fence must reach the GPU, or polls that do not flush would never see it pass
+    if (readback_.pending(slot)) read_status_slot(slot);  // taken in already (kStatusLag); never dropped
+    runner_->copy(status_, readback_.buffer(slot), PF_STATUS_WORDS * 4);
+    readback_.fence(slot);
     // Each readback carries the flags raised since the previous one (the sticky union is the
     // host's flags_), so a readback tells which step overflowed (the P2G range widening).
     const uint32_t no_flags = 0;
@@ -604,16 +598,14 @@ pf_result Simulation::run_g2p_and_advect_for_test(float dt) {
 
 void Simulation::poll_status() const {
     for (int s = 0; s < kReadbackSlots; ++s) {
-        if (!fences_[s]) continue;
-        const GLenum r = gl_.ClientWaitSync(fences_[s], GL_SYNC_FLUSH_COMMANDS_BIT, 0);
-        if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED) read_status_slot(s);
+        if (readback_.arrived(s)) read_status_slot(s);
     }
 }
 
 void Simulation::take_lagged_status(int64_t step) {
     const int64_t measured = step - int64_t(kStatusLag);
     const int s = int(((measured % kReadbackSlots) + kReadbackSlots) % kReadbackSlots);
-    if (fences_[s] && int64_t(fence_step_[s]) == measured) read_status_slot(s);  // the GPU is that far behind: wait
+    if (readback_.pending(s) && int64_t(fence_step_[s]) == measured) read_status_slot(s);  // the GPU is that far behind: wait
     const StepStatus& got = received_[s];
     if (!got.valid || got.step != measured) return;  // no such step (the first ones)
     cfl_speed_ = got.max_speed;
@@ -632,13 +624,10 @@ void Simulation::take_lagged_status(int64_t step) {
 }
 
 void Simulation::read_status_slot(int s) const {
-    gl_.DeleteSync(fences_[s]);
-    fences_[s] = nullptr;
     uint32_t words[PF_STATUS_WORDS] = {};
     {
-        // glGetBufferSubData waits for the copy if it has not run yet.
         gl::StateGuard guard(gl_, gl_state_);
-        readback_[s].download(0, sizeof(words), words);
+        readback_.take(s, words, sizeof(words));  // waits for the copy if it has not run yet
     }
     StepStatus& got = received_[s];
     got.valid = 1;

@@ -10,6 +10,7 @@
 #include "gl/buffer.h"
 #include "gl/gl.h"
 #include "gl/program.h"
+#include "gl/readback_ring.h"
 #include "gl/state_guard.h"
 #include "pf/pf.h"
 #include "sim/effects/domain_motion/domain_motion.h"
@@ -256,8 +257,7 @@ private:
     // status (flags, max speed) read back a few steps late, behind fences
     static constexpr int kReadbackSlots = 3;
     gl::Buffer status_;
-    gl::Buffer readback_[kReadbackSlots];
-    mutable GLsync fences_[kReadbackSlots] = {};
+    gl::ReadbackRing<kReadbackSlots> readback_;  // status_ copies, a few steps late
     mutable uint64_t fence_step_[kReadbackSlots] = {};
     mutable uint64_t status_step_ = 0;     // step of the newest readback
     // What the step logic needs from each readback, kept per slot until the step that takes it

@@ -140,7 +140,7 @@ void Simulation::drain_status() {
     // Every status readback in flight is waited for and taken in, so the snapshot's CPU state
     // holds all the GPU has reported up to now, and the original continues from exactly that.
     for (int k = 0; k < kReadbackSlots; ++k) {
-        if (fences_[k]) read_status_slot(k);  // glGetBufferSubData waits for the copy
+        if (readback_.pending(k)) read_status_slot(k);  // waits for the copy
     }
 }
 
@@ -296,10 +296,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     }
 
     // Apply. Status readbacks in flight belong to the discarded timeline: dropped.
-    for (GLsync& f : fences_) {
-        if (f) gl_.DeleteSync(f);
-        f = nullptr;
-    }
+    readback_.drop_all();
     desc_.params = params;
     desc_.features = features;
     gpu_count_ = (features & kGpuCountFeatures) != 0;

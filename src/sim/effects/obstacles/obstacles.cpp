@@ -62,12 +62,7 @@ pf_result check_sdf_texture(const gl::Api& gl, const Log& log, const char* fn, G
     }
 }
 
-ObstaclesEffect::~ObstaclesEffect() {
-    if (!gl_) return;
-    for (GLsync& f : fences_) {
-        if (f) gl_->DeleteSync(f);
-    }
-}
+ObstaclesEffect::~ObstaclesEffect() = default;
 
 pf_result ObstaclesEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
     for (gl::ProgramId id : {gl::ProgramId::obstacle_cells, gl::ProgramId::obstacle_faces, gl::ProgramId::obstacle_push,
@@ -78,7 +73,7 @@ pf_result ObstaclesEffect::init(const gl::Api& gl, PassRunner& runner, const Log
     gl_ = &gl;
     records_ = gl::Buffer(gl, size_t(PF_MAX_OBSTACLES) * PF_OBSTACLE_VEC4S * 16, GL_DYNAMIC_DRAW, "obstacles");
     forces_ = gl::Buffer(gl, kForceBytes, GL_DYNAMIC_COPY, "obstacle_forces");
-    for (gl::Buffer& b : readback_) b = gl::Buffer(gl, kForceBytes, GL_STREAM_READ, "obstacle_forces_readback");
+    readback_.init(gl, kForceBytes, "obstacle_forces_readback");
     sdf_sampler_ = gl::Object(gl, gl::ObjectKind::sampler);
     gl.SamplerParameteri(sdf_sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     gl.SamplerParameteri(sdf_sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -173,20 +168,17 @@ void ObstaclesEffect::end_step(PassRunner& runner, uint64_t step) {
     const int slot = int(step % kReadbackSlots);
     // A slot still in flight is read (waiting if the GPU is kReadbackSlots steps behind), never
     // dropped: on a GPU that runs far behind, a dropped slot would mean no result ever arrives.
-    if (fences_[slot]) read_slot(slot);
-    runner.copy(forces_, readback_[slot], size_t(uploaded_) * PF_OBSTACLE_FORCE_WORDS * 4);
-    fences_[slot] = gl_->FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-    gl_->Flush();  // the fence must reach the GPU, or a poll would never see it pass
+    if (readback_.pending(slot)) read_slot(slot);
+    runner.copy(forces_, readback_.buffer(slot), size_t(uploaded_) * PF_OBSTACLE_FORCE_WORDS * 4);
+    readback_.fence(slot);
     fence_step_[slot] = step;
     fence_ids_[slot] = uploaded_ids_;
 }
 
 void ObstaclesEffect::read_slot(int s) const {
-    gl_->DeleteSync(fences_[s]);
-    fences_[s] = nullptr;
     const std::vector<uint32_t>& ids = fence_ids_[s];
     std::vector<float> words(ids.size() * PF_OBSTACLE_FORCE_WORDS);
-    if (!words.empty()) readback_[s].download(0, words.size() * 4, words.data());  // waits for the copy
+    readback_.take(s, words.data(), words.size() * 4);  // waits for the copy
     for (size_t i = 0; i < ids.size(); ++i) {
         pf_obstacle_force f{};
         std::memcpy(f.force, &words[i * PF_OBSTACLE_FORCE_WORDS], 12);
@@ -204,9 +196,7 @@ void ObstaclesEffect::read_slot(int s) const {
 void ObstaclesEffect::poll() const {
     if (!gl_) return;
     for (int s = 0; s < kReadbackSlots; ++s) {
-        if (!fences_[s]) continue;
-        const GLenum r = gl_->ClientWaitSync(fences_[s], GL_SYNC_FLUSH_COMMANDS_BIT, 0);
-        if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED) read_slot(s);
+        if (readback_.arrived(s)) read_slot(s);
     }
     // Removed obstacles' results go.
     const std::vector<uint32_t>& live = list_.ids();

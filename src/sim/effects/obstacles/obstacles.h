@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "gl/objects.h"
+#include "gl/readback_ring.h"
 #include "sim/effects/effect.h"
 #include "sim/effects/object_list.h"
 
@@ -67,8 +68,7 @@ private:
     gl::Object sdf_sampler_;   // linear, clamped: how the engine's SDF textures are sampled
     Textures sdf_textures_;    // the SDF obstacles' textures on their units (obstacle_sdf.glsl)
     gl::Buffer forces_;        // PF_MAX_OBSTACLES force records of the current step
-    gl::Buffer readback_[kReadbackSlots];
-    mutable GLsync fences_[kReadbackSlots] = {};
+    gl::ReadbackRing<kReadbackSlots> readback_;  // forces_ copies, a few steps late
     uint64_t fence_step_[kReadbackSlots] = {};
     std::vector<uint32_t> fence_ids_[kReadbackSlots];  // the ids of the records each readback holds
     std::vector<uint32_t> uploaded_ids_;                // ids of the records on the GPU, in order
