@@ -164,7 +164,8 @@ typedef enum pf_advection {
 /** Parameters that may change between steps (pf_set_params). Start from pf_default_sim_params().
  *  Fields marked "0 = default" take their default when zero; with struct_size set, gravity,
  *  flip_ratio, separation, pressure_solver, transfer, advection, p2g and volume_correction take
- *  zero literally (with struct_size 0, every zero field takes its default). */
+ *  zero literally, and a zero pressure_iterations or pressure_tolerance is refused as invalid
+ *  (with struct_size 0, every zero field takes its default). */
 typedef struct pf_sim_params {
     uint32_t struct_size;         /**< sizeof(pf_sim_params) as the caller compiled it (pf_default_sim_params()
                                        sets it); 0: a zero-initialised struct, in which every field (each
@@ -174,7 +175,8 @@ typedef struct pf_sim_params {
     float flip_ratio;             /**< 0 = pure PIC, 1 = pure FLIP; default 0.95 (ignored with
                                        PF_TRANSFER_APIC) */
     uint32_t pressure_iterations; /**< most solver iterations per substep (a Jacobi sweep, a red-black pair,
-                                       a CG step), 1..10000; 0 = default 40 */
+                                       a CG step), 1..10000; default 40 (0 is invalid once struct_size is
+                                       set) */
     float jacobi_omega;           /**< Jacobi relaxation weight in (0, 1]; 0 = default 1 (the original) */
     float cfl;                    /**< max cells a particle may cross per substep, (0, 16]; 0 = default 1 */
     uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; 0 = default 16 */
@@ -190,7 +192,8 @@ typedef struct pf_sim_params {
                                        separation the stationary ones project every update onto p >= 0 and
                                        the CG family runs active-set rounds (docs/design.md §4.6) */
     float pressure_tolerance;     /**< relative residual |b - A p| / |b| at which a solve stops, (0, 1);
-                                       0 = default 1e-3. Checked on the GPU, never waited for */
+                                       default 1e-3 (0 is invalid once struct_size is set). Checked on the
+                                       GPU, never waited for */
     float sor_omega;              /**< over-relaxation of PF_PRESSURE_SOLVER_RBGS in (0, 2); 0 = default 1.6 */
     pf_transfer transfer;         /**< grid-particle transfer; default (0) PF_TRANSFER_PIC_FLIP */
     pf_advection advection;       /**< particle integrator; default (0) PF_ADVECTION_EULER */
@@ -217,7 +220,9 @@ typedef enum pf_quality {
     PF_QUALITY_BALANCED = 1,     /**< the defaults (pf_default_sim_params): MGPCG to a relative residual of
                                       1e-3, separation off, PIC/FLIP 0.95, explicit Euler, volume
                                       correction 0.1 */
-    PF_QUALITY_ACCURATE = 2,     /**< MGPCG to 1e-5 with separation (active-set rounds), APIC */
+    PF_QUALITY_ACCURATE = 2,     /**< MGPCG to 1e-5 with separation (active-set rounds), APIC; in violent
+                                      flows the 4 active-set rounds end near a 2% residual, so its
+                                      velocities are less divergence-free than balanced's (docs/accuracy.md) */
     PF_QUALITY_COUNT = 3,
     PF_QUALITY_FORCE32 = 0x7fffffff
 } pf_quality;
@@ -287,7 +292,8 @@ typedef enum pf_pass {
     PF_PASS_GRID_FORCES = 2,      /**< normalise face velocities, apply gravity (and force fields) */
     PF_PASS_CLASSIFY = 3,         /**< mark cells fluid / air (and solid: obstacles, PF_FEATURE_OBSTACLES) */
     PF_PASS_PRESSURE_SETUP = 4,   /**< divergence right-hand side */
-    PF_PASS_PRESSURE_SOLVE = 5,   /**< Jacobi iterations */
+    PF_PASS_PRESSURE_SOLVE = 5,   /**< the pressure solver's passes (every solver's, pf_get_pass_stats
+                                       names them) */
     PF_PASS_VELOCITY_UPDATE = 6,  /**< subtract pressure gradient, free-slip walls; also holds the
                                        once-per-step accuracy metrics (pass list entry "metrics"),
                                        which measure what the projection left */

@@ -62,7 +62,8 @@ pf_sim_params preset(pf_quality q) {
     return p;
 }
 
-// One knob at a time from the fast preset, then the presets themselves.
+// One knob at a time from the fast preset, then the presets themselves, then combinations of
+// knobs from the balanced preset (the default) for the Pareto front.
 std::vector<Config> sweep_configs() {
     const pf_sim_params base = preset(PF_QUALITY_FAST);
     std::vector<Config> out;
@@ -108,6 +109,21 @@ std::vector<Config> sweep_configs() {
     for (auto [q, name] : {std::pair{PF_QUALITY_FAST, "preset_fast"}, std::pair{PF_QUALITY_BALANCED, "preset_balanced"},
                            std::pair{PF_QUALITY_ACCURATE, "preset_accurate"}})
         out.push_back({name, "preset", preset(q)});
+    auto combine = [&](const std::string& name, const std::function<void(pf_sim_params&)>& edit) {
+        pf_sim_params p = preset(PF_QUALITY_BALANCED);
+        edit(p);
+        out.push_back({name, "combination", p});
+    };
+    combine("balanced_apic", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_APIC; });
+    combine("balanced_apic_rk2", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_APIC, p.advection = PF_ADVECTION_RK2; });
+    combine("mgpcg_1e-02_apic", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_APIC, p.pressure_tolerance = 1e-2f; });
+    combine("mgpcg_1e-04_apic", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_APIC, p.pressure_tolerance = 1e-4f; });
+    combine("balanced_cfl_0.5", [](pf_sim_params& p) { p.cfl = 0.5f, p.max_substeps = 32; });
+    combine("balanced_gather", [](pf_sim_params& p) { p.p2g = PF_P2G_SORTED_GATHER; });
+    combine("fast_apic", [](pf_sim_params& p) {
+        p = preset(PF_QUALITY_FAST);
+        p.transfer = PF_TRANSFER_APIC;
+    });
     return out;
 }
 

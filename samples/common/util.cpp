@@ -151,7 +151,9 @@ float parse_float(const std::string& text, const char* option, float lo, float h
 }
 
 namespace {
-const char* const kSolverNames[PF_PRESSURE_SOLVER_COUNT] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
+const char* const kSolverNames[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
+static_assert(sizeof(kSolverNames) / sizeof(kSolverNames[0]) == PF_PRESSURE_SOLVER_COUNT,
+              "a command-line name for every pf_pressure_solver");
 }  // namespace
 
 pf_quality parse_preset(const std::string& name, const char* what) {

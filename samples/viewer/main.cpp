@@ -284,9 +284,8 @@ struct ParamPreset {
     pf_sim_params (*make)(const pfs::Scene& scene);
 };
 
-/// The presets of the simulation panel's combo, in order. When the library gains quality
-/// presets, each level becomes one more entry here (its make() calling the library's
-/// defaults-for-quality function); the panel needs no other change.
+/// The presets of the simulation panel's combo, in order: the scene's own values, the library's
+/// defaults, and the library's quality presets (pf_quality_params over the scene's values).
 const std::vector<ParamPreset>& param_presets() {
     static const std::vector<ParamPreset> presets = {
         {"scene file", "the scene file's values (with the command line's --solver/--tolerance/--transfer/--advection)",
@@ -315,8 +314,9 @@ const std::vector<ParamPreset>& param_presets() {
 }
 
 /// Display names of the enums the combos select (pfs::*_name gives the command-line names).
-const char* const kSolverLabels[PF_PRESSURE_SOLVER_COUNT] = {"Jacobi", "red-black GS / SOR", "CG", "PCG (Jacobi)",
+const char* const kSolverLabels[] = {"Jacobi", "red-black GS / SOR", "CG", "PCG (Jacobi)",
                                                              "MGPCG (multigrid)"};
+static_assert(sizeof(kSolverLabels) / sizeof(kSolverLabels[0]) == PF_PRESSURE_SOLVER_COUNT, "a label for every solver");
 const char* const kTransferLabels[PF_TRANSFER_COUNT] = {"PIC/FLIP", "APIC"};
 const char* const kAdvectionLabels[PF_ADVECTION_COUNT] = {"Euler", "RK2 (midpoint)", "RK3 (Ralston)"};
 

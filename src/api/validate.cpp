@@ -19,15 +19,17 @@ std::string str(double v) {
 }
 }  // namespace
 
+// The solver's stopping rule, pressure_iterations and pressure_tolerance, is not resolved: with
+// struct_size set a 0 there is a request validation refuses (issue 6: an iteration cap of 0 or a
+// tolerance of 0 is invalid, not "the default"); a zero-initialised struct has its defaults from
+// read_input already.
 pf_sim_params resolve_params(const pf_sim_params& in) {
     const pf_sim_params d = pf_default_sim_params();
     pf_sim_params p = in;
-    if (p.pressure_iterations == 0) p.pressure_iterations = d.pressure_iterations;
     if (p.jacobi_omega == 0.0f) p.jacobi_omega = d.jacobi_omega;
     if (p.cfl == 0.0f) p.cfl = d.cfl;
     if (p.max_substeps == 0) p.max_substeps = d.max_substeps;
     if (p.extrapolation_layers == 0) p.extrapolation_layers = d.extrapolation_layers;
-    if (p.pressure_tolerance == 0.0f) p.pressure_tolerance = d.pressure_tolerance;
     if (p.sor_omega == 0.0f) p.sor_omega = d.sor_omega;
     if (p.volume_loss_limit == 0.0f) p.volume_loss_limit = d.volume_loss_limit;
     if (p.energy_gain_limit == 0.0f) p.energy_gain_limit = d.energy_gain_limit;

@@ -355,12 +355,18 @@ INSTANTIATE_TEST_SUITE_P(MirrorExact, MirrorExactSolvers,
 INSTANTIATE_TEST_SUITE_P(Mgpcg, SolverLadder, ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_MGPCG, "mgpcg"}),
                          [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
 
-INSTANTIATE_TEST_SUITE_P(AllSolvers, Solvers,
-                         ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_JACOBI, "jacobi"},
-                                           SolverCase{PF_PRESSURE_SOLVER_RBGS, "rbgs"},
-                                           SolverCase{PF_PRESSURE_SOLVER_CG, "cg"},
-                                           SolverCase{PF_PRESSURE_SOLVER_PCG, "pcg"},
-                                           SolverCase{PF_PRESSURE_SOLVER_MGPCG, "mgpcg"}),
+// Every pf_pressure_solver value, 0 .. PF_PRESSURE_SOLVER_COUNT - 1: a new solver is run against
+// the reference as soon as its enum value exists (the static_assert asks for its test name).
+constexpr const char* kSolverTestNames[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
+static_assert(sizeof(kSolverTestNames) / sizeof(kSolverTestNames[0]) == PF_PRESSURE_SOLVER_COUNT,
+              "name the new pressure solver's tests here");
+std::vector<SolverCase> every_solver() {
+    std::vector<SolverCase> cases;
+    for (int s = 0; s < PF_PRESSURE_SOLVER_COUNT; ++s) cases.push_back(SolverCase{pf_pressure_solver(s), kSolverTestNames[s]});
+    return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllSolvers, Solvers, ::testing::ValuesIn(every_solver()),
                          [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
 
 }  // namespace
