@@ -120,12 +120,12 @@ pf_sim_params resolve(pf_sim_params p) {
         std::memcpy(&p, words, sizeof p);
     }
     p.struct_size = uint32_t(sizeof p);
-    if (p.pressure_iterations == 0) p.pressure_iterations = d.pressure_iterations;
+    // pressure_iterations and pressure_tolerance are not "0 = default" once struct_size is set:
+    // a zero there is invalid (params_valid refuses it).
     if (p.jacobi_omega == 0.0f) p.jacobi_omega = d.jacobi_omega;
     if (p.cfl == 0.0f) p.cfl = d.cfl;
     if (p.max_substeps == 0) p.max_substeps = d.max_substeps;
     if (p.extrapolation_layers == 0) p.extrapolation_layers = d.extrapolation_layers;
-    if (p.pressure_tolerance == 0.0f) p.pressure_tolerance = d.pressure_tolerance;
     if (p.sor_omega == 0.0f) p.sor_omega = d.sor_omega;
     if (p.volume_loss_limit == 0.0f) p.volume_loss_limit = d.volume_loss_limit;
     if (p.energy_gain_limit == 0.0f) p.energy_gain_limit = d.energy_gain_limit;
