@@ -184,7 +184,9 @@ typedef struct pf_sim_params {
     uint32_t separation;          /**< 1: pressure is kept >= 0 (Gerszewski & Bargteil 2013), so liquid can
                                        pull away from walls and the lid instead of clinging to them by
                                        suction; 0: pressure of either sign (the original). 0 or 1; default 0
-                                       (the fast and accurate presets set 1) */
+                                       (the fast and accurate presets set 1). A closed domain full of liquid
+                                       (no AIR cell) has nothing to separate into and a pressure defined only
+                                       up to a constant: there no sign is imposed (docs/design.md §4.6) */
     pf_pressure_solver pressure_solver; /**< which solver; default PF_PRESSURE_SOLVER_MGPCG (0, which is
                                        PF_PRESSURE_SOLVER_JACOBI once struct_size is set, takes the default
                                        only in a zero-initialised struct). Every solver
