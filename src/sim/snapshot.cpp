@@ -22,7 +22,8 @@ namespace pf {
 namespace {
 
 constexpr char kMagic[8] = {'p', 'f', 'l', 'i', 'p', 's', 'n', 'p'};
-constexpr uint32_t kFormat = 1;
+// 2: the status words gained PF_STATUS_INTERIOR_DENSITY (14 words, 2026-11-24).
+constexpr uint32_t kFormat = 2;
 
 struct Header {
     char magic[8];
