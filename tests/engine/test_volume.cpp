@@ -221,13 +221,14 @@ DamBreakRun issue_dam_break(float frame_dt, float volume_correction) {
     for (int f = 1; f <= frames; ++f) {
         EXPECT_EQ(pf_step(sim.get(), frame_dt), PF_OK);
         if (f % every != 0 && f != frames) continue;
-        const std::vector<uint32_t> count = cell_counts_of(read_all(sim.get()), d);
+        const ParticleState now = read_all(sim.get());
+        const std::vector<uint32_t> count = cell_counts_of(now, d);
         const double liquid = liquid_volume_of(count, d) / liquid0 - 1.0;
         if (std::abs(liquid) > std::abs(out.liquid_worst)) out.liquid_worst = liquid;
         if (f == frames) {
             out.liquid_end = liquid;
             out.particle_end = particle_volume_of(count, d) / particle0 - 1.0;
-            const ParticleState end = read_all(sim.get());
+            const ParticleState& end = now;
             const double rest_depth = double(end.count()) / d.fill_particles_per_cell * std::pow(double(d.cell_size), 3) /
                                       (double(d.grid_size[0]) * d.grid_size[2] * d.cell_size * d.cell_size);
             out.surface_end = (surface_depth_of(end, d) + d.cell_size / 4) / rest_depth - 1.0;

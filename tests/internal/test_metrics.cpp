@@ -80,28 +80,11 @@ TEST_F(Metrics, GpuReductionsMatchTheCpu) {
     EXPECT_NEAR(st.divergence_max, max_div, 1e-5 * max_div);
     EXPECT_NEAR(st.kinetic_energy, 0.5 * mass * v2, 1e-5 * 0.5 * mass * v2);
     EXPECT_NEAR(st.particle_volume, particle_volume_of(count, d), 1e-6 * particle_volume_of(count, d));
-    // Interior cells: FLUID, no AIR face neighbour (walls count as closed).
-    double interior_sum = 0;
-    uint32_t interior = 0;
-    for (int z = 0; z < 14; ++z) {
-        for (int y = 0; y < 12; ++y) {
-            for (int x = 0; x < 16; ++x) {
-                const size_t c = size_t(x + 16 * (y + 12 * z));
-                if (type[c] != PF_CELL_FLUID) continue;
-                bool inner = true;
-                const int nb[6][3] = {{x - 1, y, z}, {x + 1, y, z}, {x, y - 1, z}, {x, y + 1, z}, {x, y, z - 1}, {x, y, z + 1}};
-                for (const auto& n : nb) {
-                    if (n[0] < 0 || n[1] < 0 || n[2] < 0 || n[0] >= 16 || n[1] >= 12 || n[2] >= 14) continue;
-                    if (type[size_t(n[0] + 16 * (n[1] + 12 * n[2]))] == PF_CELL_AIR) inner = false;
-                }
-                if (!inner) continue;
-                interior_sum += double(count[c]) / d.fill_particles_per_cell;
-                ++interior;
-            }
-        }
-    }
-    ASSERT_GT(interior, 100u);  // the random block is 16 x 6 x 14 cells deep
-    const double interior_density = interior_sum / interior;
+    // Interior cells: holding particles, no empty face neighbour (walls count as closed); with no
+    // obstacle a cell is FLUID exactly when it holds a particle, so these are the GPU's.
+    const Interior interior = interior_of(count, d);
+    ASSERT_GT(interior.cells, 100u);  // the random block is 16 x 6 x 14 cells deep
+    const double interior_density = interior.density;
     // A random fill holds Poisson(n) particles per cell: near rest density on average, unlike
     // the capped sum of particle_volume (which reads the spread as compression).
     EXPECT_NEAR(st.interior_density, interior_density, 1e-5 * interior_density);

@@ -70,20 +70,22 @@ inline double particle_volume_of(const std::vector<uint32_t>& count, const pf_si
     return cells * double(d.cell_size) * d.cell_size * d.cell_size;
 }
 
-// Liquid volume (pf_stats.liquid_volume, without obstacles): the particles' rest volume
-// (count * dx^3 / fill_particles_per_cell) over their mean density in interior cells, those
-// holding a particle whose face neighbours all hold one or are domain walls. The rest volume
-// when no cell is interior.
-inline double liquid_volume_of(const std::vector<uint32_t>& count, const pf_sim_desc& d) {
+// The interior cells (pf_stats.interior_density, without obstacles): those holding a particle
+// whose face neighbours all hold one or are domain walls, and their mean count /
+// fill_particles_per_cell (0 when there are none).
+struct Interior {
+    size_t cells = 0;
+    double density = 0;
+};
+inline Interior interior_of(const std::vector<uint32_t>& count, const pf_sim_desc& d) {
     const int n[3] = {int(d.grid_size[0]), int(d.grid_size[1]), int(d.grid_size[2])};
     auto at = [&](int x, int y, int z) { return count[size_t(x) + size_t(n[0]) * (size_t(y) + size_t(n[1]) * size_t(z))]; };
-    double particles = 0, interior_sum = 0;
-    size_t interior = 0;
+    double sum = 0;
+    Interior out;
     for (int z = 0; z < n[2]; ++z)
         for (int y = 0; y < n[1]; ++y)
             for (int x = 0; x < n[0]; ++x) {
                 const uint32_t c = at(x, y, z);
-                particles += c;
                 if (c == 0) continue;
                 const int nb[6][3] = {{x - 1, y, z}, {x + 1, y, z}, {x, y - 1, z}, {x, y + 1, z}, {x, y, z - 1}, {x, y, z + 1}};
                 bool inner = true;
@@ -92,12 +94,22 @@ inline double liquid_volume_of(const std::vector<uint32_t>& count, const pf_sim_
                     if (!wall && at(q[0], q[1], q[2]) == 0) inner = false;
                 }
                 if (!inner) continue;
-                interior_sum += c;
-                ++interior;
+                sum += c;
+                ++out.cells;
             }
-    const double rest = double(d.fill_particles_per_cell);
-    const double rest_volume = particles / rest * double(d.cell_size) * d.cell_size * d.cell_size;
-    return interior ? rest_volume / (interior_sum / double(interior) / rest) : rest_volume;
+    if (out.cells) out.density = sum / double(out.cells) / double(d.fill_particles_per_cell);
+    return out;
+}
+
+// Liquid volume (pf_stats.liquid_volume, without obstacles): the particles' rest volume
+// (count * dx^3 / fill_particles_per_cell) over their interior density; the rest volume when no
+// cell is interior.
+inline double liquid_volume_of(const std::vector<uint32_t>& count, const pf_sim_desc& d) {
+    double particles = 0;
+    for (uint32_t c : count) particles += c;
+    const double rest_volume = particles / d.fill_particles_per_cell * double(d.cell_size) * d.cell_size * d.cell_size;
+    const Interior interior = interior_of(count, d);
+    return interior.cells ? rest_volume / interior.density : rest_volume;
 }
 
 // Depth of a liquid at rest: the mean over occupied cell columns (x, z) of the highest particle's
