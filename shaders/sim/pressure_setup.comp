@@ -14,6 +14,7 @@ layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_typ
 layout(std430, binding = PF_SLOT_CELL_COUNT) readonly buffer Count { uint cell_count[]; };
 layout(std430, binding = PF_SLOT_RHS) writeonly buffer Rhs { float rhs[]; };
 layout(std430, binding = PF_SLOT_PRESSURE) buffer Pressure { float pressure[]; };
+#include "common/volume_excess.glsl"
 
 void main() {
     int c = int(flat_id());
@@ -30,13 +31,6 @@ void main() {
         hi[axis] += 1;
         div += face_vel[face_index(axis, hi)] - face_vel[face_index(axis, ijk)];
     }
-    float excess = min(float(cell_count[c]) / sim.rest_particles - 1.0, 1.0);
-    bool surface = false;
-    for (int n = 0; n < 6; ++n) {
-        ivec3 nb = ijk + kNeighbours[n];
-        if (cell_inside(nb) && cell_type[cell_index(nb)] == PF_CELL_AIR) surface = true;
-    }
-    if (surface) excess = max(excess, 0.0);
-    float target = sim.volume_correction * excess * sim.dx / sim.dt;  // D, m/s
+    float target = sim.volume_correction * volume_excess(ijk) * sim.dx / sim.dt;  // D, m/s
     rhs[c] = -(div - target) * sim.density * sim.dx / sim.dt;
 }
