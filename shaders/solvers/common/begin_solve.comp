@@ -10,6 +10,7 @@ layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
 layout(location = PF_LOC_SOLVER_COUNT) uniform uint u_partials;
 layout(location = PF_LOC_SOLVER_TOLERANCE) uniform float u_tolerance;
 layout(location = PF_LOC_SOLVER_ITERATIONS) uniform uint u_keep_iterations;  // 1: a further round of one solve
+layout(location = PF_LOC_SOLVER_NONNEGATIVE) uniform uint u_nonnegative;
 #include "solvers/common/reduce.glsl"
 #include "solvers/common/state.glsl"
 
@@ -45,4 +46,5 @@ void main() {
     state[PF_SOLVER_CONVERGED] = 0u;
     set_state_float(PF_SOLVER_RESIDUAL, 1.0);
     set_state_float(PF_SOLVER_TOLERANCE, u_tolerance);
+    state[PF_SOLVER_NONNEGATIVE] = u_nonnegative;
 }

@@ -25,6 +25,7 @@
 #define PF_SOLVER_ROUND 16       /* uint: index of the current round (0: the first solve) */
 #define PF_SOLVER_FIRST_ROUND 17 /* uint: iterations of round 0, once it is finished */
 #define PF_SOLVER_LATER_ROUNDS 18 /* uint: most iterations of a finished later round */
+#define PF_SOLVER_NONNEGATIVE 19 /* uint: 1 when this problem asks p >= 0 (its params' separation) */
 #define PF_SOLVER_SCALARS 20     /* words before the first indirect record (a multiple of 4) */
 
 /* Indirect-dispatch record k: words PF_SOLVER_SCALARS + 4k .. +2 = workgroups (x, y, z); its
@@ -42,6 +43,7 @@
 #define PF_LOC_SOLVER_ITERATIONS 6 /* uint: iterations done since the previous convergence check */
 #define PF_LOC_SOLVER_COARSE_DIMS 7 /* ivec4: the next coarser multigrid level's size */
 #define PF_LOC_SOLVER_CG_STEP 8  /* uint: the CG scalar step a z-summing pass runs last (cg_scalar_step.glsl) */
+#define PF_LOC_SOLVER_NONNEGATIVE 9 /* uint: begin_solve's copy of the problem's separation */
 
 /* CG's scalar steps (shaders/solvers/cg/cg_scalar_step.glsl). */
 #define PF_CG_STEP_START 0u      /* after the first r and z: residual test, beta = 0 */

@@ -9,9 +9,10 @@ float rhs_mean() { return state_float(PF_SOLVER_B_MEAN); }
 bool solve_singular() { return state[PF_SOLVER_SINGULAR] != 0u; }
 bool solve_converged() { return state[PF_SOLVER_CONVERGED] != 0u; }
 
-// p >= 0 is imposed when separation is on, except in a singular system: with no AIR cell
-// there is nothing to separate into, and the pressure is only defined up to a constant.
-bool project_nonnegative() { return sim.separation != 0u && !solve_singular(); }
+// p >= 0 is imposed when the problem asks for it (the pressure with separation on; never the
+// volume correction's potential), except in a singular system: with no AIR cell there is
+// nothing to separate into, and the pressure is only defined up to a constant.
+bool project_nonnegative() { return state[PF_SOLVER_NONNEGATIVE] != 0u && !solve_singular(); }
 
 // Marks the solve converged and makes every later indirect dispatch of it empty.
 void stop_solve() {

@@ -57,7 +57,8 @@ void SolveControl::begin(PassRunner& runner, StatId stat, const PressureProblem&
                 {},
                 {Uniform::uint1(PF_LOC_SOLVER_COUNT, partials_),
                  Uniform::float1(PF_LOC_SOLVER_TOLERANCE, problem.params.pressure_tolerance),
-                 Uniform::uint1(PF_LOC_SOLVER_ITERATIONS, another_round ? 1u : 0u)}});
+                 Uniform::uint1(PF_LOC_SOLVER_ITERATIONS, another_round ? 1u : 0u),
+                 Uniform::uint1(PF_LOC_SOLVER_NONNEGATIVE, problem.params.separation ? 1u : 0u)}});
 }
 
 void SolveControl::residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct) {
