@@ -199,11 +199,14 @@ typedef struct pf_sim_params {
     float sor_omega;              /**< over-relaxation of PF_PRESSURE_SOLVER_RBGS in (0, 2); 0 = default 1.6 */
     pf_transfer transfer;         /**< grid-particle transfer; default (0) PF_TRANSFER_PIC_FLIP */
     pf_advection advection;       /**< particle integrator; default (0) PF_ADVECTION_EULER */
-    float volume_correction;      /**< particle-density volume correction in [0, 1] (docs/design.md §4.5): the
-                                       fraction of a FLUID cell's excess particle count (beyond
-                                       fill_particles_per_cell) the pressure projection spreads out per
-                                       substep, against PIC/FLIP's slow compression. 0 = off (a zero value is
-                                       taken literally, like flip_ratio); default 0.1 */
+    float volume_correction;      /**< particle-density volume correction in [0, 1] (docs/design.md §4.5): once
+                                       per pf_step (and per 1/60 s of simulated time in longer steps),
+                                       particles move out of FLUID cells holding more than
+                                       fill_particles_per_cell along the gradient of a potential solved for
+                                       the fraction volume_correction of that excess, against PIC/FLIP's slow
+                                       compression. Positions only: velocities and kinetic energy are never
+                                       touched. 0 = off (a zero value is taken literally, like flip_ratio);
+                                       default 0.5 */
     pf_p2g p2g;                   /**< particle-to-grid scheme; default (0) PF_P2G_FIXED_POINT */
     float volume_loss_limit;      /**< fraction of its rest volume (particle count / fill_particles_per_cell
                                        cells) pf_stats.liquid_volume may lose before PF_FLAG_VOLUME_LOST is
@@ -217,11 +220,11 @@ typedef struct pf_sim_params {
  *  has their cost and accuracy on an H100). Each is a complete pf_sim_params with the default
  *  gravity; change any field afterwards. */
 typedef enum pf_quality {
-    PF_QUALITY_FAST = 0,         /**< the original's scheme: 40 projected Jacobi sweeps (separation on),
-                                      otherwise balanced */
+    PF_QUALITY_FAST = 0,         /**< MGPCG to a relative residual of 1e-2, otherwise balanced (the
+                                      original's 40 Jacobi sweeps added energy to waves: docs/accuracy.md) */
     PF_QUALITY_BALANCED = 1,     /**< the defaults (pf_default_sim_params): MGPCG to a relative residual of
                                       1e-3, separation off, PIC/FLIP 0.95, explicit Euler, volume
-                                      correction 0.1 */
+                                      correction 0.5 */
     PF_QUALITY_ACCURATE = 2,     /**< MGPCG to 1e-5 with separation (active-set rounds), APIC; in violent
                                       flows the 4 active-set rounds end near a 2% residual, so its
                                       velocities are less divergence-free than balanced's (docs/accuracy.md) */

@@ -291,7 +291,7 @@ const std::vector<ParamPreset>& param_presets() {
         {"scene file", "the scene file's values (with the command line's --solver/--tolerance/--transfer/--advection)",
          [](const pfs::Scene& scene) { return scene.params; }},
         {"library defaults", "pf_default_sim_params()", [](const pfs::Scene&) { return pf_default_sim_params(); }},
-        {"fast", "PF_QUALITY_FAST: 40 Jacobi sweeps, FLIP, Euler (docs/accuracy.md)",
+        {"fast", "PF_QUALITY_FAST: MGPCG to 1e-2, FLIP, Euler (docs/accuracy.md)",
          [](const pfs::Scene& scene) {
              pf_sim_params p = scene.params;
              pfs::apply_preset(PF_QUALITY_FAST, p);

@@ -84,6 +84,11 @@
 #define PF_SLOT_SINK_STATE 7
 /* the obstacles' force sums (obstacle_forces.comp binds cell types 6, pressure 0, records 3) */
 #define PF_SLOT_OBSTACLE_FORCES 5
+/* the volume correction's displacement potential: written by its setup (which binds the
+ * pressure 0, rhs 3, counts 5, cell types 6) and read by its particle move (positions 0, cell
+ * types 6) */
+#define PF_SLOT_VOLUME_POTENTIAL_OUT 1
+#define PF_SLOT_VOLUME_POTENTIAL 3
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */

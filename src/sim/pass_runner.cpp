@@ -69,14 +69,15 @@ void PassRunner::end_step() {
 
 void PassRunner::run(const Pass& pass) {
     if (!pass.indirect.buffer && pass.invocations == 0) return;
+    const StatId stat = override_ != kNoOverride ? override_ : pass.stat;
     // Outside a step (creation, pf_clear_particles) passes run untimed and uncounted.
-    if (step_open_ && (!pair_open_ || open_stat_ != pass.stat)) {
+    if (step_open_ && (!pair_open_ || open_stat_ != stat)) {
         if (pair_open_) timers_.end_pass();
-        timers_.begin_pass(int(pass.stat));
+        timers_.begin_pass(int(stat));
         pair_open_ = true;
-        open_stat_ = pass.stat;
+        open_stat_ = stat;
     }
-    if (step_open_ && pass.stat < stats_.size()) ++stats_[pass.stat].dispatches;
+    if (step_open_ && stat < stats_.size()) ++stats_[stat].dispatches;
     const GLuint program = programs_.built(pass.program);
     const size_t pid = size_t(pass.program);
     const uint32_t missing = used_slots_[pid] & ~pass.binds.mask();
@@ -102,7 +103,7 @@ void PassRunner::run(const Pass& pass) {
     gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (command ? GL_COMMAND_BARRIER_BIT : 0));
     if (command) records_written_ = false;
     if (writes_indirect_records(pass.program)) records_written_ = true;
-    const gl::DebugGroup debug_group(gl_, pass.stat < stats_.size() ? stats_[pass.stat].debug_group.c_str() : "pflip/pass");
+    const gl::DebugGroup debug_group(gl_, stat < stats_.size() ? stats_[stat].debug_group.c_str() : "pflip/pass");
     gl_.UseProgram(program);
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, uniform_slot_, uniforms_.id());
     for (const Bind& b : pass.binds) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b.slot, b.buffer->id());

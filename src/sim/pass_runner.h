@@ -65,6 +65,21 @@ public:
     // (begin_step .. end_step), neither outside one (creation, pf_push, pf_clear_particles).
     void run(const Pass& pass);
 
+    // While alive, every pass run is counted, timed and labelled as entry `stat` instead of its
+    // own: a solver serving a second problem (the volume correction's) is accounted apart from
+    // the pressure solve.
+    class StatScope {
+    public:
+        StatScope(PassRunner& runner, StatId stat) : runner_(runner), saved_(runner.override_) { runner.override_ = stat; }
+        ~StatScope() { runner_.override_ = saved_; }
+        StatScope(const StatScope&) = delete;
+        StatScope& operator=(const StatScope&) = delete;
+
+    private:
+        PassRunner& runner_;
+        StatId saved_;
+    };
+
     uint32_t binding_errors() const { return binding_errors_; }
     // The workgroups run() dispatches for `invocations` on this GL.
     Workgroups workgroups(uint64_t invocations) const { return workgroups_for(invocations, max_groups_x_); }
@@ -94,6 +109,8 @@ private:
     bool pair_open_ = false;
     bool records_written_ = true;  // an indirect record may have changed since the last command barrier
     StatId open_stat_ = 0;
+    static constexpr StatId kNoOverride = ~StatId(0);
+    StatId override_ = kNoOverride;  // StatScope
     uint32_t binding_errors_ = 0;
 };
 

@@ -148,6 +148,8 @@ pf_result Simulation::init() {
     }
     if (pf_result res = prepare_particle_passes(desc_.params, "pf_create"); res != PF_OK) return res;
     if (pf_result res = solver_for(desc_.params, "pf_create", &solver_); res != PF_OK) return res;
+    if (std::string error = volume_correction_.init(gl_, r, uint32_t(cells_)); !error.empty())
+        return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
     if (pf_result res = set_features(requested_features_, "pf_create"); res != PF_OK) return res;
     // Pressure starts at zero (warm start of the first solve); everything else is written
     // before it is read.
@@ -384,7 +386,7 @@ void Simulation::upload_uniforms(float dt) {
     if (gpu_count_) copy_count_to_uniforms();  // the kernels compare with the GPU's live count
 }
 
-void Simulation::run_substep() {
+void Simulation::run_substep(bool correct_volume) {
     PassRunner& r = *runner_;
     const uint32_t np = particle_count_;
     const uint64_t cells = uint64_t(cells_), faces = uint64_t(faces_);
@@ -409,9 +411,11 @@ void Simulation::run_substep() {
     r.run({ProgramId::classify, stat_.classify, cells,
            {{PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_CELL_TYPE, &cell_type_}}});
     run_effects(EffectStage::after_classify);
+    if (correct_volume)
+        volume_correction_.run(r, *solver_, desc_.params, {pos_, cell_type_, cell_count_, pressure_, cells, np});
     r.run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
-           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_CELL_COUNT, &cell_count_},
-            {PF_SLOT_RHS, &rhs_}, {PF_SLOT_PRESSURE, &pressure_}}});
+           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
+            {PF_SLOT_PRESSURE, &pressure_}}});
     if (hydrostatic_start_pending_) {
         // One invocation per column along gravity's dominant axis (the kernel picks the same).
         const float* g = desc_.params.gravity;
@@ -527,7 +531,17 @@ pf_result Simulation::step(float frame_dt) {
     step_substeps_ = substeps;
     begin_effects_step(frame_dt);
     run_count_stage(EffectStage::before_substeps);
-    for (uint32_t s = 0; s < substeps; ++s) run_substep();
+    // The volume correction: in the first substep, then again whenever another
+    // VolumeCorrection::kInterval of simulated time has passed (compression grows with time,
+    // not with frames: at 60 frames a second it runs once a step).
+    const float substep_dt = frame_dt / float(substeps);
+    float since_correction = 0.0f;
+    for (uint32_t s = 0; s < substeps; ++s) {
+        const bool correct = s == 0 || since_correction >= VolumeCorrection::kInterval;
+        if (correct) since_correction = 0.0f;
+        run_substep(correct);
+        since_correction += substep_dt;
+    }
     run_count_stage(EffectStage::after_substeps);
     run_metrics();
     runner_->end_step();
@@ -570,8 +584,23 @@ void Simulation::run_one_step_for_test(float dt, Passes&& passes) {
 }
 
 pf_result Simulation::run_substep_for_test(float dt) {
-    run_one_step_for_test(dt, [&] { run_substep(); });
+    run_one_step_for_test(dt, [&] { run_substep(false); });
     return PF_OK;
+}
+
+pf_result Simulation::run_volume_correction_for_test() {
+    run_one_step_for_test(0.01f, [&] {
+        volume_correction_.run(*runner_, *solver_, desc_.params,
+                               {pos_, cell_type_, cell_count_, pressure_, uint64_t(cells_), particle_count_});
+    });
+    return PF_OK;
+}
+
+std::vector<float> Simulation::read_volume_potential() const {
+    gl::StateGuard guard(gl_, gl_state_);
+    std::vector<float> q(static_cast<size_t>(cells_), 0.0f);
+    volume_correction_.potential().download(0, q.size() * 4, q.data());
+    return q;
 }
 
 pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, const std::vector<float>& rhs,

@@ -23,6 +23,7 @@
 #include "sim/pass_runner.h"
 #include "sim/sim_uniforms.h"
 #include "sim/solvers/pressure_solver.h"
+#include "sim/volume_correction.h"
 
 namespace pf {
 
@@ -105,8 +106,13 @@ public:
     // Substeps pf_step(frame_dt) would take now (CFL estimate, design.md §5).
     uint32_t substeps_for(float frame_dt, bool* clamped = nullptr) const;
 
-    // Test access: one substep of length dt exactly (no CFL logic), and raw grid words.
+    // Test access: one substep of length dt exactly (no CFL logic, no volume correction), and
+    // raw grid words.
     pf_result run_substep_for_test(float dt);
+    // Test access: the volume correction alone, on the cell types and counts as they are (set
+    // them with write_grid_for_test); its potential is read with read_volume_potential.
+    pf_result run_volume_correction_for_test();
+    std::vector<float> read_volume_potential() const;
     // Test access: the current solver alone on a given system (cell types, right-hand side;
     // `pressure` is the warm start and receives the solution). The status buffer's solver words
     // are reset first and hold this solve's iterations and final residual afterwards.
@@ -155,7 +161,9 @@ private:
     // Test hooks: one step of length dt that runs `passes` (timed and counted like a step).
     template <typename Passes>
     void run_one_step_for_test(float dt, Passes&& passes);
-    void run_substep();
+    // One substep; with `correct_volume` it also runs the volume correction (after classify,
+    // on this substep's counts).
+    void run_substep(bool correct_volume);
     // Every effect that is on, its passes of `stage` (lowest feature bit first).
     void run_effects(EffectStage stage);
     // Start of a step: effects that are on upload what changed.
@@ -213,6 +221,7 @@ private:
     CoreStats stat_{};
     std::unique_ptr<PressureSolver> solvers_[PF_PRESSURE_SOLVER_COUNT];
     PressureSolver* solver_ = nullptr;  // the one params.pressure_solver selects
+    VolumeCorrection volume_correction_;
     // One effect per feature bit (bit i: effects_[i]); made at construction (their host lists
     // exist while off), initialised when first turned on (effects_ready_ bits).
     std::unique_ptr<Effect> effects_[kEffectCount];

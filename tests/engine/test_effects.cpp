@@ -72,10 +72,12 @@ SimPtr make_scene(Effects& t, uint32_t features) {
 }
 
 // The core step's list, in order: the core passes, the hydrostatic start and the metrics, then
-// the default solver's entries (MGPCG and its V-cycle).
+// the default solver's entries (MGPCG and its V-cycle), then the volume correction's.
 const std::vector<std::string> kCoreList = {"clear",       "p2g", "grid_forces", "classify", "pressure_setup",
                                             "velocity_update", "extrapolate", "g2p", "advect", "metrics",
-                                            "hydrostatic_start", "mgpcg", "mgpcg/precondition"};
+                                            "hydrostatic_start", "mgpcg", "mgpcg/precondition",
+                                            "volume_correction_setup", "volume_correction_solve",
+                                            "volume_correction_move"};
 
 TEST_F(Effects, EveryEffectOffListsExactlyTheCorePasses) {
     SimPtr sim = make_scene(*this, 0);

@@ -231,21 +231,47 @@ void hydrostatic_start(const Grid& grid, const std::vector<uint8_t>& type, glm::
     }
 }
 
-std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
-                                 const std::vector<double>& vel, double density, double dt,
-                                 const std::vector<uint32_t>& count, double rest, double k) {
-    std::vector<double> b = pressure_rhs(grid, type, vel, density, dt);
+std::vector<double> volume_correction_rhs(const Grid& grid, const std::vector<uint8_t>& type,
+                                          const std::vector<uint32_t>& count, double rest, double k,
+                                          bool separation, const std::vector<double>& pressure) {
+    std::vector<double> b(size_t(grid.cells()), 0.0);
     for_each_cell(grid, [&](int i, int j, int k_, int id) {
         if (type[id] != FLUID) return;
-        // e = min(count/rest - 1, 1); a cell with an AIR neighbour only corrects compression.
+        // e = min(count/rest - 1, 1); a cell with an AIR neighbour (with separation and no
+        // pressure: also a wall or SOLID neighbour) only corrects compression.
         double excess = std::min(double(count[id]) / rest - 1.0, 1.0);
+        const bool leaving = separation && pressure[id] <= 0.0;
         bool surface = false;
-        for_each_neighbour(grid, i, j, k_, [&](int n) { surface = surface || type[n] == AIR; });
+        for_each_neighbour(grid, i, j, k_, [&](int n) { surface = surface || type[n] == AIR || (leaving && type[n] == SOLID); });
+        if (leaving && (i == 0 || j == 0 || k_ == 0 || i == grid.nx - 1 || j == grid.ny - 1 || k_ == grid.nz - 1))
+            surface = true;
         if (surface) excess = std::max(excess, 0.0);
-        // Target divergence D = k·e·dx/dt (m/s): b = -(div - D)·ρ·dx/dt.
-        b[id] += k * excess * density * grid.dx * grid.dx / (dt * dt);
+        // A net outward displacement of k·e·dx removes k·e·dx³ of liquid.
+        b[id] = k * excess * grid.dx;
     });
     return b;
+}
+
+void volume_correction_move(const Grid& grid, const std::vector<uint8_t>& type, const std::vector<double>& q,
+                            Particles& particles) {
+    std::vector<double> d(size_t(grid.faces()), 0.0);
+    for (int c = 0; c < 3; ++c) {
+        const glm::ivec3 n = grid.face_dims(c);
+        for (int k = 0; k < n.z; ++k)
+            for (int j = 0; j < n.y; ++j)
+                for (int i = 0; i < n.x; ++i) {
+                    if (grid.is_wall_face(c, i, j, k)) continue;
+                    glm::ivec3 lo(i, j, k);
+                    lo[c] -= 1;
+                    const int a = grid.cell_index(lo.x, lo.y, lo.z), b = grid.cell_index(i, j, k);
+                    if (type[a] == SOLID || type[b] == SOLID) continue;
+                    const double qa = type[a] == FLUID ? q[a] : 0.0, qb = type[b] == FLUID ? q[b] : 0.0;
+                    d[grid.face_index(c, i, j, k)] = qa - qb;
+                }
+    }
+    const glm::dvec3 limit(0.5 * grid.dx);
+    for (glm::dvec3& x : particles.pos)
+        x = keep_in_domain(grid, x + glm::clamp(interpolate(grid, d, x), -limit, limit));
 }
 
 std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type,

@@ -90,11 +90,18 @@ std::vector<double> divergence(const Grid& grid, const std::vector<uint8_t>& typ
 // §4.5: b = -div·ρ·dx/dt for FLUID cells, 0 elsewhere.
 std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
                                  const std::vector<double>& vel, double density, double dt);
-// §4.5 with the volume correction: FLUID cells also get b += k·e·ρ·dx²/dt² with
-// e = min(count/rest − 1, 1), and e = max(e, 0) in cells with an AIR neighbour.
-std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
-                                 const std::vector<double>& vel, double density, double dt,
-                                 const std::vector<uint32_t>& count, double rest, double k);
+// §4.5 volume correction, right-hand side (metres): b = k·e·dx for FLUID cells with
+// e = min(count/rest − 1, 1), and e = max(e, 0) in cells with an AIR neighbour and, with
+// `separation`, in cells whose `pressure` is <= 0 beside a domain wall or a SOLID cell; 0 elsewhere.
+std::vector<double> volume_correction_rhs(const Grid& grid, const std::vector<uint8_t>& type,
+                                          const std::vector<uint32_t>& count, double rest, double k,
+                                          bool separation, const std::vector<double>& pressure);
+
+// §4.5 volume correction, particle move: the face displacement d = q_lo − q_hi (q = 0 outside
+// FLUID cells; 0 on walls and beside SOLID cells) interpolated as in §3, each component kept
+// within ±dx/2, then keep_in_domain. Velocities are left alone.
+void volume_correction_move(const Grid& grid, const std::vector<uint8_t>& type, const std::vector<double>& q,
+                            Particles& particles);
 
 // §4.6 operator: (A p)_i = Σ_{j∈N(i)} (p_i - p_j) for FLUID i, with N(i) the in-domain
 // neighbours that are not SOLID (walls and obstacles excluded: Neumann) and p_j = 0 for AIR j;

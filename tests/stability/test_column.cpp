@@ -49,12 +49,13 @@ double rms_speed_of(const ParticleState& p) {
 
 // The same column filled with uniformly random positions instead of the fill lattice: cell
 // counts scatter around the rest density (8 +- 2.8, a few cells inside even empty), so the start
-// is not an equilibrium and the pressure must even it out across 96 cells of depth. A converged
-// solve (balanced, accurate) brings it to rest without losing its level. The fast preset's 40
-// Jacobi sweeps cannot: measured on llvmpipe at 8 x 128 x 8, the level falls 1.5 m in 3 s
-// without volume correction and with it the column boils up to 31 m/s — so the library must say so
-// (PF_FLAG_ENERGY_GAINED and one warning) rather than return a silent PF_OK.
-TEST_P(Column, RandomlyFilledColumnSettlesOrIsReported) {
+// is not an equilibrium and the pressure must even it out across 96 cells of depth. Every preset
+// brings it to rest without losing its level (issue 17). Before, the fast preset's 40 Jacobi
+// sweeps could not: measured on llvmpipe at 8 x 128 x 8, the level fell 1.5 m in 3 s without
+// volume correction and with the velocity correction the column boiled up to 31 m/s; the test
+// then only asked that PF_FLAG_ENERGY_GAINED be raised. The fast preset now solves with MGPCG to
+// 1e-2 and the correction moves positions only (docs/stability.md, case 7).
+TEST_P(Column, RandomlyFilledColumnSettles) {
     const uint32_t w = column_width(), h = 16 * w;
     const pf_sim_desc d = desc(w, h, w, 0.05f);
     SimPtr sim = create(d);
@@ -67,10 +68,8 @@ TEST_P(Column, RandomlyFilledColumnSettlesOrIsReported) {
     for (uint32_t i = 0; i < n; ++i) pos.insert(pos.end(), {width * u(rng), height * u(rng), width * u(rng)});
     ASSERT_EQ(pf_add_particles(sim.get(), pos.data(), nullptr, n), PF_OK) << last_log();
     const double unit = std::sqrt(9.81 * d.cell_size);
-    const bool converged = GetParam() != PF_QUALITY_FAST;
     double late_rms = 0, late_max = 0;
-    int seconds = 0;
-    for (seconds = 1; seconds <= 10; ++seconds) {
+    for (int seconds = 1; seconds <= 10; ++seconds) {
         ASSERT_NO_FATAL_FAILURE(run(sim.get(), 1.0f / 30.0f, 30));
         const Soundness s = check(sim.get(), d, n, "t = " + std::to_string(seconds) + " s");
         if (HasFailure()) return;
@@ -78,28 +77,21 @@ TEST_P(Column, RandomlyFilledColumnSettlesOrIsReported) {
             late_rms = std::max(late_rms, rms_speed_of(read_all(sim.get())));
             late_max = std::max(late_max, s.max_speed);
         }
-        if (!converged && (settled_stats(sim.get()).flags & PF_FLAG_ENERGY_GAINED)) break;
     }
     const pf_stats st = settled_stats(sim.get());
     const double level_change = surface_depth_of(read_all(sim.get()), d) - height;
-    record("seconds_run", seconds);
     record("energy_drift", st.energy_drift);
     record("level_change_cells", level_change / d.cell_size);
-    if (converged) {
-        record("rms_speed_5_to_10s_over_sqrt_g_dx", late_rms / unit);
-        record("max_speed_5_to_10s_over_sqrt_g_dx", late_max / unit);
-        // At rest: the column as a whole (RMS) below 2% of sqrt(g dx); single surface particles
-        // still shuffle (the max, in the table). Its level within one cell of the start.
-        EXPECT_LT(late_rms, 0.02 * unit);
-        EXPECT_LT(std::abs(level_change), 1.0 * d.cell_size);
-        // (The random fill puts ~14% of the particles beyond their cells' rest count, which the
-        // correction then evens out; PF_FLAG_VOLUME_LOST measures mass over density, and the
-        // fill's mean density is the rest density.)
-        EXPECT_EQ(st.flags & PF_FLAG_ENERGY_GAINED, 0u) << "a sound run raised PF_FLAG_ENERGY_GAINED";
-    } else {
-        EXPECT_NE(st.flags & PF_FLAG_ENERGY_GAINED, 0u) << "the 40-sweep column went unreported";
-        EXPECT_EQ(log_.warnings_with("PF_FLAG_ENERGY_GAINED"), 1u);
-    }
+    record("rms_speed_5_to_10s_over_sqrt_g_dx", late_rms / unit);
+    record("max_speed_5_to_10s_over_sqrt_g_dx", late_max / unit);
+    // At rest: the column as a whole (RMS) below 2% of sqrt(g dx); single surface particles
+    // still shuffle (the max, in the table). Its level within one cell of the start.
+    EXPECT_LT(late_rms, 0.02 * unit);
+    EXPECT_LT(std::abs(level_change), 1.0 * d.cell_size);
+    // (The random fill puts ~14% of the particles beyond their cells' rest count, which the
+    // correction then evens out; PF_FLAG_VOLUME_LOST measures mass over density, and the
+    // fill's mean density is the rest density.)
+    EXPECT_EQ(st.flags & PF_FLAG_ENERGY_GAINED, 0u) << "a sound run raised PF_FLAG_ENERGY_GAINED";
 }
 
 PF_STABILITY_PRESETS(Column);

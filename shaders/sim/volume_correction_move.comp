@@ -1,0 +1,44 @@
+// Volume correction, particle move (docs/design.md §4.5): each particle is displaced by the
+// trilinear interpolation of the face displacements d = q_lo - q_hi of the potential that
+// volume_correction_setup's problem solved for (metres). Positions only: velocities are not
+// touched, so the correction never enters FLIP's velocity difference and adds no kinetic
+// energy. Walls and faces beside SOLID cells do not move (d = 0); AIR cells hold q = 0. A
+// displacement is kept within half a cell per axis, then the wall clamp of every advection
+// scheme applies.
+#include "common/sim.glsl"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+layout(std430, binding = PF_SLOT_VOLUME_POTENTIAL) readonly buffer Potential { float potential[]; };
+
+float face_displacement(int axis, ivec3 f) {
+    // A grid one cell thick gives the clamped stencil a zero-weight face outside the grid.
+    if (any(lessThan(f, ivec3(0))) || any(greaterThanEqual(f, face_dims(axis))) || face_is_wall(axis, f)) return 0.0;
+    ivec3 lo = f;
+    lo[axis] -= 1;
+    int a = cell_index(lo), b = cell_index(f);
+    uint ta = cell_type[a], tb = cell_type[b];
+    if (ta == PF_CELL_SOLID || tb == PF_CELL_SOLID) return 0.0;
+    float qa = ta == PF_CELL_FLUID ? potential[a] : 0.0;
+    float qb = tb == PF_CELL_FLUID ? potential[b] : 0.0;
+    return qa - qb;
+}
+
+void main() {
+    uint i = flat_id();
+    if (i >= sim.particle_count) return;
+    vec3 x = pos[i].xyz;
+    vec3 g = grid_coord(x);
+    vec3 d = vec3(0.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        Stencil s = face_stencil(axis, g);
+        float t[8];
+        for (int n = 0; n < 8; ++n) {
+            ivec3 o = stencil_offset(n);
+            t[n] = stencil_weight(s.frac, o) * face_displacement(axis, s.base + o);
+        }
+        d[axis] = mirror_sum(t);  // mirrored particles move by mirrored displacements, bit for bit
+    }
+    d = clamp(d, vec3(-0.5 * sim.dx), vec3(0.5 * sim.dx));
+    pos[i] = vec4(keep_in_domain(x + d), 0.0);
+}

@@ -1,0 +1,58 @@
+#include "sim/volume_correction.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace pf {
+
+std::string VolumeCorrection::init(const gl::Api& gl, PassRunner& runner, uint32_t cells) {
+    rhs_ = gl::Buffer(gl, size_t(cells) * 4, GL_DYNAMIC_COPY, "volume_correction_rhs");
+    potential_ = gl::Buffer(gl, size_t(cells) * 4, GL_DYNAMIC_COPY, "volume_correction_potential");
+    // The solver reports iterations and residual into a status buffer: the correction's own,
+    // so pf_stats's solver figures stay those of the pressure projection.
+    const std::vector<uint32_t> zeros(PF_STATUS_WORDS, 0u);
+    report_ = gl::Buffer(gl, zeros.size() * 4, GL_DYNAMIC_COPY, "volume_correction_report");
+    report_.upload(0, zeros.size() * 4, zeros.data());
+    setup_stat_ = runner.add_stat("volume_correction_setup", PF_PASS_PRESSURE_SETUP);
+    solve_stat_ = runner.add_stat("volume_correction_solve", PF_PASS_PRESSURE_SOLVE);
+    move_stat_ = runner.add_stat("volume_correction_move", PF_PASS_ADVECT);
+    for (gl::ProgramId id : {gl::ProgramId::volume_correction_setup, gl::ProgramId::volume_correction_move}) {
+        if (std::string error = runner.prepare(id); !error.empty()) return error;
+    }
+    return {};
+}
+
+pf_sim_params VolumeCorrection::solve_params(const pf_sim_params& params) {
+    pf_sim_params p = params;
+    p.separation = 0;
+    p.pressure_tolerance = std::max(params.pressure_tolerance, kTolerance);
+    const bool stationary =
+        params.pressure_solver == PF_PRESSURE_SOLVER_JACOBI || params.pressure_solver == PF_PRESSURE_SOLVER_RBGS;
+    if (!stationary) p.pressure_iterations = std::min(params.pressure_iterations, kMaxKrylovIterations);
+    return p;
+}
+
+void VolumeCorrection::run(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in) {
+    if (params.volume_correction <= 0.0f) return;
+    runner.run({gl::ProgramId::volume_correction_setup,
+                setup_stat_,
+                in.cells,
+                {{PF_SLOT_CELL_TYPE, &in.cell_type},
+                 {PF_SLOT_CELL_COUNT, &in.cell_count},
+                 {PF_SLOT_PRESSURE, &in.pressure},
+                 {PF_SLOT_RHS, &rhs_},
+                 {PF_SLOT_VOLUME_POTENTIAL_OUT, &potential_}}});
+    const pf_sim_params solve = solve_params(params);
+    {
+        const PassRunner::StatScope as_correction(runner, solve_stat_);
+        solver.solve(runner, PressureProblem{in.cell_type, rhs_, potential_, report_, solve});
+    }
+    runner.run({gl::ProgramId::volume_correction_move,
+                move_stat_,
+                in.particles,
+                {{PF_SLOT_PARTICLE_POS, &in.positions},
+                 {PF_SLOT_CELL_TYPE, &in.cell_type},
+                 {PF_SLOT_VOLUME_POTENTIAL, &potential_}}});
+}
+
+}  // namespace pf

@@ -1,0 +1,63 @@
+// The volume correction (docs/design.md §4.5): once per step (and per 1/60 s of simulated
+// time in longer steps), particles in over-full cells
+// are moved apart along the gradient of a displacement potential, solved with the
+// simulation's own pressure solver. It moves positions only: velocities, and so FLIP's
+// velocity difference and the kinetic energy, never see it (issue 17: as a divergence target
+// of the projection it added energy when the solve was unconverged and smothered waves when
+// it was converged).
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "gl/buffer.h"
+#include "gl/gl.h"
+#include "pf/pf.h"
+#include "sim/pass_runner.h"
+#include "sim/solvers/pressure_solver.h"
+
+namespace pf {
+
+class VolumeCorrection {
+public:
+    // Allocates its right-hand side, potential and solver-report buffers for `cells` cells,
+    // builds its two kernels and registers its statistics entries (setup, solve — the
+    // solver's passes counted apart from the pressure solve's — and move). Returns an error
+    // message, empty on success.
+    std::string init(const gl::Api& gl, PassRunner& runner, uint32_t cells);
+
+    // What it reads and moves: this substep's cell types and P2G counts, the last solve's
+    // pressure (with separation, where liquid may be leaving a wall), the particles.
+    struct Inputs {
+        const gl::Buffer& positions;
+        const gl::Buffer& cell_type;
+        const gl::Buffer& cell_count;
+        const gl::Buffer& pressure;
+        uint64_t cells = 0;
+        uint64_t particles = 0;
+    };
+    // Records the correction (setup, the solve, the particle move); nothing when
+    // params.volume_correction is 0.
+    void run(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in);
+
+    // The solve's parameters: the simulation's solver without separation (the potential has
+    // either sign), to the pressure's tolerance but never below kTolerance, with at most
+    // kMaxKrylovIterations Krylov iterations (a correction that moves part of the excess needs
+    // no more; stationary solvers keep the simulation's sweep count). 1e-2 was too loose for
+    // mirrored runs to stay mirror images (tests/stability/test_corners.cpp: 1.6e-3 cells apart
+    // after 0.25 s, bound 1e-3).
+    static constexpr float kTolerance = 1e-3f;
+    static constexpr uint32_t kMaxKrylovIterations = 10;
+    static pf_sim_params solve_params(const pf_sim_params& params);
+    // Simulated time between two runs within a step (the first substep of every step runs it):
+    // at 60 frames a second once a step; in long frames every substep of 1/60 s or longer
+    // (docs/design.md §4.5: once per 0.5 s frame left the last substeps' counts 5% thin).
+    static constexpr float kInterval = 1.0f / 60.0f;
+    // The displacement potential q of the last run (metres; tests read it).
+    const gl::Buffer& potential() const { return potential_; }
+
+private:
+    gl::Buffer rhs_, potential_, report_;
+    StatId setup_stat_ = 0, solve_stat_ = 0, move_stat_ = 0;
+};
+
+}  // namespace pf

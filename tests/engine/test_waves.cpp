@@ -1,0 +1,119 @@
+// Standing waves keep their energy (issue 17): the first sloshing mode of a tank 3.2 m long and
+// 1.6 m deep (64 x 48 cells of 5 cm, 32 cells of depth), amplitude 0.1 m, a jittered lattice of
+// 8 particles per cell, frame dt 1/60 s, public API only. For every preset, in thin tanks (1 and
+// 2 cells) and a 3D one (8 cells; 4 in CI's fast mode): the scheme never adds energy, and the
+// amplitude lost per period and the period stay within their bounds.
+//
+// Measured on llvmpipe (3 periods, 2026-11-25): the largest rise of kinetic + potential energy
+// above its start is at most 0.008 of the wave's own energy in every preset and tank; on the
+// code before issue 17 the fast preset's rose to 91 times the wave's energy (2 cells thick) and
+// the balanced preset lost 45% of its amplitude per period. Now the amplitude lost per period is
+// 24-35% and the period 2.1-3.0% long in every preset (on the H100 over 10 periods: 32-44% and
+// -4.2..+4.6%, docs/accuracy.md). Issue 17's targets (5% per period with balanced and accurate,
+// 15% with fast; the period within 2%) are not met, and no knob meets them ("Standing waves"
+// there). The bounds on those two guard the measured level (50%, 5%); the energy bound is the
+// issue's.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "standing_wave.h"
+#include "support/sim_fixture.h"
+
+namespace pf::test {
+namespace {
+
+// CI's fast mode: 3 periods; its long mode (PF_STABILITY_LONG, as the stability suite): 10.
+bool long_mode() { return std::getenv("PF_STABILITY_LONG") != nullptr; }
+double periods_to_run() { return long_mode() ? 10.0 : 3.0; }
+
+struct WaveRun {
+    pfs::WaveFit fit;
+    double energy_gain = 0;   // largest (E(t) - E(0)) / wave energy over the run
+    double energy_end = 0;    // (E(end) - E(0)) / wave energy
+    double amplitude0 = 0;    // measured at t = 0, m
+    uint32_t flags = 0;
+};
+
+constexpr pf_quality kPresets[] = {PF_QUALITY_FAST, PF_QUALITY_BALANCED, PF_QUALITY_ACCURATE};
+constexpr const char* kPresetNames[] = {"fast", "balanced", "accurate"};
+
+// The scheme adds no energy: E(t) - E(0) stays below this share of the wave's own energy
+// (g A^2 / 4h per unit mass), at every frame.
+constexpr double kEnergyGainBound = 0.1;
+// Guards at the measured level (above): amplitude lost per period, relative period error.
+constexpr double kLossPerPeriodBound = 0.50;
+constexpr double kPeriodErrorBound = 0.05;
+
+class Waves : public GpuTest {
+protected:
+    WaveRun run_wave(pf_quality quality, uint32_t thickness_cells, double periods, const char* label);
+    void check_presets(uint32_t thickness);
+};
+
+WaveRun Waves::run_wave(pf_quality quality, uint32_t thickness_cells, double periods, const char* label) {
+    pfs::StandingWave wave;
+    wave.thickness = thickness_cells * wave.dx;
+    pf_sim_desc d = test_desc(64, 48, thickness_cells, float(wave.dx));
+    EXPECT_EQ(pf_quality_params(quality, &d.params), PF_OK);
+    SimPtr sim = create(d);
+    WaveRun run;
+    if (!sim) return run;
+    const std::vector<float> pos = wave.lattice(17);
+    const std::vector<float> vel(pos.size(), 0.0f);
+    EXPECT_EQ(pf_add_particles(sim.get(), pos.data(), vel.data(), uint32_t(pos.size() / 3)), PF_OK);
+    const double e_wave = wave.wave_energy_per_mass();
+    const double e0 = pfs::mechanical_energy_per_mass(wave, pos.data(), vel.data(), pos.size() / 3);
+    run.amplitude0 = pfs::mode_amplitude(wave, pos.data(), pos.size() / 3);
+    std::vector<double> t{0.0}, a{run.amplitude0};
+    const int frames = int(std::ceil(periods * wave.period() * 60.0));
+    for (int f = 1; f <= frames; ++f) {
+        EXPECT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+        if (f % 2 != 0 && f != frames) continue;  // 30 samples a second: 63 a period
+        const ParticleState p = read_all(sim.get());
+        const double e = pfs::mechanical_energy_per_mass(wave, p.pos.data(), p.vel.data(), p.count());
+        t.push_back(f / 60.0);
+        a.push_back(pfs::mode_amplitude(wave, p.pos.data(), p.count()));
+        run.energy_gain = std::max(run.energy_gain, (e - e0) / e_wave);
+        run.energy_end = (e - e0) / e_wave;
+    }
+    run.fit = pfs::fit_wave(t, a);
+    pf_stats st{};
+    st.struct_size = sizeof st;
+    EXPECT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+    run.flags = st.flags;
+    std::printf("%s: a0 %.4f m, period %.4f s (theory %.4f, %+.2f%%), loss/period %.1f%% (%u extrema), "
+                "energy gain max %.3f end %.3f (of the wave's %.4f J/kg), flags 0x%x\n",
+                label, run.amplitude0, run.fit.period, wave.period(), 100.0 * (run.fit.period / wave.period() - 1.0),
+                100.0 * run.fit.loss_per_period, run.fit.extrema, run.energy_gain, run.energy_end, e_wave, run.flags);
+    RecordProperty(std::string(label) + "_loss_per_period", std::to_string(run.fit.loss_per_period));
+    RecordProperty(std::string(label) + "_period", std::to_string(run.fit.period));
+    RecordProperty(std::string(label) + "_energy_gain", std::to_string(run.energy_gain));
+    return run;
+}
+
+void Waves::check_presets(uint32_t thickness) {
+    const pfs::StandingWave wave;
+    for (size_t i = 0; i < std::size(kPresets); ++i) {
+        const std::string label = std::string(kPresetNames[i]) + "_" + std::to_string(thickness);
+        const WaveRun r = run_wave(kPresets[i], thickness, periods_to_run(), label.c_str());
+        EXPECT_LT(r.energy_gain, kEnergyGainBound) << label;
+        // Three periods' extrema at least (over 10 periods the wave falls below the fit's 5%
+        // crossing band after about 8 at today's damping, so later extrema are not counted).
+        EXPECT_GE(r.fit.extrema, 6u) << label << ": the wave was smothered";
+        EXPECT_LT(r.fit.loss_per_period, kLossPerPeriodBound) << label;
+        EXPECT_LT(std::abs(r.fit.period / wave.period() - 1.0), kPeriodErrorBound) << label;
+        EXPECT_FALSE(r.flags & PF_FLAG_ENERGY_GAINED) << label;
+    }
+}
+
+}  // namespace
+
+TEST_F(Waves, ThinTankOneCell) { check_presets(1); }
+TEST_F(Waves, ThinTankTwoCells) { check_presets(2); }
+TEST_F(Waves, Tank3D) { check_presets(long_mode() ? 8 : 4); }
+
+}  // namespace pf::test

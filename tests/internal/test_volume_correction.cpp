@@ -1,0 +1,140 @@
+// The volume correction (docs/design.md §4.5) against the double-precision CPU reference: its
+// potential solves the reference's problem to the correction's tolerance, the particles move
+// by the reference's displacement of that potential, and velocities are not touched.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "api/handle.h"
+#include "reference/cpu_reference.h"
+#include "support/sim_fixture.h"
+
+namespace pf::test {
+namespace {
+
+class VolumeCorrectionPass : public GpuTest {};
+
+std::vector<uint32_t> counts_of(const ref::Grid& g, const std::vector<float>& pos) {
+    std::vector<uint32_t> count(size_t(g.cells()), 0u);
+    for (size_t p = 0; p < pos.size() / 3; ++p) {
+        glm::ivec3 c;
+        for (int a = 0; a < 3; ++a)
+            c[a] = std::clamp(int(std::floor((pos[p * 3 + a] - g.origin[a]) / g.dx)), 0, g.cell_dims()[a] - 1);
+        ++count[size_t(g.cell_index(c.x, c.y, c.z))];
+    }
+    return count;
+}
+
+double norm(const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v) s += x * x;
+    return std::sqrt(s);
+}
+
+// Random particles filling the lower 60% of a 12 x 10 x 8 grid at about 10 per cell: cells
+// above and below the rest count of 8, a free surface above.
+TEST_F(VolumeCorrectionPass, MovesPositionsByTheReferenceDisplacementAndLeavesVelocities) {
+    for (pf_pressure_solver solver : {PF_PRESSURE_SOLVER_JACOBI, PF_PRESSURE_SOLVER_MGPCG}) {
+        pf_sim_desc d = test_desc(12, 10, 8, 0.1f);
+        d.params.pressure_solver = solver;
+        // Jacobi with separation (walls without pressure count as open: only a surplus is
+        // corrected beside them), MGPCG without; the correction's own solve never imposes
+        // p >= 0 either way.
+        d.params.separation = solver == PF_PRESSURE_SOLVER_JACOBI ? 1 : 0;
+        d.params.volume_correction = 0.5f;
+        const ref::Grid g{12, 10, 8, 0.1, glm::dvec3(0.0)};
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<float> u01(0.0f, 1.0f), uv(-1.0f, 1.0f);
+        const int n = 12 * 6 * 8 * 10;
+        std::vector<float> pos, vel;
+        for (int i = 0; i < n; ++i) {
+            pos.insert(pos.end(), {1.2f * u01(rng), 0.6f * u01(rng), 0.8f * u01(rng)});
+            vel.insert(vel.end(), {uv(rng), uv(rng), uv(rng)});
+        }
+        SimPtr handle = create(d);
+        ASSERT_TRUE(handle);
+        ASSERT_EQ(pf_add_particles(handle.get(), pos.data(), vel.data(), uint32_t(n)), PF_OK);
+        Simulation& sim = *pf::entry(handle)->impl;
+        const std::vector<uint32_t> count = counts_of(g, pos);
+        const std::vector<uint8_t> type = ref::classify(g, count);
+        sim.write_grid_for_test(GridBuffer::cell_count, count);
+        sim.write_grid_for_test(GridBuffer::cell_type, std::vector<uint32_t>(type.begin(), type.end()));
+        // The last solve's pressure: positive in the lower half (liquid pressed against the
+        // walls), 0 above (with separation, liquid there may leave the walls).
+        std::vector<double> pressure(size_t(g.cells()), 0.0);
+        std::vector<uint32_t> pressure_words(pressure.size(), 0u);
+        for (int k = 0; k < g.nz; ++k)
+            for (int j = 0; j < g.ny / 4; ++j)
+                for (int i = 0; i < g.nx; ++i) {
+                    const int c = g.cell_index(i, j, k);
+                    pressure[size_t(c)] = 100.0;
+                    const float p = 100.0f;
+                    std::memcpy(&pressure_words[size_t(c)], &p, 4);
+                }
+        sim.write_grid_for_test(GridBuffer::pressure, pressure_words);
+        ASSERT_EQ(sim.run_volume_correction_for_test(), PF_OK);
+
+        // The potential: MGPCG solves A q = b to the correction's tolerance; Jacobi's sweeps from
+        // q = 0 (no sign constraint, whatever the preset's separation) match the reference's.
+        const std::vector<double> b = ref::volume_correction_rhs(g, type, count, d.fill_particles_per_cell, 0.5, d.params.separation != 0, pressure);
+        ASSERT_GT(norm(b), 0.0);
+        const std::vector<float> qf = sim.read_volume_potential();
+        const std::vector<double> q(qf.begin(), qf.end());
+        if (solver == PF_PRESSURE_SOLVER_MGPCG) {
+            const std::vector<double> aq = ref::laplacian(g, type, q);
+            std::vector<double> r(b.size());
+            for (size_t c = 0; c < b.size(); ++c) r[c] = type[c] == ref::FLUID ? b[c] - aq[c] : 0.0;
+            EXPECT_LE(norm(r) / norm(b), 1.01 * VolumeCorrection::kTolerance);
+        } else {
+            const std::vector<double> q_ref = ref::jacobi(g, type, b, std::vector<double>(b.size(), 0.0),
+                                                          int(d.params.pressure_iterations), d.params.jacobi_omega);
+            double scale = 0, worst = 0;
+            for (size_t c = 0; c < b.size(); ++c) {
+                scale = std::max(scale, std::abs(q_ref[c]));
+                worst = std::max(worst, std::abs(q[c] - q_ref[c]));
+            }
+            ASSERT_GT(scale, 0.0);
+            EXPECT_LE(worst, 1e-5 * scale);
+        }
+
+        // Particles move by the reference displacement of the GPU's potential; velocities stay.
+        ref::Particles expected;
+        for (int i = 0; i < n; ++i) {
+            expected.pos.emplace_back(pos[size_t(i) * 3], pos[size_t(i) * 3 + 1], pos[size_t(i) * 3 + 2]);
+            expected.vel.emplace_back(0.0);
+        }
+        ref::volume_correction_move(g, type, q, expected);
+        const ParticleState after = read_all(handle.get());
+        ASSERT_EQ(after.count(), size_t(n));
+        double moved = 0, worst = 0;
+        for (int i = 0; i < n; ++i)
+            for (int a = 0; a < 3; ++a) {
+                const size_t k = size_t(i) * 3 + size_t(a);
+                worst = std::max(worst, std::abs(after.pos[k] - expected.pos[size_t(i)][a]));
+                moved = std::max(moved, std::abs(after.pos[k] - double(pos[k])));
+                ASSERT_EQ(after.vel[k], vel[k]) << "particle " << i << " solver " << solver;
+            }
+        EXPECT_GT(moved, 1e-3 * g.dx) << "the correction moved nothing";
+        EXPECT_LE(worst, 1e-5 * g.dx) << "solver " << solver;
+    }
+}
+
+// Off (volume_correction 0): nothing moves.
+TEST_F(VolumeCorrectionPass, OffMovesNothing) {
+    pf_sim_desc d = test_desc(8, 8, 8, 0.1f);
+    d.params.volume_correction = 0.0f;
+    SimPtr handle = create(d);
+    ASSERT_TRUE(handle);
+    std::vector<float> pos, vel;
+    for (int i = 0; i < 2000; ++i) pos.insert(pos.end(), {0.05f + 0.0003f * float(i), 0.2f, 0.3f}), vel.insert(vel.end(), {0, 0, 0});
+    ASSERT_EQ(pf_add_particles(handle.get(), pos.data(), vel.data(), 2000), PF_OK);
+    Simulation& sim = *pf::entry(handle)->impl;
+    ASSERT_EQ(sim.run_volume_correction_for_test(), PF_OK);
+    const ParticleState after = read_all(handle.get());
+    for (size_t k = 0; k < pos.size(); ++k) ASSERT_EQ(after.pos[k], pos[k]);
+}
+
+}  // namespace
+}  // namespace pf::test
