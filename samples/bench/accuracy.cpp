@@ -146,10 +146,7 @@ std::vector<Config> sweep_configs() {
     return out;
 }
 
-struct SimDeleter {
-    void operator()(pf_sim* s) const { pf_destroy(s); }
-};
-using SimPtr = std::unique_ptr<pf_sim, SimDeleter>;
+using pfs::SimPtr;
 
 struct Particles {
     std::vector<float> pos, vel;

@@ -131,10 +131,7 @@ Options parse_args(int argc, char** argv) {
     return o;
 }
 
-struct SimDeleter {
-    void operator()(pf_sim* s) const { pf_destroy(s); }
-};
-using SimPtr = std::unique_ptr<pf_sim, SimDeleter>;
+using pfs::SimPtr;
 
 std::vector<std::string> flag_list(uint32_t flags) {
     std::vector<std::string> v;

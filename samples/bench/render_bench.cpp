@@ -111,14 +111,10 @@ std::vector<Config> configs(const Options& o) {
     return c;
 }
 
-struct SimDeleter {
-    void operator()(pf_sim* s) const { pf_destroy(s); }
-};
-
 void bench_scene(const Options& opt, const std::string& arg, std::vector<Measurement>& out) {
     const pfs::Scene scene = pfs::load_scene(pfs::resolve_scene_path(arg));
     pfs::SceneEffectIds effects;  // owns the SDF obstacles' textures: declared first, outlives sim
-    std::unique_ptr<pf_sim, SimDeleter> sim(
+    pfs::SimPtr sim(
         pfs::create_scene_sim(scene, pfs::get_proc, pfs::stderr_logger(false), &effects));
     for (uint32_t i = 0; i < opt.warmup; ++i) pfs::check(pf_step(sim.get(), scene.frame_dt), "pf_step");
     pf_stats st{};

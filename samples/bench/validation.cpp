@@ -114,10 +114,7 @@ std::vector<Case> load_cases(const std::string& path) {
 
 // ---- the simulation ----------------------------------------------------------------------------
 
-struct SimDeleter {
-    void operator()(pf_sim* s) const { pf_destroy(s); }
-};
-using SimPtr = std::unique_ptr<pf_sim, SimDeleter>;
+using pfs::SimPtr;
 
 std::vector<float> read_positions(pf_sim* sim) {
     uint32_t n = 0;

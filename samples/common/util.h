@@ -1,15 +1,22 @@
 // Small helpers shared by the pflip samples: error handling around pf_result, a stderr
-// logger, timing, statistics, command-line number parsing, scene lookup.
+// logger, the owner of a simulation, timing, statistics, command-line number parsing, scene lookup.
 #pragma once
 
 #include <pf/pf.h>
 
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace pfs {
+
+/// Owns a simulation: pf_destroy when it goes.
+struct SimDeleter {
+    void operator()(pf_sim* s) const { pf_destroy(s); }
+};
+using SimPtr = std::unique_ptr<pf_sim, SimDeleter>;
 
 /// Thrown by the samples for any fatal error; main() prints what() and exits non-zero.
 struct Error : std::runtime_error {

@@ -249,10 +249,7 @@ void export_ply_frame(pf_sim* sim, const std::string& dir, uint32_t frame, pfs::
 
 // ---- the simulation handle ------------------------------------------------------------------
 
-struct SimDeleter {
-    void operator()(pf_sim* s) const { pf_destroy(s); }
-};
-using SimPtr = std::unique_ptr<pf_sim, SimDeleter>;
+using pfs::SimPtr;
 
 const char* obstacle_shape_name(pf_obstacle_shape shape) {
     switch (shape) {

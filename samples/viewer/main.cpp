@@ -207,10 +207,7 @@ Options parse_args(int argc, char** argv) {
 
 // ---- helpers --------------------------------------------------------------------------------
 
-struct SimDeleter {
-    void operator()(pf_sim* s) const { pf_destroy(s); }
-};
-using SimPtr = std::unique_ptr<pf_sim, SimDeleter>;
+using pfs::SimPtr;
 
 pf_gl_proc glfw_get_proc(const char* name) { return reinterpret_cast<pf_gl_proc>(glfwGetProcAddress(name)); }
 GLADapiproc glad_get_proc(const char* name) { return reinterpret_cast<GLADapiproc>(glfwGetProcAddress(name)); }

@@ -16,17 +16,6 @@ namespace {
 
 class VolumeCorrectionPass : public GpuTest {};
 
-std::vector<uint32_t> counts_of(const ref::Grid& g, const std::vector<float>& pos) {
-    std::vector<uint32_t> count(size_t(g.cells()), 0u);
-    for (size_t p = 0; p < pos.size() / 3; ++p) {
-        glm::ivec3 c;
-        for (int a = 0; a < 3; ++a)
-            c[a] = std::clamp(int(std::floor((pos[p * 3 + a] - g.origin[a]) / g.dx)), 0, g.cell_dims()[a] - 1);
-        ++count[size_t(g.cell_index(c.x, c.y, c.z))];
-    }
-    return count;
-}
-
 double norm(const std::vector<double>& v) {
     double s = 0;
     for (double x : v) s += x * x;
@@ -57,7 +46,7 @@ TEST_F(VolumeCorrectionPass, MovesPositionsByTheReferenceDisplacementAndLeavesVe
         ASSERT_TRUE(handle);
         ASSERT_EQ(pf_add_particles(handle.get(), pos.data(), vel.data(), uint32_t(n)), PF_OK);
         Simulation& sim = *pf::entry(handle)->impl;
-        const std::vector<uint32_t> count = counts_of(g, pos);
+        const std::vector<uint32_t> count = cell_counts_of(ParticleState{pos, vel}, d);
         const std::vector<uint8_t> type = ref::classify(g, count);
         sim.write_grid_for_test(GridBuffer::cell_count, count);
         sim.write_grid_for_test(GridBuffer::cell_type, std::vector<uint32_t>(type.begin(), type.end()));

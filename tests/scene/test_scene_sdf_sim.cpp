@@ -83,10 +83,7 @@ protected:
     PourResult pour(bool with_obstacle, int frames) {
         PourResult r;
         pfs::SceneEffectIds ids;
-        struct SimDeleter {
-            void operator()(pf_sim* s) const { pf_destroy(s); }
-        };
-        std::unique_ptr<pf_sim, SimDeleter> sim(
+        pfs::SimPtr sim(
             pfs::create_scene_sim(scene_, pf::test::get_proc, pfs::stderr_logger(false), &ids));
         if (!with_obstacle) EXPECT_EQ(pf_remove_obstacle(sim.get(), ids.obstacles[0]), PF_OK);
         const pfs::SdfGrid& grid = *scene_.obstacle_sdf[0];
