@@ -138,10 +138,12 @@
 /* uniform block with the per-step constants (common/sim.glsl, src/sim/sim_uniforms.h) */
 #define PF_UBO_SIM 0
 
-/* cell types */
+/* cell types: a cell's word holds its kind in the low 2 bits (read it with PF_CELL_KIND); the
+ * bits above are reserved for per-cell data of the kind */
 #define PF_CELL_AIR 0
 #define PF_CELL_FLUID 1
 #define PF_CELL_SOLID 2
+#define PF_CELL_KIND(word) ((word) & 3u)
 
 /* status buffer words, read back a frame late */
 #define PF_STATUS_FLAGS 0

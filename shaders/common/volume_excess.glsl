@@ -13,8 +13,8 @@ float volume_excess(ivec3 ijk) {
     bool leaving = sim.separation != 0u && pressure[c] <= 0.0;
     for (int n = 0; n < 6; ++n) {
         ivec3 nb = ijk + kNeighbours[n];
-        bool open = cell_inside(nb) ? cell_type[cell_index(nb)] == PF_CELL_AIR ||
-                                          (leaving && cell_type[cell_index(nb)] == PF_CELL_SOLID)
+        bool open = cell_inside(nb) ? PF_CELL_KIND(cell_type[cell_index(nb)]) == PF_CELL_AIR ||
+                                          (leaving && PF_CELL_KIND(cell_type[cell_index(nb)]) == PF_CELL_SOLID)
                                     : leaving;
         if (open) return max(excess, 0.0);
     }

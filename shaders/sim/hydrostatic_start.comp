@@ -36,7 +36,7 @@ void main() {
         uint t = PF_CELL_AIR;  // k = n: the run ends at the lid, as under AIR
         if (k < n[axis]) {
             c[axis] = floor_cell + up * k;
-            t = cell_type[cell_index(c)];
+            t = PF_CELL_KIND(cell_type[cell_index(c)]);
         }
         if (t == PF_CELL_FLUID) continue;
         // The run [start, k) rests on the floor or a SOLID cell and ends here.

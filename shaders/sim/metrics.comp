@@ -27,7 +27,7 @@ void main() {
     uint id = flat_id();
     vec4 grid = vec4(0.0);  // (div^2, |div|, fluid, volume fraction)
     vec4 particles = vec4(0.0);  // (|v|^2, -g . (x - origin), count / rest if interior, interior)
-    if (id < uint(sim.grid.w) && cell_type[id] == PF_CELL_FLUID) {
+    if (id < uint(sim.grid.w) && PF_CELL_KIND(cell_type[id]) == PF_CELL_FLUID) {
         int c = int(id);
         ivec3 ijk = ivec3(c % sim.grid.x, (c / sim.grid.x) % sim.grid.y, c / (sim.grid.x * sim.grid.y));
         float div = 0.0;
@@ -42,7 +42,7 @@ void main() {
         bool interior = true;
         for (int n = 0; n < 6; ++n) {
             ivec3 nb = ijk + kNeighbours[n];
-            if (cell_inside(nb) && cell_type[cell_index(nb)] == PF_CELL_AIR) interior = false;
+            if (cell_inside(nb) && PF_CELL_KIND(cell_type[cell_index(nb)]) == PF_CELL_AIR) interior = false;
         }
         if (interior) particles.zw = vec2(density, 1.0);
     }

@@ -26,8 +26,8 @@ void main() {
     lo[axis] -= 1;
     int a = cell_index(lo);
     int b = cell_index(f);
-    uint ta = cell_type[a];
-    uint tb = cell_type[b];
+    uint ta = PF_CELL_KIND(cell_type[a]);
+    uint tb = PF_CELL_KIND(cell_type[b]);
     if (ta == PF_CELL_SOLID || tb == PF_CELL_SOLID) {
         bool inside = ta == tb;
         if (inside) face_vel[id] = 0.0;

@@ -17,7 +17,7 @@ float face_displacement(int axis, ivec3 f) {
     ivec3 lo = f;
     lo[axis] -= 1;
     int a = cell_index(lo), b = cell_index(f);
-    uint ta = cell_type[a], tb = cell_type[b];
+    uint ta = PF_CELL_KIND(cell_type[a]), tb = PF_CELL_KIND(cell_type[b]);
     if (ta == PF_CELL_SOLID || tb == PF_CELL_SOLID) return 0.0;
     float qa = ta == PF_CELL_FLUID ? potential[a] : 0.0;
     float qb = tb == PF_CELL_FLUID ? potential[b] : 0.0;

@@ -18,7 +18,7 @@ void main() {
     int c = int(flat_id());
     if (c >= sim.grid.w) return;
     potential[c] = 0.0;
-    if (cell_type[c] != PF_CELL_FLUID) {
+    if (PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) {
         rhs[c] = 0.0;
         return;
     }

@@ -209,7 +209,7 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
     std::vector<uint8_t> type(type_words.size());
     for (size_t c = 0; c < count.size(); ++c) {
         ASSERT_EQ(count[c], p2g.count[c]) << "cell " << c;
-        type[c] = uint8_t(type_words[c]);
+        type[c] = uint8_t(PF_CELL_KIND(type_words[c]));
     }
     EXPECT_EQ(type, ref::classify(g, p2g.count));
 

@@ -55,7 +55,8 @@ TEST_F(Metrics, GpuReductionsMatchTheCpu) {
     const ref::Grid g{16, 12, 14, d.cell_size, glm::dvec3(0.0)};
     const std::vector<uint32_t> type_words = sim.read_grid(GridBuffer::cell_type);
     const std::vector<uint32_t> count = sim.read_grid(GridBuffer::cell_count);
-    const std::vector<uint8_t> type(type_words.begin(), type_words.end());
+    std::vector<uint8_t> type(type_words.size());
+    for (size_t c = 0; c < type.size(); ++c) type[c] = uint8_t(PF_CELL_KIND(type_words[c]));
     const std::vector<double> div = ref::divergence(g, type, words_as_floats(sim.read_grid(GridBuffer::face_vel)));
     double sum2 = 0, max_div = 0;
     uint32_t fluid = 0;

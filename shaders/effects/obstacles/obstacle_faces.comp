@@ -17,8 +17,8 @@ void main() {
     if (face_is_wall(axis, f)) return;
     ivec3 lo = f;
     lo[axis] -= 1;
-    bool solid_lo = cell_type[cell_index(lo)] == PF_CELL_SOLID;
-    if (!solid_lo && cell_type[cell_index(f)] != PF_CELL_SOLID) return;
+    bool solid_lo = PF_CELL_KIND(cell_type[cell_index(lo)]) == PF_CELL_SOLID;
+    if (!solid_lo && PF_CELL_KIND(cell_type[cell_index(f)]) != PF_CELL_SOLID) return;
     int nearest;
     scene_distance(cell_centre(solid_lo ? lo : f), nearest);
     face_vel[id] = nearest >= 0 ? obstacle_velocity(uint(nearest), face_centre(axis, f))[axis] : 0.0;

@@ -53,8 +53,8 @@ void main() {
         if (!face_is_wall(axis, f)) {
             ivec3 lo = f;
             lo[axis] -= 1;
-            uint ta = cell_type[cell_index(lo)];
-            uint tb = cell_type[cell_index(f)];
+            uint ta = PF_CELL_KIND(cell_type[cell_index(lo)]);
+            uint tb = PF_CELL_KIND(cell_type[cell_index(f)]);
             bool solid_lo = ta == PF_CELL_SOLID && tb == PF_CELL_FLUID;
             bool solid_hi = tb == PF_CELL_SOLID && ta == PF_CELL_FLUID;
             int k = -1;

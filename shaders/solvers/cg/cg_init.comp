@@ -24,7 +24,7 @@ layout(std430, binding = PF_SLOT_SOLVER_Z_INIT) writeonly buffer Z { float z_out
 
 vec4 cell_contribution(int c) {
     float r = 0.0, z = 0.0;
-    if (cell_type[c] == PF_CELL_FLUID) {
+    if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
         PoissonStencil s = poisson_stencil(c);
         r = start_residual(c, s);
         z = precondition(r, s);

@@ -17,7 +17,7 @@ void main() {
     int c = int(flat_id());
     if (c >= u_dims.w) return;
     float r = 0.0;
-    if (cell_type[c] == PF_CELL_FLUID)
+    if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID)
         r = start_residual(c, poisson_stencil(c));
     else
         x[c] = 0.0;  // never read by a neighbour's stencil: no race

@@ -36,7 +36,7 @@ float direction(int c) {
 
 vec4 cell_contribution(int c) {
     float pc = 0.0, aq = 0.0;
-    if (cell_type[c] == PF_CELL_FLUID) {
+    if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
         PoissonStencil s = poisson_stencil(c);
         pc = direction(c);
         vec3 pair_sum = vec3(0.0);

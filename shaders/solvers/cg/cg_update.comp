@@ -23,7 +23,7 @@ layout(std430, binding = PF_SLOT_SOLVER_Z) writeonly buffer Z { float z_out[]; }
 
 vec4 cell_contribution(int c) {
     float rn = 0.0, z = 0.0;
-    if (cell_type[c] == PF_CELL_FLUID) {
+    if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
         float alpha = state_float(PF_SOLVER_ALPHA);
         x[c] += alpha * p[c];
         rn = r[c] - alpha * q[c];

@@ -20,7 +20,7 @@ void main() {
     int c = int(flat_id());
     if (c >= u_dims.w) return;
     float first = 0.0;
-    if (cell_type[c] == PF_CELL_FLUID) {
+    if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
         float alpha = state_float(PF_SOLVER_ALPHA);
         x[c] += alpha * p[c];
         float rn = r[c] - alpha * q[c];

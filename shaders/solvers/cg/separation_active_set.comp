@@ -19,8 +19,8 @@ layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
 
 void main() {
     int c = int(flat_id());
-    if (c >= u_dims.w || cell_type[c] != PF_CELL_FLUID || solve_singular()) return;
-    if (working_type[c] == PF_CELL_FLUID) {
+    if (c >= u_dims.w || PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID || solve_singular()) return;
+    if (PF_CELL_KIND(working_type[c]) == PF_CELL_FLUID) {
         if (x[c] < 0.0) working_type[c] = PF_CELL_AIR;
         return;
     }
@@ -31,5 +31,5 @@ void main() {
         if (s.nb[n] >= 0) pair_sum[n / 2] += max(x[s.nb[n]], 0.0);
     }
     float r = rhs[c] - (s.diag * max(x[c], 0.0) - pair_total(pair_sum));
-    if (r > 0.0) working_type[c] = PF_CELL_FLUID;
+    if (r > 0.0) working_type[c] = cell_type[c];  // the cell's own FLUID word back
 }

@@ -11,6 +11,6 @@ layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
 
 void main() {
     int c = int(flat_id());
-    if (c >= u_dims.w || cell_type[c] != PF_CELL_FLUID || solve_singular()) return;
+    if (c >= u_dims.w || PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID || solve_singular()) return;
     x[c] = max(x[c], 0.0);
 }

@@ -22,12 +22,12 @@ void main() {
     if (c >= u_dims.w) return;
     bool mine = cell_color(c) == u_color;
 #if PF_GS_FROM_ZERO
-    if (!mine || cell_type[c] != PF_CELL_FLUID) {
+    if (!mine || PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) {
         x[c] = 0.0;
         return;
     }
 #else
-    if (!mine || cell_type[c] != PF_CELL_FLUID) return;
+    if (!mine || PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) return;
 #endif
     PoissonStencil s = poisson_stencil(c);
     vec3 pair_sum = vec3(0.0);

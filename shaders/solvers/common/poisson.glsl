@@ -30,7 +30,7 @@ PoissonStencil poisson_stencil(int c) {
         ivec3 q = ijk + kPoissonNeighbours[n];
         if (!level_inside(q)) continue;
         int nc = level_index(q);
-        uint t = cell_type[nc];
+        uint t = PF_CELL_KIND(cell_type[nc]);
         if (t == PF_CELL_SOLID) continue;
         s.diag += 1.0;
         if (t == PF_CELL_FLUID) s.nb[n] = nc;

@@ -17,7 +17,7 @@ layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
 
 vec4 cell_contribution(int c) {
     float r = 0.0, b = 0.0;
-    if (cell_type[c] == PF_CELL_FLUID) {
+    if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
         PoissonStencil s = poisson_stencil(c);
         vec3 pair_sum = vec3(0.0);
         for (int n = 0; n < 6; ++n) {

@@ -11,7 +11,7 @@ layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partial
 #include "solvers/common/reduce.glsl"
 
 vec4 cell_contribution(int c) {
-    uint t = cell_type[c];
+    uint t = PF_CELL_KIND(cell_type[c]);
     if (t == PF_CELL_FLUID) {
         float b = rhs[c];
         return vec4(b, b * b, 1.0, 0.0);

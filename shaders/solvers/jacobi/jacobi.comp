@@ -20,7 +20,7 @@ layout(location = PF_LOC_JACOBI_OMEGA) uniform float u_omega;  // relaxation wei
 void main() {
     int c = int(flat_id());
     if (c >= u_dims.w) return;
-    if (cell_type[c] != PF_CELL_FLUID) {
+    if (PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) {
         p_out[c] = 0.0;
         return;
     }

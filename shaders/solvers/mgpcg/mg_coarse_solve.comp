@@ -37,7 +37,7 @@ OwnedCell own(int c) {
     o.mask = 0u;
     o.color = 0u;
     o.live = false;
-    if (c < u_dims.w && cell_type[c] == PF_CELL_FLUID) {
+    if (c < u_dims.w && PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
         PoissonStencil s = poisson_stencil(c);
         for (int n = 0; n < 6; ++n) o.mask |= s.nb[n] >= 0 ? 1u << n : 0u;
         o.diag = s.diag;

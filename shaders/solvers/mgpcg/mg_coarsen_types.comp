@@ -17,7 +17,7 @@ void main() {
     for (int n = 0; n < 8; ++n) {
         ivec3 f = 2 * cc + ivec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);
         if (!level_inside(f)) continue;
-        uint t = cell_type[level_index(f)];
+        uint t = PF_CELL_KIND(cell_type[level_index(f)]);
         air = air || t == PF_CELL_AIR;
         fluid = fluid || t == PF_CELL_FLUID;
     }

@@ -38,7 +38,7 @@ void main() {
     int f = int(flat_id());
     if (f >= u_dims.w) return;
     float v = 0.0;
-    if (cell_type[f] == PF_CELL_FLUID) {
+    if (PF_CELL_KIND(cell_type[f]) == PF_CELL_FLUID) {
         if (cell_color(f) == 0u) {
             v = corrected(f);
         } else {

@@ -13,7 +13,7 @@ void main() {
     int c = int(flat_id());
     if (c >= u_dims.w) return;
     float res = 0.0;
-    if (cell_type[c] == PF_CELL_FLUID) {
+    if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
         PoissonStencil s = poisson_stencil(c);
         vec3 pair_sum = vec3(0.0);
         for (int n = 0; n < 6; ++n) {

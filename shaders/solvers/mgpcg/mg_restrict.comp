@@ -37,7 +37,7 @@ float coarse_diag(ivec3 cc) {
     for (int n = 0; n < 6; ++n) {
         ivec3 q = cc + kPoissonNeighbours[n];
         if (any(lessThan(q, ivec3(0))) || any(greaterThanEqual(q, u_coarse_dims.xyz))) continue;
-        if (coarse_type[coarse_index(q)] != PF_CELL_SOLID) diag += 1.0;
+        if (PF_CELL_KIND(coarse_type[coarse_index(q)]) != PF_CELL_SOLID) diag += 1.0;
     }
     return diag;
 }
@@ -47,7 +47,7 @@ void main() {
     if (c >= u_coarse_dims.w) return;
     ivec3 cc = ivec3(c % u_coarse_dims.x, (c / u_coarse_dims.x) % u_coarse_dims.y, c / (u_coarse_dims.x * u_coarse_dims.y));
     float r = 0.0;
-    bool fluid = coarse_type[c] == PF_CELL_FLUID;
+    bool fluid = PF_CELL_KIND(coarse_type[c]) == PF_CELL_FLUID;
     if (fluid) {
         // Per axis: the fine indices 2 cc - 1 .. 2 cc + 2 (clamped into the level) and weights.
         ivec4 fx, fy, fz;

@@ -19,7 +19,7 @@ layout(location = PF_LOC_SOLVER_CG_STEP) uniform uint u_cg_step;  // run by the 
 #include "solvers/cg/cg_scalar_step.glsl"
 
 vec4 cell_contribution(int c) {
-    if (cell_type[c] != PF_CELL_FLUID) return vec4(0.0);
+    if (PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) return vec4(0.0);
     float rc = r[c], zc;
     if (cell_color(c) == 0u) {
         PoissonStencil s = poisson_stencil(c);
