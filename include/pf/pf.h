@@ -129,6 +129,19 @@ typedef enum pf_p2g {
     PF_P2G_FORCE32 = 0x7fffffff
 } pf_p2g;
 
+/** Where the pressure's free surface sits (pf_sim_params.free_surface; docs/design.md §4.6a). */
+typedef enum pf_free_surface {
+    PF_FREE_SURFACE_MARKER_CELL = 0, /**< at the centre of the first air cell (the original's): the
+                                          surface moves in whole cells, which damps waves strongly
+                                          (about a third of a standing wave's amplitude per period) */
+    PF_FREE_SURFACE_GHOST_FLUID = 1, /**< at the liquid's sub-cell surface, estimated from the particles'
+                                          P2G weight on each face between a liquid and an air cell (ghost
+                                          fluid, Enright et al. 2003): waves keep their amplitude and
+                                          period far better (docs/accuracy.md); not yet the default */
+    PF_FREE_SURFACE_COUNT = 2,
+    PF_FREE_SURFACE_FORCE32 = 0x7fffffff
+} pf_free_surface;
+
 /** Pressure solvers, from cheapest to most accurate per iteration (docs/accuracy.md). */
 typedef enum pf_pressure_solver {
     PF_PRESSURE_SOLVER_JACOBI = 0,   /**< weighted Jacobi (the original), jacobi_omega; a check every 8 sweeps */
@@ -214,6 +227,8 @@ typedef struct pf_sim_params {
     float energy_gain_limit;      /**< fraction by which kinetic + potential energy may rise above its reference
                                        (pf_stats.energy_drift; at least every particle lifted one cell) before
                                        PF_FLAG_ENERGY_GAINED is raised and logged, (0, 100]; 0 = default 0.1 */
+    pf_free_surface free_surface; /**< free-surface boundary of the pressure; default (0)
+                                       PF_FREE_SURFACE_MARKER_CELL */
 } pf_sim_params;
 
 /** Quality presets: measured points of the accuracy-versus-time trade-off (docs/accuracy.md

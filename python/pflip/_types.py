@@ -34,6 +34,11 @@ class P2G(enum.IntEnum):
     SORTED_GATHER = 2
 
 
+class FreeSurface(enum.IntEnum):
+    MARKER_CELL = 0
+    GHOST_FLUID = 1
+
+
 class PressureSolver(enum.IntEnum):
     JACOBI = 0
     RBGS = 1
@@ -237,6 +242,7 @@ class SimParams(_Struct):
         ("p2g", c_enum),
         ("volume_loss_limit", ctypes.c_float),
         ("energy_gain_limit", ctypes.c_float),
+        ("free_surface", c_enum),
     ]
 
 
@@ -547,7 +553,7 @@ C_NAMES = {
 
 # Enums mirrored above with the C prefix of their values, for the layout test (values checked too).
 C_ENUMS = {
-    Result: "PF_", LogLevel: "PF_LOG_", P2G: "PF_P2G_", PressureSolver: "PF_PRESSURE_SOLVER_",
+    Result: "PF_", LogLevel: "PF_LOG_", P2G: "PF_P2G_", FreeSurface: "PF_FREE_SURFACE_", PressureSolver: "PF_PRESSURE_SOLVER_",
     Transfer: "PF_TRANSFER_", Advection: "PF_ADVECTION_", Quality: "PF_QUALITY_", Pass: "PF_PASS_",
     RenderPass: "PF_RENDER_PASS_", Flag: "PF_FLAG_", DepthConvention: "PF_DEPTH_",
     SsfFilter: "PF_SSF_FILTER_", SsfPath: "PF_SSF_PATH_", ParticleColor: "PF_PARTICLE_COLOR_",

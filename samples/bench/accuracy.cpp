@@ -63,14 +63,17 @@ struct Config {
 
 pf_sim_params preset(pf_quality q) {
     pf_sim_params p{};
+    p.struct_size = sizeof p;  // this header's fields, not the v1 layout a zero struct_size means
     pfs::check(pf_quality_params(q, &p), "pf_quality_params");
     return p;
 }
 
-// The original's scheme (the fast preset until issue 17): 40 projected Jacobi sweeps.
+// The original's scheme (the fast preset until issue 17): 40 projected Jacobi sweeps and the
+// marker-cell free surface.
 pf_sim_params original_scheme() {
     pf_sim_params p = preset(PF_QUALITY_BALANCED);
     p.pressure_solver = PF_PRESSURE_SOLVER_JACOBI, p.pressure_tolerance = 1e-4f, p.separation = 1;
+    p.free_surface = PF_FREE_SURFACE_MARKER_CELL;
     return p;
 }
 
@@ -104,6 +107,7 @@ std::vector<Config> sweep_configs() {
         p.pressure_solver = PF_PRESSURE_SOLVER_MGPCG, p.pressure_tolerance = 1e-4f, p.pressure_iterations = 60;
         p.separation = 0;
     });
+    add("free_surface", "ghost_fluid", [](pf_sim_params& p) { p.free_surface = PF_FREE_SURFACE_GHOST_FLUID; });
     add("volume", "no_volume_correction", [](pf_sim_params& p) { p.volume_correction = 0.0f; });
     add("volume", "volume_correction_0.3", [](pf_sim_params& p) { p.volume_correction = 0.3f; });
     add("transfer", "pic", [](pf_sim_params& p) { p.flip_ratio = 0.0f; });
@@ -138,6 +142,20 @@ std::vector<Config> sweep_configs() {
     });
     // What each knob does to a standing wave's damping and energy (issue 17), from the default.
     combine("balanced_no_volume_correction", [](pf_sim_params& p) { p.volume_correction = 0.0f; });
+    combine("balanced_ghost_fluid", [](pf_sim_params& p) { p.free_surface = PF_FREE_SURFACE_GHOST_FLUID; });
+    combine("balanced_ghost_fluid_no_volume_correction", [](pf_sim_params& p) {
+        p.free_surface = PF_FREE_SURFACE_GHOST_FLUID, p.volume_correction = 0.0f;
+    });
+    combine("balanced_ghost_fluid_volume_correction_0.2", [](pf_sim_params& p) {
+        p.free_surface = PF_FREE_SURFACE_GHOST_FLUID, p.volume_correction = 0.2f;
+    });
+    combine("fast_ghost_fluid", [](pf_sim_params& p) {
+        p.free_surface = PF_FREE_SURFACE_GHOST_FLUID, p.pressure_tolerance = 1e-2f;
+    });
+    combine("accurate_ghost_fluid", [](pf_sim_params& p) {
+        p = preset(PF_QUALITY_ACCURATE);
+        p.free_surface = PF_FREE_SURFACE_GHOST_FLUID;
+    });
     combine("balanced_volume_correction_1", [](pf_sim_params& p) { p.volume_correction = 1.0f; });
     combine("balanced_flip_1", [](pf_sim_params& p) { p.flip_ratio = 1.0f; });
     combine("balanced_flip_0.8", [](pf_sim_params& p) { p.flip_ratio = 0.8f; });
@@ -527,7 +545,8 @@ int run(int argc, char** argv) {
                              {"advection", int(config.params.advection)},
                              {"cfl", config.params.cfl},
                              {"separation", config.params.separation},
-                             {"p2g", pfs::p2g_name(config.params.p2g)}};
+                             {"p2g", pfs::p2g_name(config.params.p2g)},
+                             {"free_surface", config.params.free_surface == PF_FREE_SURFACE_GHOST_FLUID ? "ghost_fluid" : "marker_cell"}};
             rows.push_back(row);
         }
     }

@@ -41,6 +41,7 @@ struct Options {
     float tolerance = 0;        // 0: the scene's
     int separation = -1;        // -1: the scene's
     int p2g = -1;               // -1: the scene's (pf_p2g otherwise)
+    int free_surface = -1;      // -1: the scene's (pf_free_surface otherwise)
     uint32_t max_substeps = 0; // 0: the scene's
     float frame_dt = 0;        // 0: the scene's
     int64_t features = -1;     // -1: the scene's PF_FEATURE_* bits
@@ -66,6 +67,7 @@ void print_usage(std::FILE* f) {
                  "  --solver NAME            pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
                  "  --tolerance T            pressure_tolerance (relative residual) for every scene\n"
                  "  --separation 0|1         override the scenes' separation\n"
+                 "  --free-surface ghost_fluid|marker_cell  where the pressure's free surface sits\n"
                  "  --p2g fixed|float|gather particle-to-grid scheme: fixed-point atomics, float atomics or\n"
                  "                           the sorted gather (PF_P2G_SORTED_GATHER)\n"
                  "  --max-substeps N         override the scenes' max_substeps (1 = one substep per step)\n"
@@ -106,6 +108,8 @@ Options parse_args(int argc, char** argv) {
             o.tolerance = pfs::parse_float(args.value(), "--tolerance", 1e-12f, 0.999f);
         } else if (a == "--p2g") {
             o.p2g = pfs::parse_p2g(args.value(), "--p2g");
+        } else if (a == "--free-surface") {
+            o.free_surface = pfs::parse_free_surface(args.value(), "--free-surface");
         } else if (a == "--separation") {
             o.separation = int(pfs::parse_u32(args.value(), "--separation", 0, 1));
         } else if (a == "--max-substeps") {
@@ -191,6 +195,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     if (opt.tolerance > 0) desc.params.pressure_tolerance = opt.tolerance;
     if (opt.separation >= 0) desc.params.separation = uint32_t(opt.separation);
     if (opt.p2g >= 0) desc.params.p2g = pf_p2g(opt.p2g);
+    if (opt.free_surface >= 0) desc.params.free_surface = pf_free_surface(opt.free_surface);
     if (opt.max_substeps) desc.params.max_substeps = opt.max_substeps;
     if (opt.features >= 0) desc.features = uint32_t(opt.features);
     r.params = desc.params;
@@ -357,6 +362,7 @@ ojson result_json(const Result& r) {
     p["pressure_tolerance"] = r.params.pressure_tolerance;
     p["sor_omega"] = r.params.sor_omega;
     p["p2g"] = pfs::p2g_name(r.params.p2g);
+    p["free_surface"] = r.params.free_surface == PF_FREE_SURFACE_GHOST_FLUID ? "ghost_fluid" : "marker_cell";
     j["params"] = p;
     j["solver_iterations"] = summary_json(r.solver_iterations);
     j["solver_residual"] = summary_json(r.solver_residual);

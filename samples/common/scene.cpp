@@ -138,7 +138,7 @@ Scene parse_scene(const std::string& text, const std::string& path) {
         const json& pr = p.object(*it, "/params");
         p.check_keys(pr, "/params", {"gravity", "flip_ratio", "pressure_iterations", "jacobi_omega", "cfl",
                                      "max_substeps", "extrapolation_layers", "separation", "pressure_solver",
-                                     "pressure_tolerance", "sor_omega"});
+                                     "pressure_tolerance", "sor_omega", "free_surface"});
         if (auto v = pr.find("gravity"); v != pr.end()) {
             const vec3f g = p.vec3(*v, "/params/gravity");
             for (int a = 0; a < 3; ++a) s.params.gravity[a] = g[a];
@@ -164,6 +164,13 @@ Scene parse_scene(const std::string& text, const std::string& path) {
         if (auto v = pr.find("pressure_tolerance"); v != pr.end())
             s.params.pressure_tolerance = p.real(*v, "/params/pressure_tolerance", 0.0, 1.0, true);
         if (auto v = pr.find("sor_omega"); v != pr.end()) s.params.sor_omega = p.real(*v, "/params/sor_omega", 0.0, 2.0, true);
+        if (auto v = pr.find("free_surface"); v != pr.end()) {
+            try {
+                s.params.free_surface = parse_free_surface(p.string(*v, "/params/free_surface"), "value");
+            } catch (const Error& e) {
+                p.fail("/params/free_surface", e.what());
+            }
+        }
     }
 
     if (auto it = root.find("frame_dt"); it != root.end()) s.frame_dt = p.real(*it, "/frame_dt", 0.0, 1.0, true);

@@ -165,6 +165,7 @@ pf_quality parse_preset(const std::string& name, const char* what) {
 
 void apply_preset(pf_quality quality, pf_sim_params& p) {
     pf_sim_params q{};
+    q.struct_size = sizeof q;  // this header's fields, not the v1 layout a zero struct_size means
     check(pf_quality_params(quality, &q), "pf_quality_params");
     for (int a = 0; a < 3; ++a) q.gravity[a] = p.gravity[a];
     q.max_substeps = p.max_substeps;
@@ -219,6 +220,12 @@ pf_p2g parse_p2g(const std::string& name, const char* what) {
     return pf_p2g(parse_name(kP2gNames, name, what, "particle-to-grid scheme"));
 }
 
+const char* const kFreeSurfaceNames[PF_FREE_SURFACE_COUNT] = {"marker_cell", "ghost_fluid"};
+
+pf_free_surface parse_free_surface(const std::string& name, const char* what) {
+    return pf_free_surface(parse_name(kFreeSurfaceNames, name, what, "free surface"));
+}
+
 const char* p2g_name(pf_p2g p2g) { return p2g >= 0 && p2g < PF_P2G_COUNT ? kP2gNames[p2g] : "unknown"; }
 
 bool ParamOverrides::parse(ArgCursor& args) {
@@ -242,6 +249,9 @@ bool ParamOverrides::parse(ArgCursor& args) {
     } else if (a == "--p2g") {
         p2g = parse_p2g(args.value(), "--p2g");
         has_p2g = true;
+    } else if (a == "--free-surface") {
+        free_surface = parse_free_surface(args.value(), "--free-surface");
+        has_free_surface = true;
     } else {
         return false;
     }
@@ -255,6 +265,7 @@ void ParamOverrides::apply(pf_sim_params& p) const {
     if (has_transfer) p.transfer = transfer;
     if (has_advection) p.advection = advection;
     if (has_p2g) p.p2g = p2g;
+    if (has_free_surface) p.free_surface = free_surface;
 }
 
 const char* ParamOverrides::usage() {
@@ -265,7 +276,8 @@ const char* ParamOverrides::usage() {
            "  --transfer pic_flip|apic  grid-particle transfer (default: the scene's)\n"
            "  --advection euler|rk2|rk3  particle integrator (default: the scene's)\n"
            "  --p2g fixed|float|gather  particle-to-grid scheme: fixed-point atomics, float atomics or the\n"
-           "                      sorted gather (default: the scene's)\n";
+           "                      sorted gather (default: the scene's)\n"
+           "  --free-surface ghost_fluid|marker_cell  where the pressure's free surface sits (default: the scene's)\n";
 }
 
 pf_result get_pass_list(const pf_sim* sim, std::vector<pf_pass_stats>& out) {

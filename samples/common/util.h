@@ -96,29 +96,32 @@ const char* advection_name(pf_advection advection);
 /// Particle-to-grid scheme by name ("fixed", "float", "gather": PF_P2G_FIXED_POINT,
 /// PF_P2G_FLOAT_ATOMIC, PF_P2G_SORTED_GATHER); throws Error naming `what`.
 pf_p2g parse_p2g(const std::string& name, const char* what);
+/// "marker_cell" or "ghost_fluid" (pf_free_surface); throws Error naming `what` otherwise.
+pf_free_surface parse_free_surface(const std::string& name, const char* what);
 /// The name parse_p2g takes for `p2g`.
 const char* p2g_name(pf_p2g p2g);
 
 /// The accuracy knobs the interactive samples take on the command line (--solver, --tolerance,
-/// --transfer, --advection, --p2g). Each overrides the scene's value only when given, so a scene file
+/// --transfer, --advection, --p2g, --free-surface). Each overrides the scene's value only when given, so a scene file
 /// stays the single source of everything else.
 struct ParamOverrides {
     bool has_preset = false, has_solver = false, has_tolerance = false, has_transfer = false, has_advection = false,
-         has_p2g = false;
+         has_p2g = false, has_free_surface = false;
     pf_quality preset = PF_QUALITY_FAST;
     pf_pressure_solver solver = PF_PRESSURE_SOLVER_JACOBI;
     float tolerance = 0;
     pf_transfer transfer = PF_TRANSFER_PIC_FLIP;
     pf_advection advection = PF_ADVECTION_EULER;
     pf_p2g p2g = PF_P2G_FIXED_POINT;
+    pf_free_surface free_surface = PF_FREE_SURFACE_MARKER_CELL;
 
-    /// If args.option() is one of the six, consumes its value (strictly parsed) and returns
+    /// If args.option() is one of the seven, consumes its value (strictly parsed) and returns
     /// true; false leaves args untouched for the caller's own options.
     bool parse(ArgCursor& args);
     /// Writes the given overrides into p: a preset first (keeping p's gravity and max_substeps,
     /// which are the scene's physics), then the single knobs.
     void apply(pf_sim_params& p) const;
-    /// The --help lines of the six options.
+    /// The --help lines of the seven options.
     static const char* usage();
 };
 

@@ -21,6 +21,6 @@ PF_UNIFORM(uint, particle_count)      /* live particles */
 PF_UNIFORM(uint, separation)          /* 1: pressure is kept >= 0 (liquid may leave walls) */
 PF_UNIFORM(float, rest_particles)     /* particles per cell at rest density (desc.fill_particles_per_cell) */
 PF_UNIFORM(float, volume_correction)  /* pressure setup: fraction of a cell's excess particle density removed per substep */
-PF_UNIFORM(uint, pad0)
+PF_UNIFORM(uint, ghost_fluid)        /* 1: the free surface sits where the particles put it (PF_FREE_SURFACE_GHOST_FLUID) */
 PF_UNIFORM(uint, pad1)
 PF_UNIFORM(uint, pad2)

@@ -16,6 +16,11 @@
 #define PF_SLOT_CELL_COUNT 5
 #define PF_SLOT_CELL_TYPE 6
 #define PF_SLOT_STATUS 7
+/* per face: theta, where the free surface crosses the segment from a FLUID cell's centre to its
+ * AIR neighbour's (1: the AIR centre, the marker-cell surface); bound by grid_forces (which
+ * writes it), free_surface, velocity_update and volume_correction_move, none of which binds the
+ * cell counts */
+#define PF_SLOT_FACE_FRACTION 5
 /* APIC affine vectors (3 vec4 per particle), bound by P2G and G2P only: neither binds cell_type */
 #define PF_SLOT_PARTICLE_AFFINE 6
 /* storage blocks: pressure and extrapolation kernels (no particle buffers bound there) */
@@ -138,12 +143,16 @@
 /* uniform block with the per-step constants (common/sim.glsl, src/sim/sim_uniforms.h) */
 #define PF_UBO_SIM 0
 
-/* cell types: a cell's word holds its kind in the low 2 bits (read it with PF_CELL_KIND); the
- * bits above are reserved for per-cell data of the kind */
+/* cell types: a cell's word holds its kind in the low 2 bits (read it with PF_CELL_KIND). Above
+ * them a FLUID cell beside AIR carries the ghost-fluid free surface's extra diagonal of the
+ * pressure operator, sum over its AIR faces of (1/theta - 1), in units of 1/PF_CELL_SURFACE_ONE
+ * (common/free_surface.glsl) */
 #define PF_CELL_AIR 0
 #define PF_CELL_FLUID 1
 #define PF_CELL_SOLID 2
 #define PF_CELL_KIND(word) ((word) & 3u)
+#define PF_CELL_SURFACE_SHIFT 2
+#define PF_CELL_SURFACE_ONE 65536.0
 
 /* status buffer words, read back a frame late */
 #define PF_STATUS_FLAGS 0

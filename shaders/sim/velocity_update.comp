@@ -1,5 +1,6 @@
-// Velocity update: subtracts the pressure gradient on faces next to FLUID cells (p = 0 in
-// AIR) and marks them valid; wall faces are 0 (free-slip) and valid; faces between two AIR
+// Velocity update: subtracts the pressure gradient on faces next to FLUID cells (p = 0 at the
+// free surface, theta of the way from a FLUID centre to an AIR one: the gradient there is
+// divided by theta, common/free_surface.glsl) and marks them valid; wall faces are 0 (free-slip) and valid; faces between two AIR
 // cells are reset to 0 and left invalid for extrapolation. SOLID cells (obstacles) are walls
 // too: a face between a SOLID cell and another keeps the obstacle's normal velocity that
 // obstacle_faces set (free-slip) and is valid; a face inside a solid (two SOLID cells) is reset
@@ -10,6 +11,7 @@ layout(std430, binding = PF_SLOT_FACE_VEL) buffer FaceVel { float face_vel[]; };
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_PRESSURE) readonly buffer Pressure { float pressure[]; };
 layout(std430, binding = PF_SLOT_FACE_VALID_OUT) writeonly buffer Valid { uint valid[]; };
+layout(std430, binding = PF_SLOT_FACE_FRACTION) readonly buffer Fraction { float face_fraction[]; };
 
 void main() {
     int id = int(flat_id());
@@ -36,7 +38,8 @@ void main() {
         float pa = ta == PF_CELL_FLUID ? pressure[a] : 0.0;
         float pb = tb == PF_CELL_FLUID ? pressure[b] : 0.0;
         float scale = sim.dt / (sim.density * sim.dx);
-        face_vel[id] -= scale * (pb - pa);
+        float theta = ta == tb ? 1.0 : face_fraction[id];
+        face_vel[id] -= scale * (pb - pa) / theta;
         valid[id] = 1u;
     } else {
         face_vel[id] = 0.0;

@@ -2,7 +2,8 @@
 // trilinear interpolation of the face displacements d = q_lo - q_hi of the potential that
 // volume_correction_setup's problem solved for (metres). Positions only: velocities are not
 // touched, so the correction never enters FLIP's velocity difference and adds no kinetic
-// energy. Walls and faces beside SOLID cells do not move (d = 0); AIR cells hold q = 0. A
+// energy. Walls and faces beside SOLID cells do not move (d = 0); q = 0 at the free surface,
+// so a face between FLUID and AIR divides its difference by theta as the velocity update does. A
 // displacement is kept within half a cell per axis, then the wall clamp of every advection
 // scheme applies.
 #include "common/sim.glsl"
@@ -10,6 +11,7 @@ layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_VOLUME_POTENTIAL) readonly buffer Potential { float potential[]; };
+layout(std430, binding = PF_SLOT_FACE_FRACTION) readonly buffer Fraction { float face_fraction[]; };
 
 float face_displacement(int axis, ivec3 f) {
     // A grid one cell thick gives the clamped stencil a zero-weight face outside the grid.
@@ -21,7 +23,7 @@ float face_displacement(int axis, ivec3 f) {
     if (ta == PF_CELL_SOLID || tb == PF_CELL_SOLID) return 0.0;
     float qa = ta == PF_CELL_FLUID ? potential[a] : 0.0;
     float qb = tb == PF_CELL_FLUID ? potential[b] : 0.0;
-    return qa - qb;
+    return ta == tb ? qa - qb : (qa - qb) / face_fraction[face_index(axis, f)];
 }
 
 void main() {

@@ -65,6 +65,8 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
         return bad("params.pressure_tolerance must be in (0, 1), got " + str(p.pressure_tolerance));
     if (!(p.sor_omega > 0.0f && p.sor_omega < 2.0f)) return bad("params.sor_omega must be in (0, 2), got " + str(p.sor_omega));
     if (enum_bits(p.p2g) >= PF_P2G_COUNT) return bad("params.p2g is not a pf_p2g value, got " + std::to_string(int32_t(enum_bits(p.p2g))));
+    if (enum_bits(p.free_surface) >= PF_FREE_SURFACE_COUNT)
+        return bad("params.free_surface is not a pf_free_surface value, got " + std::to_string(int32_t(enum_bits(p.free_surface))));
     if (enum_bits(p.transfer) >= PF_TRANSFER_COUNT)
         return bad("params.transfer is not a pf_transfer value, got " + std::to_string(int32_t(enum_bits(p.transfer))));
     if (enum_bits(p.advection) >= PF_ADVECTION_COUNT)

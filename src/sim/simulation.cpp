@@ -108,6 +108,7 @@ pf_result Simulation::init() {
     face_accum_ = gl::Buffer(gl_, size_t(faces_) * 8, GL_DYNAMIC_COPY, "face_accum");
     face_vel_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_vel");
     face_vel_old_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_vel_old");
+    face_fraction_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_fraction");
     for (auto& b : face_valid_) b = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_valid");
     cell_count_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY, "cell_count");
     cell_type_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY, "cell_type");
@@ -123,7 +124,7 @@ pf_result Simulation::init() {
     metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 32, GL_DYNAMIC_COPY, "metrics_partials");
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                          "pf_create: allocating " + std::to_string((np * 32 + size_t(faces_) * 24 + size_t(cells_) * 20) >> 20) +
+                          "pf_create: allocating " + std::to_string((np * 32 + size_t(faces_) * 28 + size_t(cells_) * 20) >> 20) +
                               " MiB of GPU buffers failed (GL error " + hex(err) + ")");
     }
 
@@ -138,8 +139,9 @@ pf_result Simulation::init() {
                       r.add_stat("g2p", PF_PASS_G2P),
                       r.add_stat("advect", PF_PASS_ADVECT),
                       r.add_stat("metrics", PF_PASS_VELOCITY_UPDATE),
-                      r.add_stat("hydrostatic_start", PF_PASS_PRESSURE_SETUP)};
-    const ProgramId needed[] = {ProgramId::fill, ProgramId::classify,
+                      r.add_stat("hydrostatic_start", PF_PASS_PRESSURE_SETUP),
+                      r.add_stat("free_surface", PF_PASS_CLASSIFY)};
+    const ProgramId needed[] = {ProgramId::fill, ProgramId::classify, ProgramId::free_surface,
                                 ProgramId::pressure_setup, ProgramId::velocity_update, ProgramId::extrapolate,
                                 ProgramId::metrics, ProgramId::metrics_finish, ProgramId::hydrostatic_start};
     for (ProgramId id : needed) {
@@ -154,6 +156,7 @@ pf_result Simulation::init() {
     // Pressure starts at zero (warm start of the first solve); everything else is written
     // before it is read.
     fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
+    fill(face_fraction_, uint32_t(faces_), 0x3f800000u, stat_.clear);  // 1.0f: the marker-cell surface
     fill(status_, PF_STATUS_WORDS, 0u, stat_.clear);
     const uint32_t record[PF_COUNT_WORDS] = {0, 1, 0, 0, 4, 0, 0, 0};
     count_record_.upload(0, sizeof(record), record);
@@ -380,6 +383,7 @@ void Simulation::upload_uniforms(float dt) {
     u.flip_ratio = desc_.params.flip_ratio;
     u.particle_count = particle_count_;
     u.separation = desc_.params.separation;
+    u.ghost_fluid = desc_.params.free_surface == PF_FREE_SURFACE_GHOST_FLUID ? 1u : 0u;
     u.rest_particles = float(desc_.fill_particles_per_cell);
     u.volume_correction = desc_.params.volume_correction;
     uniforms_.upload(0, sizeof(SimUniforms), &u);
@@ -406,13 +410,19 @@ void Simulation::run_substep(bool correct_volume) {
                apic ? Bindings{pos, vel, accum, count, status, affine} : Bindings{pos, vel, accum, count, status}});
     }
     r.run({particle_programs(desc_.params).grid_forces, stat_.grid_forces, faces,
-           {{PF_SLOT_FACE_ACCUM, &face_accum_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}}});
+           {{PF_SLOT_FACE_ACCUM, &face_accum_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_},
+            {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
     run_effects(EffectStage::after_grid_forces);
     r.run({ProgramId::classify, stat_.classify, cells,
            {{PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_CELL_TYPE, &cell_type_}}});
     run_effects(EffectStage::after_classify);
+    // The ghost-fluid words, once the cell kinds are final (obstacles included).
+    if (desc_.params.free_surface == PF_FREE_SURFACE_GHOST_FLUID)
+        r.run({ProgramId::free_surface, stat_.free_surface, cells,
+               {{PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
     if (correct_volume)
-        volume_correction_.run(r, *solver_, desc_.params, {pos_, cell_type_, cell_count_, pressure_, cells, np});
+        volume_correction_.run(r, *solver_, desc_.params,
+                               {pos_, cell_type_, cell_count_, pressure_, face_fraction_, cells, np});
     r.run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
             {PF_SLOT_PRESSURE, &pressure_}}});
@@ -434,7 +444,7 @@ void Simulation::run_substep(bool correct_volume) {
                                       known ? solver_residual_ : -1.0f});
     r.run({ProgramId::velocity_update, stat_.velocity_update, faces,
            {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
-            {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}}});
+            {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
     run_effects(EffectStage::after_velocity_update);
     valid_current_ = 0;
     for (uint32_t layer = 0; layer < desc_.params.extrapolation_layers; ++layer) {
@@ -591,7 +601,7 @@ pf_result Simulation::run_substep_for_test(float dt) {
 pf_result Simulation::run_volume_correction_for_test() {
     run_one_step_for_test(0.01f, [&] {
         volume_correction_.run(*runner_, *solver_, desc_.params,
-                               {pos_, cell_type_, cell_count_, pressure_, uint64_t(cells_), particle_count_});
+                               {pos_, cell_type_, cell_count_, pressure_, face_fraction_, uint64_t(cells_), particle_count_});
     });
     return PF_OK;
 }
@@ -1167,6 +1177,7 @@ const gl::Buffer& Simulation::grid_buffer(GridBuffer which) const {
         case GridBuffer::face_accum: b = &face_accum_; break;
         case GridBuffer::face_vel: b = &face_vel_; break;
         case GridBuffer::face_vel_old: b = &face_vel_old_; break;
+        case GridBuffer::face_fraction: b = &face_fraction_; break;
         case GridBuffer::face_valid: b = &face_valid_[valid_current_]; break;
         case GridBuffer::cell_count: b = &cell_count_; break;
         case GridBuffer::cell_type: b = &cell_type_; break;

@@ -28,7 +28,7 @@
 namespace pf {
 
 // Grid buffers tests may read back (raw 32-bit words).
-enum class GridBuffer { face_accum, face_vel, face_vel_old, face_valid, cell_count, cell_type, pressure, rhs, status };
+enum class GridBuffer { face_accum, face_vel, face_vel_old, face_valid, face_fraction, cell_count, cell_type, pressure, rhs, status };
 
 class Simulation {
 public:
@@ -210,6 +210,7 @@ private:
         StatId clear, p2g, grid_forces, classify, pressure_setup, velocity_update, extrapolate, g2p, advect;
         StatId metrics;  // once per step, in the PF_PASS_VELOCITY_UPDATE group
         StatId hydrostatic_start;  // after particles were added, in the PF_PASS_PRESSURE_SETUP group
+        StatId free_surface;  // the ghost-fluid words, in the PF_PASS_CLASSIFY group
     };
 
     gl::Api gl_{};
@@ -255,7 +256,7 @@ private:
     int32_t cells_ = 0;
     std::array<int32_t, 3> face_counts_{};
     int32_t faces_ = 0;
-    gl::Buffer face_accum_, face_vel_, face_vel_old_, face_valid_[2];
+    gl::Buffer face_accum_, face_vel_, face_vel_old_, face_valid_[2], face_fraction_;
     gl::Buffer cell_count_, cell_type_, pressure_, rhs_;
     int valid_current_ = 0;     // which valid mask is the latest
     // The next substep starts its solve from the hydrostatic estimate (particles were added to

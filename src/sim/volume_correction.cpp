@@ -52,7 +52,8 @@ void VolumeCorrection::run(PassRunner& runner, PressureSolver& solver, const pf_
                 in.particles,
                 {{PF_SLOT_PARTICLE_POS, &in.positions},
                  {PF_SLOT_CELL_TYPE, &in.cell_type},
-                 {PF_SLOT_VOLUME_POTENTIAL, &potential_}}});
+                 {PF_SLOT_VOLUME_POTENTIAL, &potential_},
+                 {PF_SLOT_FACE_FRACTION, &in.face_fraction}}});
 }
 
 }  // namespace pf

@@ -26,12 +26,14 @@ public:
     std::string init(const gl::Api& gl, PassRunner& runner, uint32_t cells);
 
     // What it reads and moves: this substep's cell types and P2G counts, the last solve's
-    // pressure (with separation, where liquid may be leaving a wall), the particles.
+    // pressure (with separation, where liquid may be leaving a wall), the free surface's face
+    // fractions, the particles.
     struct Inputs {
         const gl::Buffer& positions;
         const gl::Buffer& cell_type;
         const gl::Buffer& cell_count;
         const gl::Buffer& pressure;
+        const gl::Buffer& face_fraction;
         uint64_t cells = 0;
         uint64_t particles = 0;
     };

@@ -17,7 +17,7 @@ namespace {
 
 constexpr float kDt = 1.0f / 60.0f;
 
-// pf_sim_params of a header without its last field (energy_gain_limit).
+// pf_sim_params of a header without its last field (free_surface).
 struct OldParams {
     uint32_t struct_size;
     float gravity[3];
@@ -36,9 +36,10 @@ struct OldParams {
     float volume_correction;
     pf_p2g p2g;
     float volume_loss_limit;
+    float energy_gain_limit;
 };
 static_assert(sizeof(OldParams) + 4 == sizeof(pf_sim_params), "one field fewer");
-static_assert(offsetof(OldParams, volume_loss_limit) == offsetof(pf_sim_params, volume_loss_limit), "same prefix");
+static_assert(offsetof(OldParams, energy_gain_limit) == offsetof(pf_sim_params, energy_gain_limit), "same prefix");
 
 // pf_sim_desc of a header without `features`, holding params of that older layout.
 struct OldDesc {
@@ -89,11 +90,12 @@ TEST_F(Abi, OlderParamsWithoutTheirLastFieldTakeItsDefault) {
     old.volume_loss_limit = 0.3f;
     Poisoned<OldParams> buf(old);
     ASSERT_EQ(pf_set_params(sim_.get(), static_cast<const pf_sim_params*>(buf.data())), PF_OK) << last_log();
-    pf_sim_params got{};
+    pf_sim_params got = sized_params();
     ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
     EXPECT_EQ(got.flip_ratio, 0.5f);
     EXPECT_EQ(got.volume_loss_limit, 0.3f);
-    EXPECT_EQ(got.energy_gain_limit, pf_default_sim_params().energy_gain_limit) << "the missing field's default";
+    EXPECT_EQ(got.energy_gain_limit, pf_default_sim_params().energy_gain_limit);
+    EXPECT_EQ(got.free_surface, pf_default_sim_params().free_surface) << "the missing field's default";
     EXPECT_TRUE(buf.tail_intact());
 
     // Written back to the older caller: only its bytes, struct_size saying how many.
@@ -123,10 +125,10 @@ TEST_F(Abi, OlderDescWithOlderParamsAndNoFeaturesCreates) {
     uint32_t features = 99;
     ASSERT_EQ(pf_get_features(s, &features), PF_OK);
     EXPECT_EQ(features, 0u) << "the missing features field is read as poison instead of its default";
-    pf_sim_params got{};
+    pf_sim_params got = sized_params();
     ASSERT_EQ(pf_get_params(s, &got), PF_OK);
     EXPECT_EQ(got.cfl, 2.0f);
-    EXPECT_EQ(got.energy_gain_limit, pf_default_sim_params().energy_gain_limit);
+    EXPECT_EQ(got.free_surface, pf_default_sim_params().free_surface);
     // The logger was found after the older (shorter) params: a refused call reaches it.
     clear_log();
     EXPECT_EQ(pf_step(s, -1.0f), PF_ERROR_INVALID_ARGUMENT);
@@ -348,7 +350,7 @@ TEST_F(Abi, ZeroInitialisedStructsMeanDefaults) {
     pf_stats st{};
     ASSERT_EQ(pf_get_stats(s, &st), PF_OK);
     EXPECT_EQ(st.max_particles, pf_default_sim_desc().max_particles);
-    pf_sim_params got{};
+    pf_sim_params got = sized_params();
     ASSERT_EQ(pf_get_params(s, &got), PF_OK);
     const pf_sim_params def = pf_default_sim_params();
     EXPECT_EQ(0, std::memcmp(&got, &def, sizeof got));

@@ -41,10 +41,10 @@ std::string params_str(const pf_sim_params& p) {
     char buf[256];
     std::snprintf(buf, sizeof buf,
                   "g=(%g,%g,%g) flip=%g iters=%u omega=%g cfl=%g substeps=%u layers=%u solver=%d tol=%g sor=%g "
-                  "transfer=%d advection=%d",
+                  "transfer=%d advection=%d free_surface=%d",
                   p.gravity[0], p.gravity[1], p.gravity[2], p.flip_ratio, p.pressure_iterations, p.jacobi_omega, p.cfl,
                   p.max_substeps, p.extrapolation_layers, int(p.pressure_solver), p.pressure_tolerance, p.sor_omega,
-                  int(p.transfer), int(p.advection));
+                  int(p.transfer), int(p.advection), int(p.free_surface));
     return buf;
 }
 
@@ -352,7 +352,7 @@ TEST_F(CreateValidation, AcceptsBoundaryValues) {
     {
         SimPtr s = create(hi);
         ASSERT_TRUE(s) << "upper bounds";
-        pf_sim_params p{};
+        pf_sim_params p = sized_params();
         ASSERT_EQ(pf_get_params(s.get(), &p), PF_OK);
         EXPECT_TRUE(same_params(p, hi.params)) << params_str(p) << " vs " << params_str(hi.params);
     }
@@ -373,7 +373,7 @@ TEST_F(CreateValidation, AcceptsBoundaryValues) {
     {
         SimPtr s = create(lo);
         ASSERT_TRUE(s) << "lower bounds";
-        pf_sim_params p{};
+        pf_sim_params p = sized_params();
         ASSERT_EQ(pf_get_params(s.get(), &p), PF_OK);
         EXPECT_TRUE(same_params(p, lo.params)) << params_str(p) << " vs " << params_str(lo.params);
     }
@@ -527,7 +527,7 @@ TEST_F(ApiValidation, SetParamsRejectsAndKeepsParams) {
     ASSERT_EQ(pf_set_params(sim_.get(), &custom), PF_OK) << last_log();
     for (const ParamCase& c : bad_param_cases()) {
         SCOPED_TRACE(c.name);
-        pf_sim_params before{}, after{};
+        pf_sim_params before = sized_params(), after = sized_params();
         ASSERT_EQ(pf_get_params(sim_.get(), &before), PF_OK);
         ASSERT_TRUE(same_params(before, custom)) << params_str(before);
         pf_sim_params bad = custom;
@@ -553,6 +553,7 @@ TEST_F(ApiValidation, SetParamsAcceptsBoundaryValues) {
     hi.transfer = pf_transfer(PF_TRANSFER_COUNT - 1);
     hi.advection = pf_advection(PF_ADVECTION_COUNT - 1);
     hi.p2g = pf_p2g(PF_P2G_COUNT - 1);
+    hi.free_surface = pf_free_surface(PF_FREE_SURFACE_COUNT - 1);
     pf_sim_params lo = pf_default_sim_params();
     lo.flip_ratio = 0.0f;
     lo.pressure_iterations = 1;
@@ -564,7 +565,7 @@ TEST_F(ApiValidation, SetParamsAcceptsBoundaryValues) {
     lo.sor_omega = 1e-6f;
     for (const pf_sim_params& p : {hi, lo}) {
         EXPECT_EQ(pf_set_params(sim_.get(), &p), PF_OK) << params_str(p) << ": " << last_log();
-        pf_sim_params got{};
+        pf_sim_params got = sized_params();
         ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
         EXPECT_TRUE(same_params(got, p)) << "set " << params_str(p) << "\ngot " << params_str(got);
         EXPECT_EQ(pf_step(sim_.get(), kDt), PF_OK) << params_str(p) << ": " << last_log();
@@ -582,7 +583,7 @@ TEST_F(ApiValidation, ZeroedParamsTakeEveryDefaultAndStructSizeMakesZeroLiteral)
     const pf_sim_params def = pf_default_sim_params();
     const pf_sim_params zero{};
     ASSERT_EQ(pf_set_params(sim_.get(), &zero), PF_OK) << last_log();
-    pf_sim_params got{};
+    pf_sim_params got = sized_params();
     ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
     EXPECT_EQ(got.struct_size, uint32_t(sizeof(pf_sim_params)));
     EXPECT_EQ(0, std::memcmp(&got, &def, sizeof got)) << params_str(got) << " vs " << params_str(def);
@@ -628,7 +629,7 @@ TEST_F(CreateValidation, ZeroedDescParamsTakeDefaults) {
     SimPtr s = create(d);
     ASSERT_TRUE(s);
     const pf_sim_params def = pf_default_sim_params();
-    pf_sim_params got{};
+    pf_sim_params got = sized_params();
     ASSERT_EQ(pf_get_params(s.get(), &got), PF_OK);
     EXPECT_EQ(got.pressure_iterations, def.pressure_iterations);
     EXPECT_EQ(got.jacobi_omega, def.jacobi_omega);
@@ -879,7 +880,7 @@ TEST_F(ApiValidation, ClearParticlesKeepsParams) {
     custom.pressure_iterations = 17;
     ASSERT_EQ(pf_set_params(sim_.get(), &custom), PF_OK);
     ASSERT_EQ(pf_clear_particles(sim_.get()), PF_OK) << last_log();
-    pf_sim_params got{};
+    pf_sim_params got = sized_params();
     ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
     EXPECT_TRUE(same_params(got, custom)) << params_str(got);
     EXPECT_REJECTED(pf_read_particles(sim_.get(), 0, 1, nullptr, nullptr), PF_ERROR_INVALID_ARGUMENT,
@@ -892,7 +893,7 @@ TEST_F(ApiValidation, ClearParticlesKeepsParams) {
 
 // Issue 6: the default configuration is the balanced preset.
 TEST(QualityPresets, EachIsValidDistinctAndBalancedIsTheDefault) {
-    pf_sim_params fast{}, balanced{}, accurate{};
+    pf_sim_params fast = sized_params(), balanced = sized_params(), accurate = sized_params();
     ASSERT_EQ(pf_quality_params(PF_QUALITY_FAST, &fast), PF_OK);
     ASSERT_EQ(pf_quality_params(PF_QUALITY_BALANCED, &balanced), PF_OK);
     ASSERT_EQ(pf_quality_params(PF_QUALITY_ACCURATE, &accurate), PF_OK);
@@ -922,10 +923,10 @@ TEST(QualityPresets, UnknownQualityOrNullOutIsRefusedAndOutUntouched) {
 
 TEST_F(ApiValidation, EveryPresetIsAcceptedAndSteps) {
     for (int q = 0; q < PF_QUALITY_COUNT; ++q) {
-        pf_sim_params p{};
+        pf_sim_params p = sized_params();
         ASSERT_EQ(pf_quality_params(pf_quality(q), &p), PF_OK);
         ASSERT_EQ(pf_set_params(sim_.get(), &p), PF_OK) << q << ": " << last_log();
-        pf_sim_params got{};
+        pf_sim_params got = sized_params();
         ASSERT_EQ(pf_get_params(sim_.get(), &got), PF_OK);
         EXPECT_TRUE(same_params(got, p)) << q;
         for (int i = 0; i < 3; ++i) ASSERT_EQ(pf_step(sim_.get(), kDt), PF_OK) << q;

@@ -75,7 +75,7 @@ SimPtr make_scene(Effects& t, uint32_t features) {
 // the default solver's entries (MGPCG and its V-cycle), then the volume correction's.
 const std::vector<std::string> kCoreList = {"clear",       "p2g", "grid_forces", "classify", "pressure_setup",
                                             "velocity_update", "extrapolate", "g2p", "advect", "metrics",
-                                            "hydrostatic_start", "mgpcg", "mgpcg/precondition",
+                                            "hydrostatic_start", "free_surface", "mgpcg", "mgpcg/precondition",
                                             "volume_correction_setup", "volume_correction_solve",
                                             "volume_correction_move"};
 

@@ -75,7 +75,7 @@ void GlState::etiquette(EngineProgram kind) {
                  [&] { EXPECT_EQ(pf_read_particles(sim, 0, n, pos.data(), pv.data()), PF_OK) << last_log(); });
 
     // flip_ratio 0.95 -> 0 builds the PIC G2P program; -> 0.5 switches back.
-    pf_sim_params p{};
+    pf_sim_params p = sized_params();
     ASSERT_EQ(pf_get_params(sim, &p), PF_OK);
     p.flip_ratio = 0.0f;
     guarded_call(engine, v++, "pf_set_params (flip 0.95 -> 0, compiles PIC G2P)",
@@ -268,7 +268,7 @@ TEST_F(GlState, CreateDestroyLoopLeaksNoGlObjects) {
         ASSERT_EQ(pf_fill_box(sim, lo, hi, nullptr), PF_OK);
         for (int s = 0; s < 3; ++s) ASSERT_EQ(pf_step(sim, kDt), PF_OK);
         if (round % 10 == 9) {  // a flip change (second G2P program) in some rounds
-            pf_sim_params p{};
+            pf_sim_params p = sized_params();
             pf_get_params(sim, &p);
             p.flip_ratio = (round % 2) ? 0.0f : 0.5f;
             ASSERT_EQ(pf_set_params(sim, &p), PF_OK);

@@ -111,7 +111,7 @@ protected:
     pf_sim_desc desc(uint32_t nx, uint32_t ny, uint32_t nz) const {
         pf_sim_desc d = test_desc(nx, ny, nz, 0.05f);
         d.features = PF_FEATURE_OBSTACLES;
-        pf_sim_params preset{};
+        pf_sim_params preset = sized_params();
         EXPECT_EQ(pf_quality_params(GetParam().preset, &preset), PF_OK);
         d.params.pressure_solver = preset.pressure_solver;
         d.params.pressure_tolerance = preset.pressure_tolerance;

@@ -269,7 +269,7 @@ TEST_F(Physics, SubstepsFollowCfl) {
     EXPECT_EQ(st.dispatches[PF_PASS_EXTRAPOLATE], uint32_t(expected) * d.params.extrapolation_layers);
     EXPECT_EQ(st.dispatches[PF_PASS_P2G], uint32_t(expected));
 
-    pf_sim_params p{};
+    pf_sim_params p = sized_params();
     ASSERT_EQ(pf_get_params(sim.get(), &p), PF_OK);
     p.max_substeps = 3;
     ASSERT_EQ(pf_set_params(sim.get(), &p), PF_OK);

@@ -117,7 +117,7 @@ void Snapshots::continuation(const Config& c) {
     ASSERT_EQ(pf_add_particles(s, xyz, nullptr, 1), PF_OK);
     const float center[3] = {0.2f, 0.2f, 0.2f}, dv[3] = {0.0f, 2.0f, 0.0f};
     ASSERT_EQ(pf_push(s, center, 0.3f, dv), PF_OK);
-    pf_sim_params p{};
+    pf_sim_params p = sized_params();
     ASSERT_EQ(pf_get_params(s, &p), PF_OK);
     const pf_sim_params saved_params = p;
     p.flip_ratio = 0.5f;
@@ -132,7 +132,7 @@ void Snapshots::continuation(const Config& c) {
 
     ASSERT_EQ(pf_restore_snapshot(s, snap.data(), snap.size()), PF_OK) << last_log();
     expect_identical(particles(s), at_save, "right after the restore");
-    pf_sim_params restored{};
+    pf_sim_params restored = sized_params();
     ASSERT_EQ(pf_get_params(s, &restored), PF_OK);
     EXPECT_EQ(0, std::memcmp(&restored, &saved_params, sizeof restored)) << "parameters not restored";
     uint32_t features = 0;

@@ -99,12 +99,12 @@ TEST_F(TransferAdvection, SwitchingBetweenStepsKeepsEveryParticle) {
         {PF_TRANSFER_PIC_FLIP, PF_ADVECTION_RK3}, {PF_TRANSFER_PIC_FLIP, PF_ADVECTION_EULER}};
     for (const auto& [transfer, advection] : sequence) {
         SCOPED_TRACE("transfer " + std::to_string(transfer) + ", advection " + std::to_string(advection));
-        pf_sim_params p{};
+        pf_sim_params p = sized_params();
         ASSERT_EQ(pf_get_params(sim.get(), &p), PF_OK);
         p.transfer = transfer;
         p.advection = advection;
         ASSERT_EQ(pf_set_params(sim.get(), &p), PF_OK) << last_log();
-        pf_sim_params got{};
+        pf_sim_params got = sized_params();
         ASSERT_EQ(pf_get_params(sim.get(), &got), PF_OK);
         EXPECT_EQ(got.transfer, transfer);
         EXPECT_EQ(got.advection, advection);

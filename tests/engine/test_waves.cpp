@@ -4,15 +4,17 @@
 // 2 cells) and a 3D one (8 cells; 4 in CI's fast mode): the scheme never adds energy, and the
 // amplitude lost per period and the period stay within their bounds.
 //
-// Measured on llvmpipe (3 periods, 2026-11-25): the largest rise of kinetic + potential energy
-// above its start is at most 0.008 of the wave's own energy in every preset and tank; on the
-// code before issue 17 the fast preset's rose to 91 times the wave's energy (2 cells thick) and
-// the balanced preset lost 45% of its amplitude per period. Now the amplitude lost per period is
-// 24-35% and the period 2.1-3.0% long in every preset (on the H100 over 10 periods: 32-44% and
-// -4.2..+4.6%, docs/accuracy.md). Issue 17's targets (5% per period with balanced and accurate,
-// 15% with fast; the period within 2%) are not met, and no knob meets them ("Standing waves"
-// there). The bounds on those two guard the measured level (50%, 5%); the energy bound is the
-// issue's.
+// Measured on llvmpipe (3 periods, 2026-11-25): on the code before issue 17 the fast preset's
+// energy rose to 91 times the wave's energy (2 cells thick) and the balanced preset lost 45% of
+// its amplitude per period. With the position-only volume correction and the default marker-cell
+// surface every preset loses 24-35% per period with the period 2.1-3.0% long: those bounds guard
+// the measured level (50%, 5%). With the ghost-fluid surface (PF_FREE_SURFACE_GHOST_FLUID,
+// design.md §4.6a) the loss is 7.0-10.1% per period, the period within 0.4% and the largest
+// energy rise 0.009-0.052 of the wave's energy; its bounds are the issue's fast-preset loss bound
+// (15%) and balanced/accurate period bound (2%), which the marker-cell surface fails. Over 10
+// periods on the H100 the accurate preset (APIC) with it loses 17-19% and runs 4% short, so its
+// long-mode guard is 20% and 5%. Issue 17's 5% loss bound for balanced and accurate is not met
+// (docs/accuracy.md, "Standing waves"). The energy bound is the issue's.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -44,21 +46,29 @@ constexpr const char* kPresetNames[] = {"fast", "balanced", "accurate"};
 // The scheme adds no energy: E(t) - E(0) stays below this share of the wave's own energy
 // (g A^2 / 4h per unit mass), at every frame.
 constexpr double kEnergyGainBound = 0.1;
-// Guards at the measured level (above): amplitude lost per period, relative period error.
+// Amplitude lost per period and relative period error (above): the marker-cell surface's guards,
+// then the ghost-fluid surface's bounds.
 constexpr double kLossPerPeriodBound = 0.50;
 constexpr double kPeriodErrorBound = 0.05;
+constexpr double kGhostLossPerPeriodBound = 0.15;
+constexpr double kGhostPeriodErrorBound = 0.02;
+constexpr double kGhostApicLongLossBound = 0.20;
+constexpr double kGhostApicLongPeriodBound = 0.05;
 
 class Waves : public GpuTest {
 protected:
-    WaveRun run_wave(pf_quality quality, uint32_t thickness_cells, double periods, const char* label);
+    WaveRun run_wave(pf_quality quality, uint32_t thickness_cells, double periods, const char* label,
+                     pf_free_surface surface = PF_FREE_SURFACE_MARKER_CELL);
     void check_presets(uint32_t thickness);
 };
 
-WaveRun Waves::run_wave(pf_quality quality, uint32_t thickness_cells, double periods, const char* label) {
+WaveRun Waves::run_wave(pf_quality quality, uint32_t thickness_cells, double periods, const char* label,
+                        pf_free_surface surface) {
     pfs::StandingWave wave;
     wave.thickness = thickness_cells * wave.dx;
     pf_sim_desc d = test_desc(64, 48, thickness_cells, float(wave.dx));
     EXPECT_EQ(pf_quality_params(quality, &d.params), PF_OK);
+    d.params.free_surface = surface;
     SimPtr sim = create(d);
     WaveRun run;
     if (!sim) return run;
@@ -115,5 +125,21 @@ void Waves::check_presets(uint32_t thickness) {
 TEST_F(Waves, ThinTankOneCell) { check_presets(1); }
 TEST_F(Waves, ThinTankTwoCells) { check_presets(2); }
 TEST_F(Waves, Tank3D) { check_presets(long_mode() ? 8 : 4); }
+
+// The ghost-fluid free surface, every preset, 2 cells thick.
+TEST_F(Waves, GhostFluidSurfaceKeepsTheWave) {
+    const pfs::StandingWave wave;
+    for (size_t i = 0; i < std::size(kPresets); ++i) {
+        const std::string label = std::string(kPresetNames[i]) + "_ghost_fluid_2";
+        const WaveRun r = run_wave(kPresets[i], 2, periods_to_run(), label.c_str(), PF_FREE_SURFACE_GHOST_FLUID);
+        const bool apic_long = kPresets[i] == PF_QUALITY_ACCURATE && long_mode();
+        EXPECT_LT(r.energy_gain, kEnergyGainBound) << label;
+        EXPECT_GE(r.fit.extrema, 6u) << label << ": the wave was smothered";
+        EXPECT_LT(r.fit.loss_per_period, apic_long ? kGhostApicLongLossBound : kGhostLossPerPeriodBound) << label;
+        EXPECT_LT(std::abs(r.fit.period / wave.period() - 1.0), apic_long ? kGhostApicLongPeriodBound : kGhostPeriodErrorBound)
+            << label;
+        EXPECT_FALSE(r.flags & PF_FLAG_ENERGY_GAINED) << label;
+    }
+}
 
 }  // namespace pf::test

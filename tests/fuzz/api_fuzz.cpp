@@ -108,8 +108,13 @@ bool finite3(const float v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1
 
 // A zero-initialised struct (struct_size 0) takes the default for each zero 4-byte field; then
 // the "0 = default" fields take their default; the rest are literal (pf.h ABI rules).
+// Fields beyond the caller's struct_size (0: the first layout, which ended before free_surface)
+// were never passed and take their defaults.
+constexpr size_t kFirstParamsLayout = offsetof(pf_sim_params, free_surface);
 pf_sim_params resolve(pf_sim_params p) {
     const pf_sim_params d = pf_default_sim_params();
+    const size_t passed = std::min(p.struct_size ? size_t(p.struct_size) : kFirstParamsLayout, sizeof p);
+    std::memcpy(reinterpret_cast<uint8_t*>(&p) + passed, reinterpret_cast<const uint8_t*>(&d) + passed, sizeof p - passed);
     if (p.struct_size == 0) {
         static_assert(sizeof(pf_sim_params) % 4 == 0, "4-byte fields");
         uint32_t words[sizeof(pf_sim_params) / 4], defaults[sizeof(pf_sim_params) / 4];
@@ -140,7 +145,7 @@ bool params_valid(const pf_sim_params& r) {  // r resolved
            r.pressure_tolerance < 1 && r.sor_omega > 0 && r.sor_omega < 2 && raw(r.transfer) < PF_TRANSFER_COUNT &&
            raw(r.advection) < PF_ADVECTION_COUNT && r.volume_correction >= 0 && r.volume_correction <= 1 &&
            raw(r.p2g) < PF_P2G_COUNT && r.volume_loss_limit > 0 && r.volume_loss_limit <= 1 &&
-           r.energy_gain_limit > 0 && r.energy_gain_limit <= 100;
+           r.energy_gain_limit > 0 && r.energy_gain_limit <= 100 && raw(r.free_surface) < PF_FREE_SURFACE_COUNT;
 }
 
 bool desc_valid(const pf_sim_desc& d) {
@@ -182,6 +187,7 @@ pf_sim_params random_params(Rng& g) {
     if (g.chance(0.3)) g.enumeration(p.p2g, PF_P2G_COUNT);
     if (g.chance(0.1)) p.volume_loss_limit = g.real(0, 1, h);
     if (g.chance(0.1)) p.energy_gain_limit = g.real(0, 100, h);
+    if (g.chance(0.3)) g.enumeration(p.free_surface, PF_FREE_SURFACE_COUNT);
     return p;
 }
 
@@ -209,9 +215,15 @@ pf_sim_desc random_desc(Rng& g) {
 // Bit-for-bit equality of n floats (an empty vector's data() may be NULL, which memcmp must not see).
 bool same_floats(const float* a, const float* b, size_t n) { return n == 0 || std::memcmp(a, b, n * 4) == 0; }
 
+pf_sim_params sized_params() {
+    pf_sim_params p{};
+    p.struct_size = sizeof p;
+    return p;
+}
+
 struct Snapshot {
     std::vector<float> pos, vel;
-    pf_sim_params params{};
+    pf_sim_params params = sized_params();  // read back with every field of this header
     bool operator==(const Snapshot& o) const {
         return pos.size() == o.pos.size() && same_floats(pos.data(), o.pos.data(), pos.size()) &&
                same_floats(vel.data(), o.vel.data(), vel.size()) &&

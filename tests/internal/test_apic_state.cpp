@@ -22,7 +22,7 @@ protected:
         return m;
     }
     static void set_transfer(pf_sim* sim, pf_transfer transfer) {
-        pf_sim_params p{};
+        pf_sim_params p = sized_params();
         ASSERT_EQ(pf_get_params(sim, &p), PF_OK);
         p.transfer = transfer;
         ASSERT_EQ(pf_set_params(sim, &p), PF_OK) << last_log();

@@ -104,7 +104,7 @@ TEST_F(EffectsPipeline, EveryEffectPassBindsEverySlotItsProgramUses) {
     // The effect passes bind the same buffers whatever the scheme; six configurations take
     // every solver, transfer, advection and P2G scheme once.
     for (uint32_t i = 0; i < 6; ++i) {
-        pf_sim_params p{};
+        pf_sim_params p = sized_params();
         ASSERT_EQ(pf_get_params(handle.get(), &p), PF_OK);
         p.pressure_solver = pf_pressure_solver(i % PF_PRESSURE_SOLVER_COUNT);
         p.transfer = pf_transfer(i % PF_TRANSFER_COUNT);

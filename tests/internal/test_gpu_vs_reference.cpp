@@ -152,6 +152,9 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
     d.params.extrapolation_layers = 3;
     d.params.gravity[0] = 1.5f;         // every axis gets a body force
     d.params.separation = seed % 2;     // odd seeds: projected Jacobi (p >= 0)
+    // Seeds 2 and 3: the ghost-fluid surface (theta from the weights); 1 and 4: the marker cell.
+    const bool ghost = (seed / 2) % 2 == 1;
+    d.params.free_surface = ghost ? PF_FREE_SURFACE_GHOST_FLUID : PF_FREE_SURFACE_MARKER_CELL;
     d.params.transfer = pipeline.transfer;
     d.params.advection = pipeline.advection;
     d.params.gravity[2] = -0.5f;
@@ -225,6 +228,22 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
         ASSERT_NEAR(vel_old[f], forces.vel_old[f], 1e-6 * (1.0 + std::abs(forces.vel_old[f]))) << "face " << f;
     }
 
+    // The free surface (§4.6a): theta per face (from the GPU's weights with the ghost fluid, 1 with
+    // the marker cell), and each FLUID word's extra diagonal (fixed point, 1/PF_CELL_SURFACE_ONE, plus float rounding of 1/theta).
+    const std::vector<double> theta_gpu = words_as_floats(sim.read_grid(GridBuffer::face_fraction));
+    const std::vector<double> theta = ghost ? ref::free_surface_fractions(g, gpu_p2g.weight, double(d.fill_particles_per_cell))
+                                            : std::vector<double>(size_t(g.faces()), 1.0);
+    for (int f = 0; f < g.faces(); ++f) ASSERT_NEAR(theta_gpu[f], theta[f], 1e-5) << "face " << f;
+    const std::vector<double> extra = ref::surface_extra_diagonal(g, type, theta_gpu);
+    size_t surface_cells = 0;
+    for (int c = 0; c < g.cells(); ++c) {
+        const double got = double(type_words[c] >> PF_CELL_SURFACE_SHIFT) / PF_CELL_SURFACE_ONE;
+        ASSERT_NEAR(got, extra[c], 1.0 / PF_CELL_SURFACE_ONE + 1e-6 * extra[c]) << "cell " << c;
+        surface_cells += extra[c] > 0.0;
+    }
+    if (ghost) EXPECT_GT(surface_cells, 0u) << "the scene must have a free surface with theta < 1";
+    else EXPECT_EQ(surface_cells, 0u) << "the marker-cell surface carries no extra diagonal";
+
     // Pressure setup: b = -div * rho dx / dt on FLUID cells.
     const std::vector<double> rhs = words_as_floats(sim.read_grid(GridBuffer::rhs));
     const std::vector<double> rhs_ref = ref::pressure_rhs(g, type, forces.vel, rho, dt);
@@ -240,14 +259,14 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
     ref::hydrostatic_start(g, type, gravity, rho, p_start);
     const std::vector<double> p_ref = ref::jacobi(g, type, rhs, p_start,
                                                   int(d.params.pressure_iterations), d.params.jacobi_omega,
-                                                  d.params.separation != 0);
+                                                  d.params.separation != 0, theta_gpu);
     double p_scale = 0;
     for (double v : p_ref) p_scale = std::max(p_scale, std::abs(v));
     ASSERT_GT(p_scale, 1.0);
     for (int c = 0; c < g.cells(); ++c) ASSERT_NEAR(p[c], p_ref[c], 1e-5 * p_scale) << "cell " << c;
 
     // Velocity update and extrapolation, from the GPU's pressure.
-    ref::VelocityUpdate vu = ref::velocity_update(g, type, forces.vel, p, rho, dt);
+    ref::VelocityUpdate vu = ref::velocity_update(g, type, forces.vel, p, rho, dt, theta_gpu);
     ref::extrapolate(g, vu, int(d.params.extrapolation_layers));
     const std::vector<double> vel = words_as_floats(sim.read_grid(GridBuffer::face_vel));
     const std::vector<uint32_t> valid = sim.read_grid(GridBuffer::face_valid);

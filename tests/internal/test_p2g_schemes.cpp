@@ -458,7 +458,7 @@ TEST_F(P2gSchemes, SortedGatherPassesAreListedUnderP2gOnceSelected) {
     EXPECT_EQ(find(list, "p2g_gather"), nullptr);
     const uint32_t programs_before = pf::entry(sim)->impl->runner().programs_built();
 
-    pf_sim_params p{};
+    pf_sim_params p = sized_params();
     ASSERT_EQ(pf_get_params(sim.get(), &p), PF_OK);
     p.p2g = PF_P2G_SORTED_GATHER;
     ASSERT_EQ(pf_set_params(sim.get(), &p), PF_OK) << last_log();
@@ -564,12 +564,12 @@ TEST_F(P2gSchemes, SortedGatherRefusesAGridBeyondTheStorageBlockLimit) {
     ASSERT_GT(cells * 32, uint64_t(max_block));
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
-    pf_sim_params p{};
+    pf_sim_params p = sized_params();
     ASSERT_EQ(pf_get_params(sim.get(), &p), PF_OK);
     p.p2g = PF_P2G_SORTED_GATHER;
     EXPECT_EQ(pf_set_params(sim.get(), &p), PF_ERROR_CAPACITY);
     EXPECT_NE(std::string(last_log()).find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos) << last_log();
-    pf_sim_params now{};
+    pf_sim_params now = sized_params();
     ASSERT_EQ(pf_get_params(sim.get(), &now), PF_OK);
     EXPECT_EQ(now.p2g, PF_P2G_FIXED_POINT);
     sim.reset();

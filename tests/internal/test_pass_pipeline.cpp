@@ -58,7 +58,7 @@ TEST_F(PassPipeline, EveryPassBindsEverySlotItsProgramUses) {
         for (uint32_t separation : {0u, 1u}) {
             for (uint32_t transfer = 0; transfer < PF_TRANSFER_COUNT; ++transfer) {
                 for (uint32_t advection = 0; advection < PF_ADVECTION_COUNT; ++advection) {
-                    pf_sim_params p{};
+                    pf_sim_params p = sized_params();
                     ASSERT_EQ(pf_get_params(handle.get(), &p), PF_OK);
                     p.pressure_solver = pf_pressure_solver(solver);
                     p.separation = separation;

@@ -103,6 +103,25 @@ template <class F> void for_each_neighbour(const Grid& grid, int i, int j, int k
     if (k + 1 < grid.nz) f(grid.cell_index(i, j, k + 1));
 }
 
+// The same neighbours with the face between the cell and each: f(neighbour, face).
+template <class F> void for_each_neighbour_face(const Grid& grid, int i, int j, int k, F&& f) {
+    if (i > 0) f(grid.cell_index(i - 1, j, k), grid.face_index(0, i, j, k));
+    if (i + 1 < grid.nx) f(grid.cell_index(i + 1, j, k), grid.face_index(0, i + 1, j, k));
+    if (j > 0) f(grid.cell_index(i, j - 1, k), grid.face_index(1, i, j, k));
+    if (j + 1 < grid.ny) f(grid.cell_index(i, j + 1, k), grid.face_index(1, i, j + 1, k));
+    if (k > 0) f(grid.cell_index(i, j, k - 1), grid.face_index(2, i, j, k));
+    if (k + 1 < grid.nz) f(grid.cell_index(i, j, k + 1), grid.face_index(2, i, j, k + 1));
+}
+
+// theta of a face (empty: the marker-cell surface, 1 everywhere).
+double theta_of(const std::vector<double>& theta, int face) { return theta.empty() ? 1.0 : theta[size_t(face)]; }
+
+// Coefficient of the link between FLUID cell a and neighbour b across `face` (§4.6a): 1
+// between two FLUID cells, 1/theta to an AIR cell.
+double link(const std::vector<uint8_t>& type, const std::vector<double>& theta, int a, int b, int face) {
+    return type[a] == type[b] ? 1.0 : 1.0 / theta_of(theta, face);
+}
+
 double dot(const std::vector<double>& a, const std::vector<double>& b) {
     double s = 0.0;
     for (size_t i = 0; i < a.size(); ++i) s += a[i] * b[i];
@@ -156,6 +175,28 @@ std::vector<uint8_t> classify(const Grid& grid, const std::vector<uint32_t>& cou
     std::vector<uint8_t> type(grid.cells());
     for (int i = 0; i < grid.cells(); ++i) type[i] = count[i] > 0 ? FLUID : AIR;
     return type;
+}
+
+std::vector<double> free_surface_fractions(const Grid& grid, const std::vector<double>& weight, double rest) {
+    std::vector<double> theta(size_t(grid.faces()), 1.0);
+    for (int f = 0; f < grid.faces(); ++f) {
+        const double r = std::clamp(weight[size_t(f)] / rest, 0.0, 1.0);
+        const double s = r <= 0.5 ? std::sqrt(2.0 * r) - 1.0 : 1.0 - std::sqrt(2.0 * (1.0 - r));
+        theta[size_t(f)] = std::clamp(0.5 + s, kMinSurfaceFraction, 1.0);
+    }
+    return theta;
+}
+
+std::vector<double> surface_extra_diagonal(const Grid& grid, const std::vector<uint8_t>& type,
+                                           const std::vector<double>& theta) {
+    std::vector<double> extra(size_t(grid.cells()), 0.0);
+    for_each_cell(grid, [&](int i, int j, int k, int id) {
+        if (type[id] != FLUID) return;
+        for_each_neighbour_face(grid, i, j, k, [&](int n, int f) {
+            if (type[n] == AIR) extra[size_t(id)] += 1.0 / theta_of(theta, f) - 1.0;
+        });
+    });
+    return extra;
 }
 
 GridForces grid_forces(const Grid& grid, const P2GResult& acc, glm::dvec3 gravity, double dt) {
@@ -253,7 +294,7 @@ std::vector<double> volume_correction_rhs(const Grid& grid, const std::vector<ui
 }
 
 void volume_correction_move(const Grid& grid, const std::vector<uint8_t>& type, const std::vector<double>& q,
-                            Particles& particles) {
+                            Particles& particles, const std::vector<double>& theta) {
     std::vector<double> d(size_t(grid.faces()), 0.0);
     for (int c = 0; c < 3; ++c) {
         const glm::ivec3 n = grid.face_dims(c);
@@ -266,7 +307,8 @@ void volume_correction_move(const Grid& grid, const std::vector<uint8_t>& type, 
                     const int a = grid.cell_index(lo.x, lo.y, lo.z), b = grid.cell_index(i, j, k);
                     if (type[a] == SOLID || type[b] == SOLID) continue;
                     const double qa = type[a] == FLUID ? q[a] : 0.0, qb = type[b] == FLUID ? q[b] : 0.0;
-                    d[grid.face_index(c, i, j, k)] = qa - qb;
+                    const int f = grid.face_index(c, i, j, k);
+                    if (type[a] == FLUID || type[b] == FLUID) d[size_t(f)] = (qa - qb) * link(type, theta, a, b, f);
                 }
     }
     const glm::dvec3 limit(0.5 * grid.dx);
@@ -275,14 +317,15 @@ void volume_correction_move(const Grid& grid, const std::vector<uint8_t>& type, 
 }
 
 std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type,
-                              const std::vector<double>& p) {
+                              const std::vector<double>& p, const std::vector<double>& theta) {
     std::vector<double> out(grid.cells(), 0.0);
     for_each_cell(grid, [&](int i, int j, int k, int id) {
         if (!is_fluid(type, id)) return;
         double s = 0.0;
-        for_each_neighbour(grid, i, j, k, [&](int n) {
+        for_each_neighbour_face(grid, i, j, k, [&](int n, int f) {
             if (type[n] == SOLID) return; // an obstacle, like a wall: no flux (Neumann)
-            s += p[id] - (is_fluid(type, n) ? p[n] : 0.0); // AIR: p = 0 (free surface)
+            // AIR: p = 0 at theta of the way to its centre (free surface)
+            s += (p[id] - (is_fluid(type, n) ? p[n] : 0.0)) * link(type, theta, id, n, f);
         });
         out[id] = s;
     });
@@ -291,7 +334,7 @@ std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type
 
 std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
                            const std::vector<double>& rhs, std::vector<double> p0,
-                           int iterations, double omega, bool no_tension) {
+                           int iterations, double omega, bool no_tension, const std::vector<double>& theta) {
     assert(p0.size() == size_t(grid.cells()));
     for (int id = 0; id < grid.cells(); ++id)
         if (!is_fluid(type, id)) p0[id] = 0.0;
@@ -299,15 +342,15 @@ std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
     for (int it = 0; it < iterations; ++it) {
         for_each_cell(grid, [&](int i, int j, int k, int id) {
             if (!is_fluid(type, id)) return;
-            int diag = 0;
+            double diag = 0.0;
             double sum = 0.0;
-            for_each_neighbour(grid, i, j, k, [&](int n) {
+            for_each_neighbour_face(grid, i, j, k, [&](int n, int f) {
                 if (type[n] == SOLID) return; // Neumann, like a wall
-                ++diag; // AIR neighbours count in the diagonal but add p = 0
+                diag += link(type, theta, id, n, f); // AIR neighbours count in the diagonal but add p = 0
                 if (is_fluid(type, n)) sum += p0[n];
             });
             // diag = 0: a FLUID cell walled in by walls and SOLID cells (no equation): p = 0.
-            next[id] = diag ? (1.0 - omega) * p0[id] + omega * (rhs[id] + sum) / diag : 0.0;
+            next[id] = diag > 0.0 ? (1.0 - omega) * p0[id] + omega * (rhs[id] + sum) / diag : 0.0;
             if (no_tension) next[id] = std::max(next[id], 0.0); // projected Jacobi: p >= 0 (design.md §4.6)
         });
         std::swap(p0, next); // ping-pong: every cell of a sweep reads the previous sweep
@@ -316,7 +359,7 @@ std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
 }
 
 std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uint8_t>& type,
-                                         const std::vector<double>& rhs) {
+                                         const std::vector<double>& rhs, const std::vector<double>& theta) {
     // Conjugate gradients on the FLUID cells: A is symmetric positive definite whenever a
     // non-FLUID cell exists (each FLUID component then touches AIR, fixing the constant).
     const int n = grid.cells();
@@ -327,7 +370,7 @@ std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uin
     double rr = dot(r, r);
     const double tol2 = 1e-24 * rr; // (1e-12 relative)^2
     for (int it = 0; it < 10 * n + 100 && rr > tol2 && rr > 0.0; ++it) {
-        const std::vector<double> Ad = laplacian(grid, type, d);
+        const std::vector<double> Ad = laplacian(grid, type, d, theta);
         const double dAd = dot(d, Ad);
         if (!(dAd > 0.0)) break; // singular direction (all-FLUID domain): stop, stay finite
         const double alpha = rr / dAd;
@@ -345,7 +388,7 @@ std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uin
 
 VelocityUpdate velocity_update(const Grid& grid, const std::vector<uint8_t>& type,
                                const std::vector<double>& vel, const std::vector<double>& p,
-                               double density, double dt) {
+                               double density, double dt, const std::vector<double>& theta) {
     VelocityUpdate out{vel, std::vector<uint8_t>(grid.faces(), 0)};
     const double scale = dt / (density * grid.dx);
     for (int c = 0; c < 3; ++c)
@@ -367,7 +410,7 @@ VelocityUpdate velocity_update(const Grid& grid, const std::vector<uint8_t>& typ
             } else if (is_fluid(type, a) || is_fluid(type, b)) {
                 const double pa = is_fluid(type, a) ? p[a] : 0.0;
                 const double pb = is_fluid(type, b) ? p[b] : 0.0;
-                out.vel[id] -= scale * (pb - pa);
+                out.vel[id] -= scale * (pb - pa) * link(type, theta, a, b, id);
                 out.valid[id] = 1;
             } else {
                 out.vel[id] = 0.0; // no fluid on either side: filled by extrapolation

@@ -75,6 +75,16 @@ P2GResult p2g_apic(const Grid& grid, const Particles& particles);
 // §4.4: FLUID if count > 0, else AIR.
 std::vector<uint8_t> classify(const Grid& grid, const std::vector<uint32_t>& count);
 
+// §4.6a ghost-fluid free surface: theta per face from its P2G weight W over the rest count r
+// (W/r = (1+s)^2/2 for s <= 0, 1 - (1-s)^2/2 above, theta = 1/2 + s, clamped to
+// [kMinSurfaceFraction, 1]). The functions below take theta per face; an empty vector is the
+// marker-cell surface (theta = 1).
+constexpr double kMinSurfaceFraction = 0.05;
+std::vector<double> free_surface_fractions(const Grid& grid, const std::vector<double>& weight, double rest);
+// Per FLUID cell: the sum over its AIR faces of 1/theta - 1 (what the GPU packs into its type word).
+std::vector<double> surface_extra_diagonal(const Grid& grid, const std::vector<uint8_t>& type,
+                                           const std::vector<double>& theta);
+
 // §4.3: vel_old = W > 0 ? M / W : 0; vel = W > 0 ? vel_old + dt·g_c : 0; wall faces vel = 0
 // (vel_old keeps the P2G value there).
 struct GridForces {
@@ -98,39 +108,42 @@ std::vector<double> volume_correction_rhs(const Grid& grid, const std::vector<ui
                                           bool separation, const std::vector<double>& pressure);
 
 // §4.5 volume correction, particle move: the face displacement d = q_lo − q_hi (q = 0 outside
-// FLUID cells; 0 on walls and beside SOLID cells) interpolated as in §3, each component kept
-// within ±dx/2, then keep_in_domain. Velocities are left alone.
+// FLUID cells, divided by theta between FLUID and AIR; 0 on walls and beside SOLID cells)
+// interpolated as in §3, each component kept within ±dx/2, then keep_in_domain. Velocities are
+// left alone.
 void volume_correction_move(const Grid& grid, const std::vector<uint8_t>& type, const std::vector<double>& q,
-                            Particles& particles);
+                            Particles& particles, const std::vector<double>& theta = {});
 
-// §4.6 operator: (A p)_i = Σ_{j∈N(i)} (p_i - p_j) for FLUID i, with N(i) the in-domain
-// neighbours that are not SOLID (walls and obstacles excluded: Neumann) and p_j = 0 for AIR j;
-// 0 for non-FLUID i. The pressure system is A p = b; tests use b - A p as the residual.
+// §4.6 operator: (A p)_i = Σ_{j∈N(i)} (p_i - p_j)·l_ij for FLUID i, with N(i) the in-domain
+// neighbours that are not SOLID (walls and obstacles excluded: Neumann), p_j = 0 for AIR j and
+// l_ij = 1, or 1/theta across a FLUID-AIR face (§4.6a); 0 for non-FLUID i. The pressure system is
+// A p = b; tests use b - A p as the residual.
 std::vector<double> laplacian(const Grid& grid, const std::vector<uint8_t>& type,
-                              const std::vector<double>& p);
+                              const std::vector<double>& p, const std::vector<double>& theta = {});
 
 // §4.6: `iterations` damped (ω) Jacobi sweeps, ping-pong. p0 entries of non-FLUID cells are
 // treated as 0; the result is 0 in non-FLUID cells.
 std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
                            const std::vector<double>& rhs, std::vector<double> p0,
                            int iterations, double omega,
-                           bool no_tension = false); // no_tension: projected Jacobi, p >= 0
+                           bool no_tension = false, // no_tension: projected Jacobi, p >= 0
+                           const std::vector<double>& theta = {});
 
 // Converged solve of the same system (conjugate gradients to ‖b - A p‖ <= 1e-12·‖b‖).
 std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uint8_t>& type,
-                                         const std::vector<double>& rhs);
+                                         const std::vector<double>& rhs, const std::vector<double>& theta = {});
 
 // §4.7: wall faces 0 and valid; faces between a SOLID cell and another keep their velocity (the
 // obstacle's) and are valid, faces between two SOLID cells become 0 and invalid; other interior
-// faces with a FLUID side get the pressure gradient and are valid; faces between two AIR cells
-// become 0 and invalid.
+// faces with a FLUID side get the pressure gradient (divided by theta between FLUID and AIR) and
+// are valid; faces between two AIR cells become 0 and invalid.
 struct VelocityUpdate {
     std::vector<double> vel;
     std::vector<uint8_t> valid;
 };
 VelocityUpdate velocity_update(const Grid& grid, const std::vector<uint8_t>& type,
                                const std::vector<double>& vel, const std::vector<double>& p,
-                               double density, double dt);
+                               double density, double dt, const std::vector<double>& theta = {});
 
 // §4.8: `layers` rounds; in each, an invalid face with >= 1 valid lattice neighbour (old mask)
 // takes the average of those neighbours and is valid from the next round on.
@@ -177,7 +190,7 @@ struct SubstepState {
     bool hydrostatic_start = true;
 };
 
-// Steps 1-10 of §4 in order. jacobi_iterations < 0 replaces the Jacobi solve by
+// Steps 1-10 of §4 in order, with the marker-cell surface. jacobi_iterations < 0 replaces the Jacobi solve by
 // solve_pressure_exact (a reference-only switch for tests that need a converged pressure).
 void substep(const Grid& grid, Particles& particles, SubstepState& state, glm::dvec3 gravity,
              double dt, double density, double flip_ratio, int jacobi_iterations, double omega,

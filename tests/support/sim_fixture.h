@@ -37,6 +37,14 @@ struct ParticleState {
 };
 
 // Largest particle speed, m/s.
+// An output pf_sim_params of this header's layout: pf_get_params and pf_quality_params fill every
+// field (a zero struct_size means the first layout, which ends before free_surface).
+inline pf_sim_params sized_params() {
+    pf_sim_params p{};
+    p.struct_size = sizeof p;
+    return p;
+}
+
 inline double max_speed_of(const ParticleState& p) {
     double m = 0;
     for (size_t i = 0; i < p.count(); ++i)

@@ -1,11 +1,14 @@
 // The pressure Poisson operator shared by every solver, on any grid level (dims from the
 // u_dims uniform): for a FLUID cell i,  (A p)_i = diag_i p_i - sum over FLUID neighbours p_j,
 // where diag_i counts the in-domain neighbours that are not SOLID (FLUID and AIR: p = 0 in
-// AIR, a Dirichlet free surface); domain walls and SOLID cells are left out (Neumann).
+// AIR, a Dirichlet free surface) plus the extra diagonal of the ghost-fluid surface that a fine
+// level's FLUID word carries (common/free_surface.glsl; coarser levels' words carry none);
+// domain walls and SOLID cells are left out (Neumann).
 // Requires the kernel to declare `cell_type` (uint per cell) before including this file.
 #include "common/slots.h"
 #include "common/dispatch.glsl"
 #include "solvers/common/solver_state.h"
+#include "common/free_surface.glsl"
 
 layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // nx, ny, nz, cells of this level
 
@@ -35,6 +38,7 @@ PoissonStencil poisson_stencil(int c) {
         s.diag += 1.0;
         if (t == PF_CELL_FLUID) s.nb[n] = nc;
     }
+    s.diag += surface_extra_diagonal(cell_type[c]);
     return s;
 }
 
