@@ -137,7 +137,9 @@ typedef enum pf_free_surface {
     PF_FREE_SURFACE_GHOST_FLUID = 1, /**< at the liquid's sub-cell surface, estimated from the particles'
                                           P2G weight on each face between a liquid and an air cell (ghost
                                           fluid, Enright et al. 2003): waves keep their amplitude and
-                                          period far better (docs/accuracy.md); not yet the default */
+                                          period far better, but a resting tank filled with jittered
+                                          particles does not stay still (docs/accuracy.md), so it is
+                                          not yet the default */
     PF_FREE_SURFACE_COUNT = 2,
     PF_FREE_SURFACE_FORCE32 = 0x7fffffff
 } pf_free_surface;

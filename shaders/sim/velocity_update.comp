@@ -1,7 +1,8 @@
 // Velocity update: subtracts the pressure gradient on faces next to FLUID cells (p = 0 at the
 // free surface, theta of the way from a FLUID centre to an AIR one: the gradient there is
-// divided by theta, common/free_surface.glsl) and marks them valid; wall faces are 0 (free-slip) and valid; faces between two AIR
-// cells are reset to 0 and left invalid for extrapolation. SOLID cells (obstacles) are walls
+// divided by theta, common/free_surface.glsl) and marks them valid; wall faces are 0
+// (free-slip) and valid; faces between two AIR cells are reset to 0 and left invalid for
+// extrapolation. SOLID cells (obstacles) are walls
 // too: a face between a SOLID cell and another keeps the obstacle's normal velocity that
 // obstacle_faces set (free-slip) and is valid; a face inside a solid (two SOLID cells) is reset
 // to 0 and left to extrapolation, like one between two AIR cells.
