@@ -230,7 +230,8 @@ typedef struct pf_sim_params {
                                        (pf_stats.energy_drift; at least every particle lifted one cell) before
                                        PF_FLAG_ENERGY_GAINED is raised and logged, (0, 100]; 0 = default 0.1 */
     pf_free_surface free_surface; /**< free-surface boundary of the pressure; default (0)
-                                       PF_FREE_SURFACE_MARKER_CELL */
+                                       PF_FREE_SURFACE_MARKER_CELL. The ghost fluid with Jacobi or RBGS
+                                       logs a warning: stopped unconverged they add energy */
 } pf_sim_params;
 
 /** Quality presets: measured points of the accuracy-versus-time trade-off (docs/accuracy.md

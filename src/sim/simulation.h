@@ -206,6 +206,9 @@ private:
     void restart_volume_reference();
 
     // The statistics entries of the core passes (pf_pass order).
+    // Logs a warning for a ghost-fluid surface on a stationary solver (valid, but it adds energy).
+    void warn_about_free_surface(const pf_sim_params& params, const char* fn) const;
+
     struct CoreStats {
         StatId clear, p2g, grid_forces, classify, pressure_setup, velocity_update, extrapolate, g2p, advect;
         StatId metrics;  // once per step, in the PF_PASS_VELOCITY_UPDATE group

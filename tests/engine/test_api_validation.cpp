@@ -539,6 +539,23 @@ TEST_F(ApiValidation, SetParamsRejectsAndKeepsParams) {
     expect_usable(kFilled, "rejected pf_set_params");
 }
 
+// The ghost-fluid surface on a stationary solver is valid but adds energy when the solver stops
+// unconverged (docs/accuracy.md): accepted, with a warning; on MGPCG, without one.
+TEST_F(ApiValidation, GhostFluidOnAStationarySolverWarns) {
+    pf_sim_params p = pf_default_sim_params();
+    p.free_surface = PF_FREE_SURFACE_GHOST_FLUID;
+    p.pressure_solver = PF_PRESSURE_SOLVER_JACOBI;
+    clear_log();
+    EXPECT_EQ(pf_set_params(sim_.get(), &p), PF_OK) << last_log();
+    EXPECT_NE(std::string(last_log()).find("ghost-fluid free surface with a stationary solver"), std::string::npos)
+        << last_log();
+    p.pressure_solver = PF_PRESSURE_SOLVER_MGPCG;
+    clear_log();
+    EXPECT_EQ(pf_set_params(sim_.get(), &p), PF_OK) << last_log();
+    EXPECT_EQ(std::string(last_log()).find("ghost-fluid"), std::string::npos) << last_log();
+    expect_usable(kFilled, "ghost fluid");
+}
+
 TEST_F(ApiValidation, SetParamsAcceptsBoundaryValues) {
     pf_sim_params hi = pf_default_sim_params();
     hi.flip_ratio = 1.0f;
