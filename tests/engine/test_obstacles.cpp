@@ -787,7 +787,9 @@ TEST_F(ObstacleArguments, FloatingBoxOfHalfDensitySettlesAtHalfSubmersion) {
     double y = body.position[1], v = 0, settled_y = 0, settled_f = 0;
     int settled = 0;
     uint64_t newest = 0;
+    pf_obstacle stepped = body;  // the pose the last step pushed particles out of
     for (int frame = 1; frame <= 150; ++frame) {
+        stepped = body;
         ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
         pf_obstacle_force f{};
         ASSERT_EQ(pf_get_obstacle_force(sim.get(), id, &f), PF_OK);
@@ -814,8 +816,10 @@ TEST_F(ObstacleArguments, FloatingBoxOfHalfDensitySettlesAtHalfSubmersion) {
     EXPECT_LT(submerged / h, 0.5 + 0.01) << "never deeper than Archimedes (one-sided waterline)";
     EXPECT_NEAR(settled_f, mass * g, 0.05 * mass * g) << "at rest the force carries the weight";
     EXPECT_LT(std::abs(v), 0.05) << "at rest";
+    // Against the pose the last step used: the one set after it moves the box by up to v / 60 (the
+    // force readback's lag varies, so that last move does too) and acts from the next step on.
     const ParticleState p = read_all(sim.get());
-    EXPECT_EQ(inside_count(p, {body}), 0u);
+    EXPECT_EQ(inside_count(p, {stepped}), 0u);
     RecordProperty("submerged_fraction", std::to_string(submerged / h));
     RecordProperty("mean_force_over_weight", std::to_string(settled_f / (mass * g)));
     RecordProperty("final_speed", std::to_string(v));
