@@ -546,7 +546,7 @@ int run(int argc, char** argv) {
                              {"cfl", config.params.cfl},
                              {"separation", config.params.separation},
                              {"p2g", pfs::p2g_name(config.params.p2g)},
-                             {"free_surface", config.params.free_surface == PF_FREE_SURFACE_GHOST_FLUID ? "ghost_fluid" : "marker_cell"}};
+                             {"free_surface", pfs::free_surface_name(config.params.free_surface)}};
             rows.push_back(row);
         }
     }
@@ -577,12 +577,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fflush(stdout);
-        std::fprintf(stderr, "pf_accuracy: error: %s\n", e.what());
-        return 1;
-    }
-}
+int main(int argc, char** argv) { return pfs::run_tool("pf_accuracy", run, argc, argv); }

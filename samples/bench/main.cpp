@@ -362,7 +362,7 @@ ojson result_json(const Result& r) {
     p["pressure_tolerance"] = r.params.pressure_tolerance;
     p["sor_omega"] = r.params.sor_omega;
     p["p2g"] = pfs::p2g_name(r.params.p2g);
-    p["free_surface"] = r.params.free_surface == PF_FREE_SURFACE_GHOST_FLUID ? "ghost_fluid" : "marker_cell";
+    p["free_surface"] = pfs::free_surface_name(r.params.free_surface);
     j["params"] = p;
     j["solver_iterations"] = summary_json(r.solver_iterations);
     j["solver_residual"] = summary_json(r.solver_residual);
@@ -535,12 +535,4 @@ int run(int argc, char** argv) {
 
 } // namespace
 
-int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fflush(stdout);
-        std::fprintf(stderr, "pf_bench: error: %s\n", e.what());
-        return 1;
-    }
-}
+int main(int argc, char** argv) { return pfs::run_tool("pf_bench", run, argc, argv); }

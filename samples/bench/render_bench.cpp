@@ -225,11 +225,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "pf_render_bench: %s\n", e.what());
-        return 1;
-    }
-}
+int main(int argc, char** argv) { return pfs::run_tool("pf_render_bench", run, argc, argv); }

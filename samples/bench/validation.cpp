@@ -501,12 +501,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fflush(stdout);
-        std::fprintf(stderr, "pf_validation: error: %s\n", e.what());
-        return 1;
-    }
-}
+int main(int argc, char** argv) { return pfs::run_tool("pf_validation", run, argc, argv); }

@@ -19,6 +19,16 @@
 
 namespace pfs {
 
+int run_tool(const char* tool, int (*run)(int, char**), int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fflush(stdout);
+        std::fprintf(stderr, "%s: error: %s\n", tool, e.what());
+        return 1;
+    }
+}
+
 void check(pf_result r, const char* what) {
     if (r == PF_OK) return;
     throw Error(std::string(what) + ": " + pf_result_string(r) + " (pf_result " +
@@ -224,6 +234,10 @@ const char* const kFreeSurfaceNames[PF_FREE_SURFACE_COUNT] = {"marker_cell", "gh
 
 pf_free_surface parse_free_surface(const std::string& name, const char* what) {
     return pf_free_surface(parse_name(kFreeSurfaceNames, name, what, "free surface"));
+}
+
+const char* free_surface_name(pf_free_surface surface) {
+    return surface >= 0 && surface < PF_FREE_SURFACE_COUNT ? kFreeSurfaceNames[surface] : "unknown";
 }
 
 const char* p2g_name(pf_p2g p2g) { return p2g >= 0 && p2g < PF_P2G_COUNT ? kP2gNames[p2g] : "unknown"; }

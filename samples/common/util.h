@@ -23,6 +23,10 @@ struct Error : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+/// Every sample's main(): returns run(argc, argv); an exception that escapes it is printed as
+/// "<tool>: error: <what()>" on stderr (after stdout is flushed) and gives exit code 1.
+int run_tool(const char* tool, int (*run)(int, char**), int argc, char** argv);
+
 /// Throws Error("<what>: <pf_result_string> (code N)") unless r == PF_OK.
 void check(pf_result r, const char* what);
 
@@ -98,6 +102,8 @@ const char* advection_name(pf_advection advection);
 pf_p2g parse_p2g(const std::string& name, const char* what);
 /// "marker_cell" or "ghost_fluid" (pf_free_surface); throws Error naming `what` otherwise.
 pf_free_surface parse_free_surface(const std::string& name, const char* what);
+/// The name parse_free_surface takes for `surface`.
+const char* free_surface_name(pf_free_surface surface);
 /// The name parse_p2g takes for `p2g`.
 const char* p2g_name(pf_p2g p2g);
 

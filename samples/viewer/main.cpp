@@ -1371,12 +1371,4 @@ int run(int argc, char** argv) {
 
 } // namespace
 
-int main(int argc, char** argv) {
-    try {
-        return run(argc, argv);
-    } catch (const std::exception& e) {
-        std::fflush(stdout);
-        std::fprintf(stderr, "pf_viewer: error: %s\n", e.what());
-        return 1;
-    }
-}
+int main(int argc, char** argv) { return pfs::run_tool("pf_viewer", run, argc, argv); }

@@ -93,17 +93,8 @@ AffineStencil affine_stencil(const Grid& grid, int c, const glm::dvec3& g) {
 
 bool is_fluid(const std::vector<uint8_t>& type, int cell) { return type[cell] == FLUID; }
 
-// Visits the in-domain face neighbours of cell (i,j,k) (walls are not neighbours, §4.6).
-template <class F> void for_each_neighbour(const Grid& grid, int i, int j, int k, F&& f) {
-    if (i > 0) f(grid.cell_index(i - 1, j, k));
-    if (i + 1 < grid.nx) f(grid.cell_index(i + 1, j, k));
-    if (j > 0) f(grid.cell_index(i, j - 1, k));
-    if (j + 1 < grid.ny) f(grid.cell_index(i, j + 1, k));
-    if (k > 0) f(grid.cell_index(i, j, k - 1));
-    if (k + 1 < grid.nz) f(grid.cell_index(i, j, k + 1));
-}
-
-// The same neighbours with the face between the cell and each: f(neighbour, face).
+// Visits the in-domain face neighbours of cell (i,j,k) with the face between the cell and each:
+// f(neighbour, face) (walls are not neighbours, §4.6).
 template <class F> void for_each_neighbour_face(const Grid& grid, int i, int j, int k, F&& f) {
     if (i > 0) f(grid.cell_index(i - 1, j, k), grid.face_index(0, i, j, k));
     if (i + 1 < grid.nx) f(grid.cell_index(i + 1, j, k), grid.face_index(0, i + 1, j, k));
@@ -111,6 +102,11 @@ template <class F> void for_each_neighbour_face(const Grid& grid, int i, int j, 
     if (j + 1 < grid.ny) f(grid.cell_index(i, j + 1, k), grid.face_index(1, i, j + 1, k));
     if (k > 0) f(grid.cell_index(i, j, k - 1), grid.face_index(2, i, j, k));
     if (k + 1 < grid.nz) f(grid.cell_index(i, j, k + 1), grid.face_index(2, i, j, k + 1));
+}
+
+// The same neighbours without their faces: f(neighbour).
+template <class F> void for_each_neighbour(const Grid& grid, int i, int j, int k, F&& f) {
+    for_each_neighbour_face(grid, i, j, k, [&](int n, int) { f(n); });
 }
 
 // theta of a face (empty: the marker-cell surface, 1 everywhere).
