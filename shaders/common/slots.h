@@ -51,19 +51,19 @@
 #define PF_SLOT_MG_COARSE_TYPE 2
 #define PF_SLOT_MG_COARSE_R 4
 #define PF_SLOT_MG_COARSE_E 5
-/* storage blocks of the sorted-gather P2G (pf_p2g PF_P2G_SORTED_GATHER: sim/p2g_sort_*.comp,
- * sim/p2g_gather.comp): positions 0, velocities 1, face accumulators 4 and APIC affine vectors 6
- * as above; its own buffers on the slots those kernels leave free (none binds face velocities or
- * the status buffer, and only the counting pass binds cell counts). It sorts by half cell
- * (2 x 2 x 2 per cell). */
+/* storage blocks of the sorted-gather P2G (pf_p2g PF_P2G_SORTED_GATHER, transfer/sorted_gather/):
+ * positions 0, velocities 1, face accumulators 4 and APIC affine vectors 6 as above; its own
+ * buffers on the slots those kernels leave free (none binds face velocities or the status
+ * buffer, and only the counting pass binds cell counts). It sorts by half cell (2 x 2 x 2 per
+ * cell). */
 #define PF_SLOT_SORT_CELL_SLOT 2  /* per particle: uvec2(its half cell, its slot among that half cell's particles) */
 #define PF_SLOT_SORT_HALF_COUNT 3 /* per half cell: particles (the counting pass only) */
 #define PF_SLOT_SORT_HALF_START 3 /* per half cell, plus one: first index of its particles in the sorted order */
 #define PF_SLOT_SORT_UNSORTED 4   /* particle indices grouped by half cell, in counting-atomic order */
 #define PF_SLOT_SORT_GRID 5       /* in the sorted order: each particle's grid coordinate (vec4, w unused) */
 #define PF_SLOT_SORT_PARTICLE 7   /* in the sorted order: each particle's velocity and index (vec3 + uint) */
-/* the exclusive prefix sum (sim/scan_blocks.comp, sim/scan_add.comp): items per invocation and
- * per workgroup (one block) */
+/* the exclusive prefix sum (transfer/common/scan_blocks.comp and scan_add.comp): items per
+ * invocation and per workgroup (one block) */
 #define PF_SCAN_ITEMS_PER_INVOCATION 4
 #define PF_SCAN_BLOCK (PF_WORKGROUP_SIZE * PF_SCAN_ITEMS_PER_INVOCATION)
 /* storage blocks of the exclusive prefix sum */

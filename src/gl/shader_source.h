@@ -7,7 +7,7 @@
 namespace pf::gl {
 
 struct EmbeddedShaderFile {
-    const char* path;  // relative to shaders/, e.g. "sim/p2g.comp"
+    const char* path;  // relative to shaders/, e.g. "sim/classify.comp"
     const char* text;
 };
 extern const EmbeddedShaderFile kEmbeddedShaderFiles[];
@@ -47,7 +47,7 @@ struct ExpandedSource {
 // Expands `file` with the given extra #define lines (may be empty).
 ExpandedSource expand_shader(const std::string& file, const std::string& defines);
 
-// Rewrites "0(12)"-style GL log locations into "sim/p2g.comp:12" using the #line table.
+// Rewrites "0(12)"-style GL log locations into "sim/classify.comp:12" using the #line table.
 std::string annotate_log(const std::string& log, const std::vector<std::string>& files);
 
 }  // namespace pf::gl

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 
+#include "common/slots.h"
 #include "gl/debug.h"
 
 namespace pf {
@@ -185,6 +186,11 @@ void PassRunner::set_uniforms(GLuint program, size_t pid, const Uniforms& unifor
                 break;
         }
     }
+}
+
+void PassRunner::fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat) {
+    run({gl::ProgramId::fill, stat, words, {{PF_SLOT_FILL, &buffer}}, {},
+         {Uniform::uint1(PF_LOC_FILL_COUNT, words), Uniform::uint1(PF_LOC_FILL_VALUE, value)}});
 }
 
 }  // namespace pf

@@ -64,6 +64,9 @@ public:
     // "pflip/<statistics entry name>" when the GL has KHR_debug (src/gl/debug.h). Timed and counted inside a step
     // (begin_step .. end_step), neither outside one (creation, pf_push, pf_clear_particles).
     void run(const Pass& pass);
+    // Sets the first `words` words of `buffer` to `value` (a pass of the fill program, which the
+    // owner of this runner prepares), counted and timed as entry `stat`.
+    void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat);
 
     // While alive, every pass run is counted, timed and labelled as entry `stat` instead of its
     // own: a solver serving a second problem (the volume correction's) is accounted apart from

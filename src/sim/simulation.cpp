@@ -23,11 +23,6 @@ static_assert(PF_GPU_FLAG_EMITTERS_FULL == PF_FLAG_EMITTERS_FULL, "flag bits sha
 namespace {
 using gl::ProgramId;
 
-// Fixed-point weight scale S_w = 2^(20 - range shift): at 2^20, 2047 full-weight particles fit
-// a 31-bit sum. Each overflow read back widens the range by 2 bits, up to 2^10 (2M particles per
-// sample, velocity resolution max_speed / 1024 per particle).
-constexpr int kWeightScaleBits = 20;
-
 struct GlFunctionLoader {
     pf_gl_get_proc_address_fn fn;
 };
@@ -129,8 +124,10 @@ pf_result Simulation::init() {
     }
 
     PassRunner& r = *runner_;
-    stat_ = CoreStats{r.add_stat("clear", PF_PASS_CLEAR),
-                      r.add_stat("p2g", PF_PASS_P2G),
+    const StatId clear = r.add_stat("clear", PF_PASS_CLEAR);
+    p2g_.init(r, P2gGrid{glm::ivec3(desc_.grid_size[0], desc_.grid_size[1], desc_.grid_size[2]), uint64_t(cells_),
+                          uint64_t(faces_), desc_.max_particles});  // "p2g", after "clear"
+    stat_ = CoreStats{clear,
                       r.add_stat("grid_forces", PF_PASS_GRID_FORCES),
                       r.add_stat("classify", PF_PASS_CLASSIFY),
                       r.add_stat("pressure_setup", PF_PASS_PRESSURE_SETUP),
@@ -156,9 +153,9 @@ pf_result Simulation::init() {
     if (pf_result res = set_features(requested_features_, "pf_create"); res != PF_OK) return res;
     // Pressure starts at zero (warm start of the first solve); everything else is written
     // before it is read.
-    fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
-    fill(face_fraction_, uint32_t(faces_), 0x3f800000u, stat_.clear);  // 1.0f: the marker-cell surface
-    fill(status_, PF_STATUS_WORDS, 0u, stat_.clear);
+    runner_->fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
+    runner_->fill(face_fraction_, uint32_t(faces_), 0x3f800000u, stat_.clear);  // 1.0f: the marker-cell surface
+    runner_->fill(status_, PF_STATUS_WORDS, 0u, stat_.clear);
     const uint32_t record[PF_COUNT_WORDS] = {0, 1, 0, 0, 4, 0, 0, 0};
     count_record_.upload(0, sizeof(record), record);
     return PF_OK;
@@ -204,19 +201,10 @@ pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, Pr
     return PF_OK;
 }
 
-Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& params) {
+Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& params) const {
     ParticlePrograms p{};
     const bool apic = params.transfer == PF_TRANSFER_APIC;
-    const bool floats = params.p2g == PF_P2G_FLOAT_ATOMIC;
-    if (params.p2g == PF_P2G_SORTED_GATHER) {
-        // Its first pass (the count per cell); the rest are prepared by prepare_sorted_gather.
-        // The gather writes floats, as the float atomics do.
-        p.p2g = ProgramId::p2g_sort_count;
-        p.grid_forces = ProgramId::grid_forces_float;
-    } else {
-        p.p2g = apic ? (floats ? ProgramId::p2g_apic_float : ProgramId::p2g_apic) : (floats ? ProgramId::p2g_float : ProgramId::p2g);
-        p.grid_forces = floats ? ProgramId::grid_forces_float : ProgramId::grid_forces;
-    }
+    p.grid_forces = p2g_.float_sums(params) ? ProgramId::grid_forces_float : ProgramId::grid_forces;
     // Pure PIC skips the FLIP delta (and its u_old reads) in a permutation of its own.
     p.g2p = apic ? ProgramId::g2p_apic : params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
     p.advect = params.advection == PF_ADVECTION_RK2   ? ProgramId::advect_rk2
@@ -226,13 +214,11 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
 }
 
 pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const char* fn) {
+    if (pf_result r = p2g_.prepare(gl_, *runner_, params, log_, fn); r != PF_OK) return r;
     const ParticlePrograms programs = particle_programs(params);
-    for (ProgramId id : {programs.p2g, programs.grid_forces, programs.g2p, programs.advect}) {
+    for (ProgramId id : {programs.grid_forces, programs.g2p, programs.advect}) {
         if (std::string error = runner_->prepare(id); !error.empty())
             return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    }
-    if (params.p2g == PF_P2G_SORTED_GATHER) {
-        if (pf_result r = prepare_sorted_gather(params.transfer == PF_TRANSFER_APIC, fn); r != PF_OK) return r;
     }
     if (params.transfer != PF_TRANSFER_APIC || affine_.bytes() != 0) return PF_OK;
     const uint64_t bytes = uint64_t(desc_.max_particles) * 48u;
@@ -254,115 +240,14 @@ pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const
     return PF_OK;
 }
 
-pf_result Simulation::prepare_sorted_gather(bool apic, const char* fn) {
-    for (ProgramId id : {ProgramId::scan_blocks, ProgramId::scan_add, ProgramId::p2g_sort_scatter,
-                         apic ? ProgramId::p2g_sort_rank_apic : ProgramId::p2g_sort_rank,
-                         apic ? ProgramId::p2g_gather_apic : ProgramId::p2g_gather}) {
-        if (std::string error = runner_->prepare(id); !error.empty())
-            return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    }
-    if (sort_scan_.bytes() != 0) return PF_OK;
-    // Particles are sorted by half cell (2 x 2 x 2 per cell). The prefix sum's levels: the half
-    // cells' counts and one zero after them (so that start[h + 1] - start[h] is the count of every
-    // h), then their totals per block of PF_SCAN_BLOCK, and so on until one workgroup scans them
-    // all. One buffer: the starts (level 0's prefixes) at word 0, then per level above its block
-    // totals and their prefixes, then the grand total.
-    const uint64_t halves = uint64_t(cells_) * 8u + 1u;
-    std::vector<ScanLevel> levels{ScanLevel{uint32_t(halves), 0, 0, 0}};
-    uint64_t words = halves;
-    while (levels.back().count > PF_SCAN_BLOCK) {
-        const uint32_t blocks = (levels.back().count + PF_SCAN_BLOCK - 1) / PF_SCAN_BLOCK;
-        levels.back().sums = uint32_t(words);
-        levels.push_back(ScanLevel{blocks, uint32_t(words), uint32_t(words + blocks), 0});
-        words += 2u * blocks;
-    }
-    levels.back().sums = uint32_t(words);
-    words += 1;
-    const uint64_t np = desc_.max_particles;
-    const uint64_t largest = std::max<uint64_t>(np * 16u, words * 4u);  // the sorted copies or the starts
-    GLint64 max_block = 0;
-    gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-    if (largest > uint64_t(max_block)) {
-        return log_.error(PF_ERROR_CAPACITY, std::string(fn) + ": PF_P2G_SORTED_GATHER needs a buffer of " +
-                                                 std::to_string(largest) + " bytes (16 per particle, 32 per cell), more than "
-                                                 "this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
-                                                 "); lower max_particles or the grid size");
-    }
-    gl::Buffer cell_slot(gl_, size_t(np) * 8, GL_DYNAMIC_COPY, "p2g_sort_cell_slot"),
-        unsorted(gl_, size_t(np) * 4, GL_DYNAMIC_COPY, "p2g_sort_unsorted"),
-        grid(gl_, size_t(np) * 16, GL_DYNAMIC_COPY, "p2g_sort_grid"),
-        particles(gl_, size_t(np) * 16, GL_DYNAMIC_COPY, "p2g_sort_particles"),
-        scan(gl_, size_t(words) * 4, GL_DYNAMIC_COPY, "p2g_sort_scan"),
-        counts(gl_, size_t(halves) * 4, GL_DYNAMIC_COPY, "p2g_sort_counts");
-    if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
-        return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                          std::string(fn) + ": allocating " + std::to_string((np * 44 + words * 4 + halves * 4) >> 20) +
-                              " MiB for the sorted-gather P2G failed (GL error " + hex(err) + ")");
-    }
-    sort_cell_slot_ = std::move(cell_slot);
-    sort_unsorted_ = std::move(unsorted);
-    sort_grid_ = std::move(grid);
-    sort_particles_ = std::move(particles);
-    sort_scan_ = std::move(scan);
-    sort_count_ = std::move(counts);
-    scan_levels_ = std::move(levels);
-    stat_p2g_sort_ = runner_->add_stat("p2g_sort", PF_PASS_P2G);
-    stat_p2g_gather_ = runner_->add_stat("p2g_gather", PF_PASS_P2G);
-    return PF_OK;
-}
-
-void Simulation::run_sorted_gather(bool apic) {
-    PassRunner& r = *runner_;
-    const uint32_t np = particle_count_;
-    const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
-        count{PF_SLOT_CELL_COUNT, &cell_count_}, cell_slot{PF_SLOT_SORT_CELL_SLOT, &sort_cell_slot_},
-        start{PF_SLOT_SORT_HALF_START, &sort_scan_}, unsorted{PF_SLOT_SORT_UNSORTED, &sort_unsorted_},
-        grid{PF_SLOT_SORT_GRID, &sort_grid_}, particles{PF_SLOT_SORT_PARTICLE, &sort_particles_},
-        affine{PF_SLOT_PARTICLE_AFFINE, &affine_};
-    // 1. Count per cell and per half cell (both cleared), keeping each particle's half cell and slot.
-    fill(sort_count_, scan_levels_[0].count, 0u, stat_.clear);
-    r.run({ProgramId::p2g_sort_count, stat_p2g_sort_, np,
-           {pos, count, {PF_SLOT_SORT_HALF_COUNT, &sort_count_}, cell_slot}});
-    // 2. Half-cell starts: exclusive prefix sum of the counts, up the levels, then back down.
-    for (size_t k = 0; k < scan_levels_.size(); ++k) {
-        const ScanLevel& l = scan_levels_[k];
-        const uint64_t invocations = (uint64_t(l.count) + PF_SCAN_ITEMS_PER_INVOCATION - 1) / PF_SCAN_ITEMS_PER_INVOCATION;
-        r.run({ProgramId::scan_blocks, stat_p2g_sort_, invocations,
-               {{PF_SLOT_SCAN_IN, k == 0 ? &sort_count_ : &sort_scan_}, {PF_SLOT_SCAN_OUT, &sort_scan_}}, {},
-               {Uniform::uint1(PF_LOC_SCAN_COUNT, l.count), Uniform::uint1(PF_LOC_SCAN_IN_OFFSET, l.in),
-                Uniform::uint1(PF_LOC_SCAN_OUT_OFFSET, l.out), Uniform::uint1(PF_LOC_SCAN_SUMS_OFFSET, l.sums)}});
-    }
-    for (size_t k = scan_levels_.size() - 1; k-- > 0;) {
-        const ScanLevel& l = scan_levels_[k];
-        r.run({ProgramId::scan_add, stat_p2g_sort_, l.count, {{PF_SLOT_SCAN_OUT, &sort_scan_}}, {},
-               {Uniform::uint1(PF_LOC_SCAN_COUNT, l.count), Uniform::uint1(PF_LOC_SCAN_OUT_OFFSET, l.out),
-                Uniform::uint1(PF_LOC_SCAN_SUMS_OFFSET, scan_levels_[k + 1].out)}});
-    }
-    // 3. Indices into their half cells' segments; 4. the fixed order within each half cell, with
-    // the particles' grid coordinates, velocities and indices written in that order.
-    r.run({ProgramId::p2g_sort_scatter, stat_p2g_sort_, np, {cell_slot, start, unsorted}});
-    r.run({apic ? ProgramId::p2g_sort_rank_apic : ProgramId::p2g_sort_rank, stat_p2g_sort_, np,
-           apic ? Bindings{pos, vel, cell_slot, start, unsorted, grid, particles, affine}
-                : Bindings{pos, vel, cell_slot, start, unsorted, grid, particles}});
-    // 5. One invocation per face sample sums its particles (both words of every sample).
-    const Bind accum{PF_SLOT_FACE_ACCUM, &face_accum_};
-    r.run({apic ? ProgramId::p2g_gather_apic : ProgramId::p2g_gather, stat_p2g_gather_, uint64_t(faces_),
-           apic ? Bindings{start, grid, particles, accum, affine} : Bindings{start, grid, particles, accum}});
-}
-
 void Simulation::zero_affine(uint32_t first, uint32_t count) {
     if (affine_.bytes() == 0 || count == 0) return;
     if (first == 0) {
-        fill(affine_, count * 12u, 0u, stat_.clear);
+        runner_->fill(affine_, count * 12u, 0u, stat_.clear);
         return;
     }
     const std::vector<float> zeros(size_t(count) * 12, 0.0f);
     affine_.upload(size_t(first) * 48, zeros.size() * 4, zeros.data());
-}
-
-void Simulation::fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat) {
-    runner_->run({ProgramId::fill, stat, words, {{PF_SLOT_FILL, &buffer}}, {},
-                  {Uniform::uint1(PF_LOC_FILL_COUNT, words), Uniform::uint1(PF_LOC_FILL_VALUE, value)}});
 }
 
 void Simulation::upload_uniforms(float dt) {
@@ -375,7 +260,7 @@ void Simulation::upload_uniforms(float dt) {
     u.dt = dt;
     u.density = desc_.density;
     u.max_speed = desc_.max_speed;
-    const float weight_scale = std::ldexp(1.0f, kWeightScaleBits - int(p2g_range_shift_));
+    const float weight_scale = p2g_.range().weight_scale();
     const float momentum_scale = weight_scale / desc_.max_speed;  // design.md §4.2
     u.momentum_scale = momentum_scale;
     u.weight_scale = weight_scale;
@@ -392,69 +277,110 @@ void Simulation::upload_uniforms(float dt) {
 }
 
 void Simulation::run_substep(bool correct_volume) {
-    PassRunner& r = *runner_;
-    const uint32_t np = particle_count_;
-    const uint64_t cells = uint64_t(cells_), faces = uint64_t(faces_);
+    update_substep_table();
+    substep_.run(SubstepContext{correct_volume});
+}
 
-    const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
-    if (desc_.params.p2g == PF_P2G_SORTED_GATHER) {
-        // The gather writes every accumulator: only the counts are cleared.
-        fill(cell_count_, uint32_t(cells_), 0u, stat_.clear);
-        run_sorted_gather(apic);
-    } else {
-        fill(face_accum_, uint32_t(faces_) * 2, 0u, stat_.clear);
-        fill(cell_count_, uint32_t(cells_), 0u, stat_.clear);
-        const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
-            accum{PF_SLOT_FACE_ACCUM, &face_accum_}, count{PF_SLOT_CELL_COUNT, &cell_count_},
-            status{PF_SLOT_STATUS, &status_}, affine{PF_SLOT_PARTICLE_AFFINE, &affine_};
-        r.run({particle_programs(desc_.params).p2g, stat_.p2g, np,
-               apic ? Bindings{pos, vel, accum, count, status, affine} : Bindings{pos, vel, accum, count, status}});
+void Simulation::update_substep_table() {
+    const SubstepShape shape{desc_.features, desc_.params.free_surface, desc_.params.volume_correction > 0.0f};
+    if (substep_built_ && substep_shape_ == shape) return;
+    build_substep_table();
+    substep_shape_ = shape;
+    substep_built_ = true;
+}
+
+std::vector<std::string> Simulation::substep_stage_names() {
+    update_substep_table();
+    return substep_.names();
+}
+
+void Simulation::build_substep_table() {
+    SubstepTable& t = substep_;
+    t.clear();
+    const uint64_t cells = uint64_t(cells_), faces = uint64_t(faces_);
+    t.add("p2g", [this](const SubstepContext&) {
+        p2g_.run(*runner_, desc_.params,
+                 P2gBuffers{pos_, vel_, affine_, face_accum_, cell_count_, status_, particle_count_,
+                            desc_.params.transfer == PF_TRANSFER_APIC, stat_.clear});
+    });
+    t.add("grid_forces", [this, faces](const SubstepContext&) {
+        runner_->run({particle_programs(desc_.params).grid_forces, stat_.grid_forces, faces,
+                      {{PF_SLOT_FACE_ACCUM, &face_accum_}, {PF_SLOT_FACE_VEL, &face_vel_},
+                       {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
+    });
+    t.add("classify", [this, cells](const SubstepContext&) {
+        runner_->run({ProgramId::classify, stat_.classify, cells,
+                      {{PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_CELL_TYPE, &cell_type_}}});
+    });
+    // The ghost-fluid words, once the cell kinds are final (the effects after classify
+    // included: obstacles mark their cells SOLID).
+    if (desc_.params.free_surface == PF_FREE_SURFACE_GHOST_FLUID) {
+        t.add("free_surface", [this, cells](const SubstepContext&) {
+            runner_->run({ProgramId::free_surface, stat_.free_surface, cells,
+                          {{PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
+        });
     }
-    r.run({particle_programs(desc_.params).grid_forces, stat_.grid_forces, faces,
-           {{PF_SLOT_FACE_ACCUM, &face_accum_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_},
-            {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
-    run_effects(EffectStage::after_grid_forces);
-    r.run({ProgramId::classify, stat_.classify, cells,
-           {{PF_SLOT_CELL_COUNT, &cell_count_}, {PF_SLOT_CELL_TYPE, &cell_type_}}});
-    run_effects(EffectStage::after_classify);
-    // The ghost-fluid words, once the cell kinds are final (obstacles included).
-    if (desc_.params.free_surface == PF_FREE_SURFACE_GHOST_FLUID)
-        r.run({ProgramId::free_surface, stat_.free_surface, cells,
-               {{PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
-    if (correct_volume)
-        volume_correction_.run(r, *solver_, desc_.params,
-                               {pos_, cell_type_, cell_count_, pressure_, face_fraction_, cells, np});
-    r.run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
-           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
-            {PF_SLOT_PRESSURE, &pressure_}}});
-    if (hydrostatic_start_pending_) {
+    if (desc_.params.volume_correction > 0.0f) {
+        t.add("volume_correction", [this, cells](const SubstepContext& c) {
+            if (!c.correct_volume) return;
+            volume_correction_.run(*runner_, *solver_, desc_.params,
+                                   {pos_, cell_type_, cell_count_, pressure_, face_fraction_, cells, particle_count_});
+        });
+    }
+    t.add("pressure_setup", [this, cells](const SubstepContext&) {
+        runner_->run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
+                      {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
+                       {PF_SLOT_PRESSURE, &pressure_}}});
+        if (!hydrostatic_start_pending_) return;
         // One invocation per column along gravity's dominant axis (the kernel picks the same).
         const float* g = desc_.params.gravity;
         const float ax = std::abs(g[0]), ay = std::abs(g[1]), az = std::abs(g[2]);
         const int axis = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
-        r.run({ProgramId::hydrostatic_start, stat_.hydrostatic_start, cells / desc_.grid_size[axis],
-               {{PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_}}});
+        runner_->run({ProgramId::hydrostatic_start, stat_.hydrostatic_start, cells / desc_.grid_size[axis],
+                      {{PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_}}});
         hydrostatic_start_pending_ = false;
+    });
+    t.add("pressure_solve", [this](const SubstepContext&) {
+        // What this solver needed recently (a readback of another solver's step says nothing).
+        const bool known = recent_solver_ == desc_.params.pressure_solver;
+        solver_->solve(*runner_, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params,
+                                                 known ? recent_iterations_ : kUnknownIterations,
+                                                 known ? recent_later_iterations_ : kUnknownIterations,
+                                                 known && solver_residual_ <= desc_.params.pressure_tolerance,
+                                                 known ? solver_residual_ : -1.0f});
+    });
+    t.add("velocity_update", [this, faces](const SubstepContext&) {
+        runner_->run({ProgramId::velocity_update, stat_.velocity_update, faces,
+                      {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
+                       {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
+    });
+    t.add("extrapolate", [this, faces](const SubstepContext&) {
+        valid_current_ = 0;
+        for (uint32_t layer = 0; layer < desc_.params.extrapolation_layers; ++layer) {
+            runner_->run({ProgramId::extrapolate, stat_.extrapolate, faces,
+                          {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VALID, &face_valid_[valid_current_]},
+                           {PF_SLOT_FACE_VALID_OUT, &face_valid_[1 - valid_current_]}}});
+            valid_current_ = 1 - valid_current_;
+        }
+    });
+    t.add("g2p", [this](const SubstepContext&) { run_g2p(); });
+    t.add("advect", [this](const SubstepContext&) { run_advect(); });
+    // Effects that are on, after the core stage their stage follows (lowest feature bit first).
+    const std::pair<EffectStage, const char*> hooks[] = {{EffectStage::after_grid_forces, "grid_forces"},
+                                                         {EffectStage::after_classify, "classify"},
+                                                         {EffectStage::after_velocity_update, "velocity_update"},
+                                                         {EffectStage::after_advect, "advect"}};
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        if (!(desc_.features & (1u << i))) continue;
+        Effect* effect = effects_[i].get();
+        for (const auto& [stage, after] : hooks) {
+            if (!(effect->stages() & stage_bit(stage))) continue;
+            const std::string name = std::string(effect->name()) + "/" + after;
+            t.insert_after(after, name, [this, effect, stage = stage](const SubstepContext&) {
+                effect->run(stage, *runner_, effect_buffers());
+            });
+        }
     }
-    // What this solver needed recently (a readback of another solver's step says nothing).
-    const bool known = recent_solver_ == desc_.params.pressure_solver;
-    solver_->solve(r, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params,
-                                      known ? recent_iterations_ : kUnknownIterations,
-                                      known ? recent_later_iterations_ : kUnknownIterations,
-                                      known && solver_residual_ <= desc_.params.pressure_tolerance,
-                                      known ? solver_residual_ : -1.0f});
-    r.run({ProgramId::velocity_update, stat_.velocity_update, faces,
-           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
-            {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
-    run_effects(EffectStage::after_velocity_update);
-    valid_current_ = 0;
-    for (uint32_t layer = 0; layer < desc_.params.extrapolation_layers; ++layer) {
-        r.run({ProgramId::extrapolate, stat_.extrapolate, faces,
-               {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VALID, &face_valid_[valid_current_]},
-                {PF_SLOT_FACE_VALID_OUT, &face_valid_[1 - valid_current_]}}});
-        valid_current_ = 1 - valid_current_;
-    }
-    run_g2p_and_advect();
 }
 
 void Simulation::run_metrics() {
@@ -470,24 +396,29 @@ void Simulation::run_metrics() {
            {Uniform::uint1(PF_LOC_METRICS_GROUPS, r.workgroups(n).total())}});
 }
 
-void Simulation::run_g2p_and_advect() {
+void Simulation::run_g2p() {
     PassRunner& r = *runner_;
     const uint32_t np = particle_count_;
-    const ParticlePrograms programs = particle_programs(desc_.params);
     const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
         face_vel{PF_SLOT_FACE_VEL, &face_vel_}, status{PF_SLOT_STATUS, &status_};
+    const gl::ProgramId g2p = particle_programs(desc_.params).g2p;
     if (desc_.params.transfer == PF_TRANSFER_APIC) {
-        r.run({programs.g2p, stat_.g2p, np, {pos, vel, face_vel, {PF_SLOT_PARTICLE_AFFINE, &affine_}, status}});
+        r.run({g2p, stat_.g2p, np, {pos, vel, face_vel, {PF_SLOT_PARTICLE_AFFINE, &affine_}, status}});
     } else {
-        r.run({programs.g2p, stat_.g2p, np, {pos, vel, face_vel, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}, status}});
+        r.run({g2p, stat_.g2p, np, {pos, vel, face_vel, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}, status}});
     }
+}
+
+void Simulation::run_advect() {
+    PassRunner& r = *runner_;
+    const uint32_t np = particle_count_;
+    const gl::ProgramId advect = particle_programs(desc_.params).advect;
     // Euler moves particles with their own (G2P) velocity, Runge-Kutta through the grid's.
     if (desc_.params.advection == PF_ADVECTION_EULER) {
-        r.run({programs.advect, stat_.advect, np, {pos, vel}});
+        r.run({advect, stat_.advect, np, {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}}});
     } else {
-        r.run({programs.advect, stat_.advect, np, {pos, face_vel}});
+        r.run({advect, stat_.advect, np, {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_FACE_VEL, &face_vel_}}});
     }
-    run_effects(EffectStage::after_advect);
 }
 
 uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
@@ -632,7 +563,8 @@ pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, con
 }
 
 pf_result Simulation::run_g2p_and_advect_for_test(float dt) {
-    run_one_step_for_test(dt, [&] { run_g2p_and_advect(); });
+    update_substep_table();
+    run_one_step_for_test(dt, [&] { substep_.run(SubstepContext{}, "g2p"); });
     return PF_OK;
 }
 
@@ -652,15 +584,7 @@ void Simulation::take_lagged_status(int64_t step) {
     cfl_step_ = measured;
     // A fixed-point sum overflowed in a step run at today's range: widen it from this step on
     // (the overflowing step's result is flagged; integer sums stay deterministic).
-    if ((got.flags & PF_FLAG_P2G_OVERFLOW) && measured > p2g_range_changed_at_step_ &&
-        p2g_range_shift_ < kMaxP2gRangeShift) {
-        p2g_range_shift_ += 2;
-        p2g_range_changed_at_step_ = step - 1;
-        log_.warning("pf_step: fixed-point particle-to-grid range widened to " +
-                     std::to_string((1u << (11 + p2g_range_shift_)) - 1) +
-                     " full-weight particles per grid sample (velocity resolution max_speed / 2^" +
-                     std::to_string(kWeightScaleBits - int(p2g_range_shift_)) + ")");
-    }
+    if (got.flags & PF_FLAG_P2G_OVERFLOW) p2g_.range().widen_after_overflow(measured, step, log_);
 }
 
 void Simulation::read_status_slot(int s) const {
@@ -864,7 +788,7 @@ pf_result Simulation::clear_particles() {
     restart_volume_reference();
     particle_count_ = 0;  // freed slots' APIC affine vectors are zeroed when add_particles reuses them
     write_count_record(0);
-    fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
+    runner_->fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
     added_speed_ = 0.0f;
     gpu_max_speed_ = 0.0f;
     return PF_OK;

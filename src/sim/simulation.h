@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "api/log.h"
@@ -23,6 +24,8 @@
 #include "sim/pass_runner.h"
 #include "sim/sim_uniforms.h"
 #include "sim/solvers/pressure_solver.h"
+#include "sim/substep_table.h"
+#include "sim/transfer/particle_to_grid.h"
 #include "sim/volume_correction.h"
 
 namespace pf {
@@ -120,14 +123,18 @@ public:
                              std::vector<float>& pressure);
     std::vector<uint32_t> read_grid(GridBuffer which) const;
     void write_grid_for_test(GridBuffer which, const std::vector<uint32_t>& words);
-    // Only the last two passes of a substep (G2P and advection) on the face velocities as they
-    // are: tests of the integrators set face_vel with write_grid_for_test.
+    // The substep table's entries from G2P on (G2P, advection and the effects after it) on the
+    // face velocities as they are: tests of the integrators set face_vel with write_grid_for_test.
     pf_result run_g2p_and_advect_for_test(float dt);
     // APIC affine vectors of the live particles, 12 floats each (c_x, c_y, c_z as vec4s);
     // empty while APIC was never used.
     std::vector<float> read_affine() const;
     void write_affine_for_test(const std::vector<float>& values);
     const PassRunner& runner() const { return *runner_; }
+    // Whether the P2G scheme in use sums floats (else fixed point at the range's scale).
+    bool p2g_float_sums() const { return p2g_.float_sums(desc_.params); }
+    // The substep table's entries, in the order a substep runs them (as the next step would).
+    std::vector<std::string> substep_stage_names();
 
 private:
     explicit Simulation(const pf_sim_desc& desc);
@@ -138,32 +145,41 @@ private:
     bool snapshot_has_affine() const;
     size_t snapshot_gpu_bytes(uint32_t particles, bool affine) const;
     void drain_status();
-    // Widest fixed-point P2G range: 2^(20 - 10) per unit weight (design.md §4.2).
-    static constexpr uint32_t kMaxP2gRangeShift = 10;
     pf_result init();
     // The solver for params.pressure_solver, made and initialised on first use (kept after).
     pf_result solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out);
-    // The per-particle programs params select (transfer, flip ratio, advection).
+    // The per-particle programs params select after P2G (its scheme's sums, transfer, flip
+    // ratio, advection); the P2G scheme must be prepared.
     struct ParticlePrograms {
-        gl::ProgramId p2g, grid_forces, g2p, advect;
+        gl::ProgramId grid_forces, g2p, advect;
     };
-    static ParticlePrograms particle_programs(const pf_sim_params& params);
-    // Builds those programs and, for APIC, allocates the affine buffer (first use only), so
-    // that a failure leaves the running simulation untouched.
+    ParticlePrograms particle_programs(const pf_sim_params& params) const;
+    // Prepares the P2G scheme, builds those programs and, for APIC, allocates the affine buffer
+    // (first use only), so that a failure leaves the running simulation untouched.
     pf_result prepare_particle_passes(const pf_sim_params& params, const char* fn);
     void zero_affine(uint32_t first, uint32_t count);
-    // PF_P2G_SORTED_GATHER: builds its programs (APIC's or not), adds its statistics entries and allocates its
-    // buffers (first use only; nothing while another scheme runs). Errors are logged and returned.
-    pf_result prepare_sorted_gather(bool apic, const char* fn);
-    // Its passes: count and sort the particles by cell, then gather per face sample.
-    void run_sorted_gather(bool apic);
     void upload_uniforms(float dt);
     // Test hooks: one step of length dt that runs `passes` (timed and counted like a step).
     template <typename Passes>
     void run_one_step_for_test(float dt, Passes&& passes);
-    // One substep; with `correct_volume` it also runs the volume correction (after classify,
-    // on this substep's counts).
+    // One substep: the substep table (rebuilt first when its shape changed); with
+    // `correct_volume` the volume correction's entry runs (after classify, on this substep's
+    // counts).
     void run_substep(bool correct_volume);
+    // Rebuilds the substep table when what decides its entries changed since it was built.
+    void update_substep_table();
+    // Fills the table: the core stages in order, the entries params ask for, and the entries
+    // of every effect that is on after the core stage each of its stages follows.
+    void build_substep_table();
+    // The parts of the state that decide the table's entries.
+    struct SubstepShape {
+        uint32_t features = 0;
+        pf_free_surface free_surface = PF_FREE_SURFACE_MARKER_CELL;
+        bool volume_correction = false;
+        bool operator==(const SubstepShape& o) const {
+            return features == o.features && free_surface == o.free_surface && volume_correction == o.volume_correction;
+        }
+    };
     // Every effect that is on, its passes of `stage` (lowest feature bit first).
     void run_effects(EffectStage stage);
     // Start of a step: effects that are on upload what changed.
@@ -187,9 +203,9 @@ private:
     // End of a step: effects that are on start their readbacks.
     void end_effects_step();
     const ObstaclesEffect& obstacles() const { return static_cast<const ObstaclesEffect&>(*effects_[1]); }
-    void run_g2p_and_advect();
+    void run_g2p();
+    void run_advect();
     const gl::Buffer& grid_buffer(GridBuffer which) const;
-    void fill(const gl::Buffer& buffer, uint32_t words, uint32_t value, StatId stat);
     // Takes in every status readback that has arrived (for pf_get_stats and the flags).
     void poll_status() const;
     // Downloads readback slot `s` (blocking if its fence has not passed) and takes it in.
@@ -210,7 +226,7 @@ private:
     void warn_about_free_surface(const pf_sim_params& params, const char* fn) const;
 
     struct CoreStats {
-        StatId clear, p2g, grid_forces, classify, pressure_setup, velocity_update, extrapolate, g2p, advect;
+        StatId clear, grid_forces, classify, pressure_setup, velocity_update, extrapolate, g2p, advect;
         StatId metrics;  // once per step, in the PF_PASS_VELOCITY_UPDATE group
         StatId hydrostatic_start;  // after particles were added, in the PF_PASS_PRESSURE_SETUP group
         StatId free_surface;  // the ghost-fluid words, in the PF_PASS_CLASSIFY group
@@ -226,6 +242,10 @@ private:
     std::unique_ptr<PressureSolver> solvers_[PF_PRESSURE_SOLVER_COUNT];
     PressureSolver* solver_ = nullptr;  // the one params.pressure_solver selects
     VolumeCorrection volume_correction_;
+    ParticleToGrid p2g_;  // the schemes, their fixed-point range and the "p2g" statistics entry
+    SubstepTable substep_;
+    SubstepShape substep_shape_{};
+    bool substep_built_ = false;
     // One effect per feature bit (bit i: effects_[i]); made at construction (their host lists
     // exist while off), initialised when first turned on (effects_ready_ bits).
     std::unique_ptr<Effect> effects_[kEffectCount];
@@ -237,17 +257,6 @@ private:
     gl::Buffer pos_, vel_;
     std::unique_ptr<ParticleReadback> requests_;  // pf_request_particles
     gl::Buffer affine_;  // APIC: 3 vec4 per particle slot (c_x, c_y, c_z); allocated on first use
-    // Sorted-gather P2G, allocated on first use: per particle slot its half cell (2 x 2 x 2 per
-    // cell) and its slot in it (uvec2); particle indices grouped by half cell in counting-atomic
-    // order; in the fixed order, the particles' grid coordinates (vec4) and velocities with
-    // indices (vec3 + uint); per half cell the particle count (and one word more), and the levels
-    // of the prefix sum over those counts (the half-cell starts first).
-    struct ScanLevel {
-        uint32_t count = 0, in = 0, out = 0, sums = 0;  // items; word offsets of input, prefixes, block totals
-    };
-    gl::Buffer sort_cell_slot_, sort_unsorted_, sort_grid_, sort_particles_, sort_count_, sort_scan_;
-    std::vector<ScanLevel> scan_levels_;
-    StatId stat_p2g_sort_ = 0, stat_p2g_gather_ = 0;
     // The live count; while gpu_count_, an upper bound of it (the GPU's count record holds the
     // exact one): raised by what emitters may add, lowered by readbacks of the GPU's count.
     mutable uint32_t particle_count_ = 0;
@@ -302,8 +311,6 @@ private:
     pf_pressure_solver fence_solver_[kReadbackSlots] = {};  // the solver of each readback's step
     uint64_t fence_added_[kReadbackSlots] = {};             // and added_total_ then
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
-    mutable uint32_t p2g_range_shift_ = 0;             // fixed-point scale 2^(20 - shift)...
-    int64_t p2g_range_changed_at_step_ = 0;            // ...in use from the step after this one
     // Adds PF_FLAG_* bits, logging one warning for each bit not already set.
     void raise_flags(uint32_t bits) const;
     // Accuracy metrics of the newest readback (status words PF_STATUS_DIVERGENCE_L2..).

@@ -92,7 +92,7 @@ std::vector<uint8_t> Simulation::snapshot_host_state() const {
     SnapshotState s{};
     s.steps = steps_;
     s.status_step = status_step_;
-    s.p2g_range_changed_at_step = p2g_range_changed_at_step_;
+    s.p2g_range_changed_at_step = p2g_.range().changed_at_step();
     s.added_at_step = added_at_step_;
     s.flags_cleared_at_step = flags_cleared_at_step_;
     s.gpu_max_speed = gpu_max_speed_;
@@ -102,7 +102,7 @@ std::vector<uint8_t> Simulation::snapshot_host_state() const {
     s.recent_iterations = recent_iterations_;
     s.recent_later_iterations = recent_later_iterations_;
     s.recent_solver = uint32_t(recent_solver_);
-    s.p2g_range_shift = p2g_range_shift_;
+    s.p2g_range_shift = p2g_.range().shift();
     s.flags = flags_;
     s.hydrostatic_start_pending = hydrostatic_start_pending_ ? 1u : 0u;
     s.fill_calls = fill_calls_;
@@ -216,7 +216,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     const Log silent;
     if (validate_params(params, log_, fn) != PF_OK) return bad("its parameters are invalid");
     if (validate_features(features, log_, fn) != PF_OK) return bad("its features are invalid");
-    if (s.recent_solver > uint32_t(PF_PRESSURE_SOLVER_COUNT) || s.p2g_range_shift > kMaxP2gRangeShift ||
+    if (s.recent_solver > uint32_t(PF_PRESSURE_SOLVER_COUNT) || s.p2g_range_shift > FixedPointRange::kMaxShift ||
         s.hydrostatic_start_pending > 1 || s.steps < s.status_step)
         return bad("its step state is invalid");
     const auto speed_ok = [](float v) { return std::isfinite(v) && v >= 0.0f; };
@@ -308,7 +308,6 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     status_step_ = rebase(s.status_step);
     // The fields the step logic compares keep their distance from the step count even below 0.
     const auto rebase_signed = [&](int64_t step) { return step + shift; };
-    p2g_range_changed_at_step_ = rebase_signed(s.p2g_range_changed_at_step);
     added_at_step_ = rebase_signed(s.added_at_step);
     cfl_step_ = rebase_signed(s.cfl_step);
     cfl_speed_ = s.cfl_speed;
@@ -327,7 +326,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     recent_iterations_ = s.recent_iterations;
     recent_later_iterations_ = s.recent_later_iterations;
     recent_solver_ = pf_pressure_solver(s.recent_solver);
-    p2g_range_shift_ = s.p2g_range_shift;
+    p2g_.range().restore(s.p2g_range_shift, rebase_signed(s.p2g_range_changed_at_step));  // checked above
     flags_ = s.flags;
     hydrostatic_start_pending_ = s.hydrostatic_start_pending != 0;
     fill_calls_ = s.fill_calls;

@@ -36,7 +36,6 @@ struct ParticleState {
     size_t count() const { return pos.size() / 3; }
 };
 
-// Largest particle speed, m/s.
 // An output pf_sim_params of this header's layout: pf_get_params and pf_quality_params fill every
 // field (a zero struct_size means the first layout, which ends before free_surface).
 inline pf_sim_params sized_params() {
@@ -45,6 +44,7 @@ inline pf_sim_params sized_params() {
     return p;
 }
 
+// Largest particle speed, m/s.
 inline double max_speed_of(const ParticleState& p) {
     double m = 0;
     for (size_t i = 0; i < p.count(); ++i)

@@ -56,18 +56,25 @@ enum class EffectStage : uint8_t {
     after_substeps,     // once per step, after the last substep (sinks remove particles)
 };
 
+// The bit of `stage` in Effect::stages().
+constexpr uint32_t stage_bit(EffectStage stage) { return 1u << uint32_t(stage); }
+
 class Effect {
 public:
     virtual ~Effect() = default;
     // Its PF_FEATURE_* bit.
     virtual uint32_t feature() const = 0;
+    // Its short name: entries of the substep table are "<name>/<stage>".
+    virtual const char* name() const = 0;
+    // The stages it runs passes in (stage_bit of each): the substep stages get table entries.
+    virtual uint32_t stages() const = 0;
     // Builds its programs, allocates its buffers and registers its statistics entries; called
     // the first time its feature is turned on. Errors are logged (prefixed with fn) and
     // returned; the effect then stays off and may be tried again.
     virtual pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) = 0;
     // Start of a step (GL state guarded): upload what changed on the host since the last step.
     virtual void begin_step() = 0;
-    // Records its passes of one substep at `stage` (nothing at stages it does not use).
+    // Records its passes of one substep at `stage`, one of its stages().
     virtual void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) = 0;
     // Start of a step, before begin_step: the frame's length (emitters turn rates into counts).
     virtual void begin_frame(const FrameInfo&) {}

@@ -17,6 +17,10 @@ class DomainMotionEffect final : public Effect {
 public:
     explicit DomainMotionEffect(const pf_sim_desc& desc);
     uint32_t feature() const override { return PF_FEATURE_DOMAIN_MOTION; }
+    const char* name() const override { return "domain_motion"; }
+    uint32_t stages() const override {
+        return stage_bit(EffectStage::after_grid_forces);
+    }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
     void begin_frame(const FrameInfo& frame) override;
     void begin_step() override {}

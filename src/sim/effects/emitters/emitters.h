@@ -24,6 +24,10 @@ public:
     // `desc` resolved and validated: its capacity, seed and domain (snapshots validate against it).
     explicit EmittersEffect(const pf_sim_desc& desc) : desc_(desc), capacity_(desc.max_particles), seed_(desc.seed) {}
     uint32_t feature() const override { return PF_FEATURE_EMITTERS; }
+    const char* name() const override { return "emitters"; }
+    uint32_t stages() const override {
+        return stage_bit(EffectStage::before_substeps);
+    }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
     void begin_frame(const FrameInfo& frame) override;
     void begin_step() override;

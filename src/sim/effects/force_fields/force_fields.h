@@ -13,6 +13,10 @@ class ForceFieldsEffect final : public Effect {
 public:
     using List = ObjectList<pf_force_field, PF_MAX_FORCE_FIELDS>;
     uint32_t feature() const override { return PF_FEATURE_FORCE_FIELDS; }
+    const char* name() const override { return "force_fields"; }
+    uint32_t stages() const override {
+        return stage_bit(EffectStage::after_grid_forces);
+    }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
     void begin_step() override;
     void save_state(ByteWriter& out) const override;

@@ -36,6 +36,11 @@ public:
     using List = ObjectList<ObstacleEntry, PF_MAX_OBSTACLES>;
     ~ObstaclesEffect() override;
     uint32_t feature() const override { return PF_FEATURE_OBSTACLES; }
+    const char* name() const override { return "obstacles"; }
+    uint32_t stages() const override {
+        return stage_bit(EffectStage::after_classify) | stage_bit(EffectStage::after_velocity_update) |
+               stage_bit(EffectStage::after_advect);
+    }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
     void begin_step() override;
     void save_state(ByteWriter& out) const override;

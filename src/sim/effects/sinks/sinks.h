@@ -16,6 +16,10 @@ public:
     // `desc` resolved and validated: its capacity and domain (snapshots validate against it).
     explicit SinksEffect(const pf_sim_desc& desc) : desc_(desc), capacity_(desc.max_particles) {}
     uint32_t feature() const override { return PF_FEATURE_SINKS; }
+    const char* name() const override { return "sinks"; }
+    uint32_t stages() const override {
+        return stage_bit(EffectStage::after_substeps);
+    }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
     void begin_step() override;
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;

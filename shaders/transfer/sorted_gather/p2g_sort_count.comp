@@ -5,7 +5,7 @@
 // see p2g_gather.comp), and keeps the particle's half cell and the slot the counting atomic gave
 // it among that half cell's particles. The counts are integer increments, so they are exact and
 // independent of order; the slots are not (they only place the particle in its half cell's
-// unsorted segment, p2g_sort_scatter.comp; p2g_sort_rank.comp fixes the order).
+// unsorted segment, transfer/common/sort_scatter.comp; p2g_sort_rank.comp fixes the order).
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
