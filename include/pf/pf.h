@@ -125,7 +125,12 @@ typedef enum pf_p2g {
                                   no atomics on hot samples, no rounding grid or overflow, and
                                   bit-identical run to run and for any particle order (several
                                   passes more: docs/accuracy.md) */
-    PF_P2G_COUNT = 3,
+    PF_P2G_TILED = 3,        /**< the default: particles counting-sorted by tile of 4^3 cells every
+                                  substep, then one workgroup per tile sums its particles in shared
+                                  memory and adds each sum to the grid once: PF_P2G_FIXED_POINT's
+                                  sums bit for bit (overflow detected the same way) with far fewer
+                                  global atomics; 12 bytes more per particle slot */
+    PF_P2G_COUNT = 4,
     PF_P2G_FORCE32 = 0x7fffffff
 } pf_p2g;
 
@@ -222,7 +227,8 @@ typedef struct pf_sim_params {
                                        compression. Positions only: velocities and kinetic energy are never
                                        touched. 0 = off (a zero value is taken literally, like flip_ratio);
                                        default 0.5 */
-    pf_p2g p2g;                   /**< particle-to-grid scheme; default (0) PF_P2G_FIXED_POINT */
+    pf_p2g p2g;                   /**< particle-to-grid scheme; default PF_P2G_TILED (0 is
+                                       PF_P2G_FIXED_POINT: the same sums, more atomics) */
     float volume_loss_limit;      /**< fraction of its rest volume (particle count / fill_particles_per_cell
                                        cells) pf_stats.liquid_volume may lose before PF_FLAG_VOLUME_LOST is
                                        raised and logged, (0, 1]; 0 = default 0.1 */

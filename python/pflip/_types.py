@@ -32,6 +32,7 @@ class P2G(enum.IntEnum):
     FIXED_POINT = 0
     FLOAT_ATOMIC = 1
     SORTED_GATHER = 2
+    TILED = 3
 
 
 class FreeSurface(enum.IntEnum):

@@ -80,9 +80,10 @@ def test_stats_and_pass_list_describe_the_step(dam_break):
 def test_every_p2g_scheme_breaks_the_dam_alike(gl):
     import pflip
 
-    # The three particle-to-grid schemes sum the same terms (fixed point rounds them to 2^-20
-    # steps, the float ones do not), so 10 frames later the liquid is where fixed point put it
-    # to well within a millimetre; the sorted gather lists its own passes under the P2G group.
+    # The particle-to-grid schemes sum the same terms (fixed point and the tiled scheme round them
+    # to 2^-20 steps, the float ones do not), so 10 frames later the liquid is where fixed point put
+    # it to well within a millimetre (the tiled scheme: exactly); the sorted gather and the tiled
+    # scheme's sort list their own passes under the P2G group.
     centres = {}
     for scheme in pflip.P2G:
         sim = pflip.Simulation(grid_size=(32, 16, 16), cell_size=0.05, max_particles=1 << 15)
@@ -97,8 +98,12 @@ def test_every_p2g_scheme_breaks_the_dam_alike(gl):
         if scheme == pflip.P2G.SORTED_GATHER:
             assert names["p2g_gather"].dispatches >= 1 and names["p2g_sort"].dispatches >= 1
             assert names["p2g_gather"].group == pflip.Pass.P2G == names["p2g_sort"].group
+        elif scheme == pflip.P2G.TILED:
+            assert names["p2g"].dispatches >= 1 and names["p2g_tile_sort"].dispatches >= 1
+            assert names["p2g"].group == pflip.Pass.P2G == names["p2g_tile_sort"].group
         else:
             assert "p2g_gather" not in names
         sim.close()
     for scheme, c in centres.items():
         assert np.abs(c - centres[pflip.P2G.FIXED_POINT]).max() < 1e-3, (scheme, c)
+    assert (centres[pflip.P2G.TILED] == centres[pflip.P2G.FIXED_POINT]).all()

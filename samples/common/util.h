@@ -97,8 +97,8 @@ const char* transfer_name(pf_transfer transfer);
 pf_advection parse_advection(const std::string& name, const char* what);
 /// The name parse_advection takes for `advection`.
 const char* advection_name(pf_advection advection);
-/// Particle-to-grid scheme by name ("fixed", "float", "gather": PF_P2G_FIXED_POINT,
-/// PF_P2G_FLOAT_ATOMIC, PF_P2G_SORTED_GATHER); throws Error naming `what`.
+/// Particle-to-grid scheme by name ("fixed", "float", "gather", "tiled": PF_P2G_FIXED_POINT,
+/// PF_P2G_FLOAT_ATOMIC, PF_P2G_SORTED_GATHER, PF_P2G_TILED); throws Error naming `what`.
 pf_p2g parse_p2g(const std::string& name, const char* what);
 /// "marker_cell" or "ghost_fluid" (pf_free_surface); throws Error naming `what` otherwise.
 pf_free_surface parse_free_surface(const std::string& name, const char* what);

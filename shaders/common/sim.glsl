@@ -73,9 +73,10 @@ vec3 stencil_slope(int axis, vec3 g) {
     return vec3(greaterThanEqual(s, vec3(0.0))) * vec3(lessThanEqual(s, vec3(face_dims(axis)) - 1.0));
 }
 
-// Weight of stencil node base + d, d in {0,1}^3.
+// Weight of stencil node base + d, d in {0,1}^3. The boolean mix selects each factor exactly (a
+// float mix may be computed as a + t (b - a), which rounds, and differently in each kernel).
 float stencil_weight(vec3 frac, ivec3 d) {
-    vec3 w = mix(1.0 - frac, frac, vec3(d));
+    vec3 w = mix(1.0 - frac, frac, notEqual(d, ivec3(0)));
     return w.x * w.y * w.z;
 }
 

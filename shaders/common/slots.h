@@ -62,6 +62,13 @@
 #define PF_SLOT_SORT_UNSORTED 4   /* particle indices grouped by half cell, in counting-atomic order */
 #define PF_SLOT_SORT_GRID 5       /* in the sorted order: each particle's grid coordinate (vec4, w unused) */
 #define PF_SLOT_SORT_PARTICLE 7   /* in the sorted order: each particle's velocity and index (vec3 + uint) */
+/* the tiled P2G (pf_p2g PF_P2G_TILED, transfer/tiled/): positions, velocities, face accumulators,
+ * cell counts, status and APIC affine vectors as above; the counting sort by tile on the sorted
+ * gather's slots (the key is the tile instead of the half cell) */
+#define PF_P2G_TILE 4             /* cells per tile edge: one workgroup sums a tile's particles */
+#define PF_P2G_TILE_WINDOW 6      /* face samples per window edge: the tile's and one around it */
+#define PF_SLOT_TILE_START 2      /* the splat: per tile, plus one, the first index of its particles */
+#define PF_SLOT_TILE_ORDER 3      /* the splat: particle indices grouped by tile */
 /* the exclusive prefix sum (transfer/common/scan_blocks.comp and scan_add.comp): items per
  * invocation and per workgroup (one block) */
 #define PF_SCAN_ITEMS_PER_INVOCATION 4

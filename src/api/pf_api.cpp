@@ -66,6 +66,8 @@ pf_sim_params full_default_params() {
     p.pressure_tolerance = 1e-3f;
     p.sor_omega = 1.6f;
     p.volume_correction = 0.5f;  // measured: docs/design.md §4.5
+    // Fixed point's sums bit for bit, 2.6 times faster at 1.2M particles (docs/performance.md).
+    p.p2g = PF_P2G_TILED;
     p.volume_loss_limit = 0.1f;  // docs/stability.md
     p.energy_gain_limit = 0.1f;  // docs/stability.md
     return p;

@@ -151,7 +151,7 @@ TEST_F(DebugLabels, EveryObjectThePflipMadeIsLabelled) {
     ASSERT_EQ(pf_get_gl_buffers(s, &b), PF_OK);
     EXPECT_EQ(label_of(GL_BUFFER, b.positions), "pflip/particle_pos");
     EXPECT_EQ(label_of(GL_BUFFER, b.velocities), "pflip/particle_vel");
-    for (const char* expected : {"pflip/p2g", "pflip/pressure_setup", "pflip/cg_r", "pflip/mg_r", "pflip/particle_affine",
+    for (const char* expected : {"pflip/p2g_tile_splat", "pflip/pressure_setup", "pflip/cg_r", "pflip/mg_r", "pflip/particle_affine",
                                  "pflip/obstacles", "pflip/force_fields", "pflip/ssf_thickness", "pflip/ssf_shade_fb",
                                  "pflip/particle_sprites", "pflip/sampler_linear"})
         EXPECT_TRUE(labels.count(expected)) << expected << " not among the labels";

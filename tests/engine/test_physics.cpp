@@ -247,6 +247,7 @@ TEST_F(Physics, SubstepsFollowCfl) {
     pf_sim_desc d = test_desc(16, 16, 16, 0.1f);
     d.params.max_substeps = 16;
     d.params.pressure_solver = PF_PRESSURE_SOLVER_JACOBI;  // a fixed dispatch count per substep (below)
+    d.params.p2g = PF_P2G_FIXED_POINT;                      // one P2G dispatch per substep
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
     const float lo[3] = {0.2f, 0.2f, 0.2f}, hi[3] = {0.6f, 0.6f, 0.6f}, v[3] = {12.0f, 0.0f, 0.0f};

@@ -433,7 +433,9 @@ TEST_F(P2gSchemes, DamBreakIsPhysicallyTheSameWithEveryScheme) {
 // order; "p2g_gather") once the scheme is first selected, and not before (nothing is built or
 // allocated for a scheme never used).
 TEST_F(P2gSchemes, SortedGatherPassesAreListedUnderP2gOnceSelected) {
-    SimPtr sim = create(test_desc(12, 10, 8, 0.1f));
+    pf_sim_desc d = test_desc(12, 10, 8, 0.1f);
+    d.params.p2g = PF_P2G_FIXED_POINT;  // no sort built yet (the tiled default shares its prefix sum)
+    SimPtr sim = create(d);
     ASSERT_TRUE(sim);
     const float lo[3] = {0, 0, 0}, hi[3] = {0.4f, 0.5f, 0.4f};
     ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
@@ -572,12 +574,65 @@ TEST_F(P2gSchemes, SortedGatherRefusesAGridBeyondTheStorageBlockLimit) {
     EXPECT_NE(std::string(last_log()).find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE"), std::string::npos) << last_log();
     pf_sim_params now = sized_params();
     ASSERT_EQ(pf_get_params(sim.get(), &now), PF_OK);
-    EXPECT_EQ(now.p2g, PF_P2G_FIXED_POINT);
+    EXPECT_EQ(now.p2g, d.params.p2g) << "the refused scheme was kept";
     sim.reset();
     d.params.p2g = PF_P2G_SORTED_GATHER;
     pf_sim* raw = nullptr;
     EXPECT_EQ(pf_create(&d, &raw), PF_ERROR_CAPACITY);
     EXPECT_EQ(raw, nullptr);
+}
+
+// The tiled scheme adds p2g.comp's rounded terms in another grouping (per tile in shared memory,
+// then once per window sample): integer sums wrap alike in any grouping, so its accumulators and
+// counts are fixed point's, bit for bit. On the 12 x 10 x 8 grid the tiles of 4^3 cells leave
+// partial tiles along y; particles also lie on half-cell boundaries and on the walls, with
+// PIC/FLIP and APIC (affine vectors set).
+TEST_F(P2gSchemes, TiledIsFixedPointBitForBit) {
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> uv(-2.0f, 2.0f), uc(-1.0f, 1.0f);
+    std::vector<float> pos = pos_, vel = vel_;
+    const ref::Grid g{12, 10, 8, 0.125, glm::dvec3(0.0)};  // exact half-cell positions i / 16
+    for (int k = 0; k <= 2 * g.nz; ++k)
+        for (int j = 0; j <= 2 * g.ny; ++j)
+            for (int i = 0; i <= 2 * g.nx; i += 3) {
+                const float p[3] = {float(i) / 16.0f, float(j) / 16.0f, float(k) / 16.0f};
+                for (int a = 0; a < 3; ++a) pos.push_back(p[a]), vel.push_back(uv(rng));
+            }
+    std::vector<float> affine(pos.size() / 3 * 12);
+    for (float& c : affine) c = uc(rng);
+    for (pf_transfer transfer : {PF_TRANSFER_PIC_FLIP, PF_TRANSFER_APIC}) {
+        const std::vector<float> no_affine, &a = transfer == PF_TRANSFER_APIC ? affine : no_affine;
+        const SplatResult fixed = splat_of(PF_P2G_FIXED_POINT, transfer, pos, vel, a, g),
+                          tiled = splat_of(PF_P2G_TILED, transfer, pos, vel, a, g);
+        ASSERT_EQ(tiled.accum.size(), fixed.accum.size());
+        size_t differ = 0;
+        for (size_t k = 0; k < fixed.accum.size(); ++k) {
+            if (fixed.accum[k] != tiled.accum[k] && differ < 8)
+                std::printf("word %zu: fixed %.9g tiled %.9g\n", k, fixed.accum[k], tiled.accum[k]);
+            differ += fixed.accum[k] != tiled.accum[k];
+        }
+        EXPECT_EQ(differ, 0u) << "accumulator words that differ from fixed point, transfer " << int(transfer);
+        EXPECT_EQ(tiled.count, fixed.count);
+        EXPECT_EQ(tiled.flags & PF_GPU_FLAG_P2G_OVERFLOW, 0u);
+    }
+}
+
+// The hot cell of AHotCellOverflowsFixedPointButNotTheGather overflows the tiled scheme's sums
+// too (in shared memory first), and the flag says so.
+TEST_F(P2gSchemes, TiledFlagsTheOverflowFixedPointFlags) {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<float> jitter(-0.01f, 0.01f), dv(-0.2f, 0.2f);
+    std::vector<float> pos, vel;
+    for (int i = 0; i < 6000; ++i) {
+        const float p[3] = {0.55f + jitter(rng), 0.45f + jitter(rng), 0.35f + jitter(rng)};
+        const float v[3] = {1.5f + dv(rng), -1.0f + dv(rng), 0.5f + dv(rng)};
+        for (int a = 0; a < 3; ++a) pos.push_back(p[a]), vel.push_back(v[a]);
+    }
+    const SplatResult fixed = splat_of(PF_P2G_FIXED_POINT, PF_TRANSFER_PIC_FLIP, pos, vel),
+                      tiled = splat_of(PF_P2G_TILED, PF_TRANSFER_PIC_FLIP, pos, vel);
+    EXPECT_NE(fixed.flags & PF_GPU_FLAG_P2G_OVERFLOW, 0u);
+    EXPECT_NE(tiled.flags & PF_GPU_FLAG_P2G_OVERFLOW, 0u);
+    EXPECT_EQ(tiled.count, fixed.count);
 }
 
 // Every scheme below PF_P2G_COUNT, with the programs of both transfers (C = 0 here, so APIC's
@@ -612,7 +667,7 @@ TEST_P(EveryP2gScheme, MatchesTheReference) {
 }
 
 std::string every_p2g_name(const ::testing::TestParamInfo<std::tuple<int, int>>& info) {
-    static const char* const names[] = {"fixed_point", "float_atomic", "sorted_gather"};
+    static const char* const names[] = {"fixed_point", "float_atomic", "sorted_gather", "tiled"};
     static_assert(sizeof(names) / sizeof(names[0]) == PF_P2G_COUNT, "a name per scheme");
     return std::string(names[std::get<0>(info.param)]) + (std::get<1>(info.param) == PF_TRANSFER_APIC ? "_apic" : "_flip");
 }

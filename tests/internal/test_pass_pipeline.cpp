@@ -17,7 +17,9 @@ namespace {
 class PassPipeline : public GpuTest {};
 
 TEST_F(PassPipeline, UniformOffsetsMatchTheGl) {
-    SimPtr handle = create(test_desc(8, 8, 8));
+    pf_sim_desc d = test_desc(8, 8, 8);
+    d.params.p2g = PF_P2G_FIXED_POINT;  // its p2g program is the one read below
+    SimPtr handle = create(d);
     ASSERT_TRUE(handle);
     const Simulation& sim = *pf::entry(handle)->impl;
     const gl::Api& gl = sim.api();

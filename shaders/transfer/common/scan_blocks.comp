@@ -4,8 +4,7 @@
 // the block to the output and the block's total to the block-sum array. The host runs it again
 // on the block sums until one block holds them all, then adds the scanned sums back down
 // (scan_add.comp). Integer sums: exact, the same whatever the order of execution.
-// Used by the P2G schemes that sort particles by a key, for the keys' starts (exclusive sum of
-// the counts).
+// Used by the sorted-gather and tiled P2G for their keys' starts (exclusive sum of the counts).
 #include "common/slots.h"
 #include "common/dispatch.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;

@@ -1,0 +1,114 @@
+// Tiled P2G (pf_p2g PF_P2G_TILED), step 4 of 4, one workgroup per tile of PF_P2G_TILE^3 cells:
+// its particles (grouped by the counting sort) add the same rounded fixed-point terms as
+// transfer/atomic/p2g.comp, but into shared memory, over a window of PF_P2G_TILE_WINDOW^3 face
+// samples per lattice (the tile's and one around it, which holds every stencil node of a particle
+// in the tile); then each nonzero window sum is added to the face accumulators with one global
+// atomic, and the tile's cells get their counts. Integer sums wrap the same way in any grouping,
+// so the accumulators are bit-identical to p2g.comp's, with about 30 times fewer global atomics
+// at 8 particles per cell. An overflow is flagged wherever an addition overflows (shared or
+// global), as in p2g.comp: a sum that does not fit is always caught at its last addition.
+// Permutation PF_APIC: affine contributions, as in p2g.comp.
+#include "common/sim.glsl"
+layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
+layout(std430, binding = PF_SLOT_PARTICLE_VEL) readonly buffer Vel { vec4 vel[]; };
+layout(std430, binding = PF_SLOT_TILE_START) readonly buffer Start { uint tile_start[]; };
+layout(std430, binding = PF_SLOT_TILE_ORDER) readonly buffer Order { uint order[]; };
+layout(std430, binding = PF_SLOT_FACE_ACCUM) buffer Accum { int accum[]; };  // 2 words per face
+layout(std430, binding = PF_SLOT_CELL_COUNT) writeonly buffer Count { uint cell_count[]; };
+layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
+#if PF_APIC
+layout(std430, binding = PF_SLOT_PARTICLE_AFFINE) readonly buffer Affine { vec4 affine[]; };
+#endif
+
+const int kWindowSamples = PF_P2G_TILE_WINDOW * PF_P2G_TILE_WINDOW * PF_P2G_TILE_WINDOW;
+const int kTileCells = PF_P2G_TILE * PF_P2G_TILE * PF_P2G_TILE;
+shared int s_accum[3 * kWindowSamples * 2];  // per lattice, per window sample: momentum, weight
+shared uint s_count[kTileCells];
+shared uint s_overflow;
+
+// Whether adding `value` to `old` wrapped past the int range.
+bool overflowed(int old, int value) {
+    int sum = int(uint(old) + uint(value));
+    return (old >= 0) == (value >= 0) && (sum >= 0) != (old >= 0);
+}
+
+void add_global(int word, int value) {
+    if (value == 0) return;
+    if (overflowed(atomicAdd(accum[word], value), value)) atomicOr(status[PF_STATUS_FLAGS], PF_GPU_FLAG_P2G_OVERFLOW);
+}
+
+void add_shared(int slot, int value) {
+    if (value == 0) return;  // zero weights (clamped stencil edges) cost no atomic
+    if (overflowed(atomicAdd(s_accum[slot], value), value)) s_overflow = 1u;
+}
+
+void main() {
+    ivec3 tiles = (sim.grid.xyz + PF_P2G_TILE - 1) / PF_P2G_TILE;
+    uint tile = flat_id() / uint(PF_WORKGROUP_SIZE);
+    if (tile >= uint(tiles.x * tiles.y * tiles.z)) return;  // the whole workgroup
+    int lane = int(gl_LocalInvocationID.x);
+    ivec3 t = ivec3(int(tile) % tiles.x, (int(tile) / tiles.x) % tiles.y, int(tile) / (tiles.x * tiles.y));
+    ivec3 first_cell = t * PF_P2G_TILE;
+    ivec3 origin = first_cell - 1;  // the window's first face sample, on every lattice
+    for (int k = lane; k < 3 * kWindowSamples * 2; k += PF_WORKGROUP_SIZE) s_accum[k] = 0;
+    for (int k = lane; k < kTileCells; k += PF_WORKGROUP_SIZE) s_count[k] = 0u;
+    if (lane == 0) s_overflow = 0u;
+    barrier();
+
+    for (uint k = tile_start[tile] + uint(lane); k < tile_start[tile + 1u]; k += uint(PF_WORKGROUP_SIZE)) {
+        uint i = order[k];
+        vec3 g = grid_coord(pos[i].xyz);
+        vec3 v = vel[i].xyz;
+        ivec3 cell = clamp(ivec3(floor(g)), ivec3(0), sim.grid.xyz - 1);
+        ivec3 c = cell - first_cell;
+        atomicAdd(s_count[c.x + PF_P2G_TILE * (c.y + PF_P2G_TILE * c.z)], 1u);
+        for (int axis = 0; axis < 3; ++axis) {
+            Stencil st = face_stencil(axis, g);
+#if PF_APIC
+            vec3 ca = affine[3u * i + uint(axis)].xyz * sim.dx;  // per grid unit
+            vec3 node_offset = vec3(0.5);
+            node_offset[axis] = 0.0;
+            vec3 to_base = vec3(st.base) + node_offset - g;      // node b minus particle, grid units
+#endif
+            for (int n = 0; n < 8; ++n) {
+                ivec3 d = stencil_offset(n);
+                float w = stencil_weight(st.frac, d);
+#if PF_APIC
+                float va = v[axis] + dot(ca, to_base + vec3(d));
+#else
+                float va = v[axis];
+#endif
+                // roundEven is odd-symmetric: mirrored inputs give mirrored integers.
+                int momentum = int(roundEven(w * va * sim.momentum_scale));
+                int weight = int(roundEven(w * sim.weight_scale));
+                ivec3 node = st.base + d;
+                ivec3 s = node - origin;
+                if (all(greaterThanEqual(s, ivec3(0))) && all(lessThan(s, ivec3(PF_P2G_TILE_WINDOW)))) {
+                    int slot = 2 * (axis * kWindowSamples + s.x + PF_P2G_TILE_WINDOW * (s.y + PF_P2G_TILE_WINDOW * s.z));
+                    add_shared(slot, momentum);
+                    add_shared(slot + 1, weight);
+                } else {  // not expected (the window holds every node); correct either way
+                    int face = face_index(axis, node);
+                    add_global(2 * face, momentum);
+                    add_global(2 * face + 1, weight);
+                }
+            }
+        }
+    }
+    barrier();
+
+    for (int k = lane; k < 3 * kWindowSamples * 2; k += PF_WORKGROUP_SIZE) {
+        int value = s_accum[k];
+        if (value == 0) continue;  // also every window sample outside its lattice
+        int window_index = k / 2, axis = window_index / kWindowSamples, w = window_index % kWindowSamples;
+        ivec3 node = origin + ivec3(w % PF_P2G_TILE_WINDOW, (w / PF_P2G_TILE_WINDOW) % PF_P2G_TILE_WINDOW,
+                                    w / (PF_P2G_TILE_WINDOW * PF_P2G_TILE_WINDOW));
+        add_global(2 * face_index(axis, node) + (k & 1), value);
+    }
+    for (int k = lane; k < kTileCells; k += PF_WORKGROUP_SIZE) {
+        ivec3 cell = first_cell + ivec3(k % PF_P2G_TILE, (k / PF_P2G_TILE) % PF_P2G_TILE, k / (PF_P2G_TILE * PF_P2G_TILE));
+        if (all(lessThan(cell, sim.grid.xyz))) cell_count[cell_index(cell)] = s_count[k];
+    }
+    if (lane == 0 && s_overflow != 0u) atomicOr(status[PF_STATUS_FLAGS], PF_GPU_FLAG_P2G_OVERFLOW);
+}
