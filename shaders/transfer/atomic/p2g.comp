@@ -31,6 +31,7 @@ layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
 #if PF_APIC
 layout(std430, binding = PF_SLOT_PARTICLE_AFFINE) readonly buffer Affine { vec4 affine[]; };
 #endif
+#include "transfer/common/p2g_terms.glsl"
 
 #if PF_P2G_FLOAT
 void accumulate_float(int word, float value) {
@@ -68,29 +69,16 @@ void main() {
     atomicAdd(cell_count[cell_index(cell)], 1u);
 
     for (int axis = 0; axis < 3; ++axis) {
-        Stencil st = face_stencil(axis, g);
-#if PF_APIC
-        vec3 c = affine[3u * i + uint(axis)].xyz * sim.dx;  // per grid unit
-        vec3 node_offset = vec3(0.5);
-        node_offset[axis] = 0.0;
-        vec3 to_base = vec3(st.base) + node_offset - g;     // node b minus particle, grid units
-#endif
+        LatticeTerms t = lattice_terms(i, axis, g, v);
         for (int n = 0; n < 8; ++n) {
-            ivec3 d = stencil_offset(n);
-            float w = stencil_weight(st.frac, d);
-            int face = face_index(axis, st.base + d);
-#if PF_APIC
-            float va = v[axis] + dot(c, to_base + vec3(d));
-#else
-            float va = v[axis];
-#endif
+            float w = term_weight(t, n), va = term_velocity(t, n);
+            int face = face_index(axis, term_node(t, n));
 #if PF_P2G_FLOAT
             accumulate_float(2 * face, w * va);
             accumulate_float(2 * face + 1, w);
 #else
-            // roundEven is odd-symmetric: mirrored inputs give mirrored integers.
-            accumulate(2 * face, int(roundEven(w * va * sim.momentum_scale)));
-            accumulate(2 * face + 1, int(roundEven(w * sim.weight_scale)));
+            accumulate(2 * face, fixed_momentum(w, va));
+            accumulate(2 * face + 1, fixed_weight(w));
 #endif
         }
     }

@@ -7,7 +7,8 @@
 // so the accumulators are bit-identical to p2g.comp's, with about 30 times fewer global atomics
 // at 8 particles per cell. An overflow is flagged wherever an addition overflows (shared or
 // global), as in p2g.comp: a sum that does not fit is always caught at its last addition.
-// Permutation PF_APIC: affine contributions, as in p2g.comp.
+// Permutation PF_APIC: affine contributions. Both kernels take their terms from
+// transfer/common/p2g_terms.glsl.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
@@ -20,6 +21,7 @@ layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
 #if PF_APIC
 layout(std430, binding = PF_SLOT_PARTICLE_AFFINE) readonly buffer Affine { vec4 affine[]; };
 #endif
+#include "transfer/common/p2g_terms.glsl"
 
 const int kWindowSamples = PF_P2G_TILE_WINDOW * PF_P2G_TILE_WINDOW * PF_P2G_TILE_WINDOW;
 const int kTileCells = PF_P2G_TILE * PF_P2G_TILE * PF_P2G_TILE;
@@ -64,25 +66,11 @@ void main() {
         ivec3 c = cell - first_cell;
         atomicAdd(s_count[c.x + PF_P2G_TILE * (c.y + PF_P2G_TILE * c.z)], 1u);
         for (int axis = 0; axis < 3; ++axis) {
-            Stencil st = face_stencil(axis, g);
-#if PF_APIC
-            vec3 ca = affine[3u * i + uint(axis)].xyz * sim.dx;  // per grid unit
-            vec3 node_offset = vec3(0.5);
-            node_offset[axis] = 0.0;
-            vec3 to_base = vec3(st.base) + node_offset - g;      // node b minus particle, grid units
-#endif
+            LatticeTerms t = lattice_terms(i, axis, g, v);
             for (int n = 0; n < 8; ++n) {
-                ivec3 d = stencil_offset(n);
-                float w = stencil_weight(st.frac, d);
-#if PF_APIC
-                float va = v[axis] + dot(ca, to_base + vec3(d));
-#else
-                float va = v[axis];
-#endif
-                // roundEven is odd-symmetric: mirrored inputs give mirrored integers.
-                int momentum = int(roundEven(w * va * sim.momentum_scale));
-                int weight = int(roundEven(w * sim.weight_scale));
-                ivec3 node = st.base + d;
+                float w = term_weight(t, n);
+                int momentum = fixed_momentum(w, term_velocity(t, n)), weight = fixed_weight(w);
+                ivec3 node = term_node(t, n);
                 ivec3 s = node - origin;
                 if (all(greaterThanEqual(s, ivec3(0))) && all(lessThan(s, ivec3(PF_P2G_TILE_WINDOW)))) {
                     int slot = 2 * (axis * kWindowSamples + s.x + PF_P2G_TILE_WINDOW * (s.y + PF_P2G_TILE_WINDOW * s.z));
