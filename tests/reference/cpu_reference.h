@@ -129,6 +129,17 @@ std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
                            bool no_tension = false, // no_tension: projected Jacobi, p >= 0
                            const std::vector<double>& theta = {});
 
+// The MGPCG preconditioner's V-cycle, z = V(r) (src/sim/solvers/mgpcg/multigrid.h), in double:
+// levels halve each axis (rounding up) until one has at most `coarse_cells` cells or there are
+// `max_levels`; a coarse cell is AIR if a child is, else FLUID if a child is, else SOLID. Per
+// level: red then black Gauss-Seidel from zero, the residual restricted by R = P^T scaled by
+// 4 / 2^(coarsened axes), the coarser level's cycle prolonged by cell-centred trilinear P, then
+// black and red; the coarsest level runs red and `coarse_sweeps` black-red pairs from zero.
+// `extra_diagonal` (per cell, or empty) is the fine level's ghost-fluid surface term.
+std::vector<double> multigrid_vcycle(const Grid& grid, const std::vector<uint8_t>& type,
+                                     const std::vector<double>& extra_diagonal, const std::vector<double>& r,
+                                     int coarse_cells, int max_levels, int coarse_sweeps);
+
 // Converged solve of the same system (conjugate gradients to ‖b - A p‖ <= 1e-12·‖b‖).
 std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uint8_t>& type,
                                          const std::vector<double>& rhs, const std::vector<double>& theta = {});

@@ -30,7 +30,7 @@
 
 /* Indirect-dispatch record k: words PF_SOLVER_SCALARS + 4k .. +2 = workgroups (x, y, z); its
  * full size, restored at the start of every solve, at PF_SOLVER_SCALARS + 4 (PF_SOLVER_MAX_RECORDS + k). */
-#define PF_SOLVER_MAX_RECORDS 16
+#define PF_SOLVER_MAX_RECORDS 32
 #define PF_SOLVER_WORDS (PF_SOLVER_SCALARS + 8 * PF_SOLVER_MAX_RECORDS)
 
 /* Explicit uniform locations of the solver kernels (set by glProgramUniform before each pass). */

@@ -1,10 +1,11 @@
-// Multigrid, per fine cell: the coarse correction and the first post-smoothing half-sweep in one
-// pass. With c = P e_coarse (multigrid.glsl's trilinear stencil), out = e + c on red FLUID cells,
+// Multigrid, per cell of a level too large for mg_up.comp (PF_MG_FUSED_CELLS) and of the fine
+// level (whose red half-sweep carries CG's sums, mg_smooth_zstats.comp): the coarse correction
+// and the first post-smoothing half-sweep in one pass. With c = P e_coarse (multigrid.glsl's trilinear stencil), out = e + c on red FLUID cells,
 // and black FLUID cells take a Gauss-Seidel update from their red neighbours' corrected values,
 // out = (r + sum of FLUID neighbours' e + c) / diag, each neighbour's c computed here; cells
 // that are not FLUID get 0. The result goes to a second buffer: e is read, never written, so no
 // cell sees a neighbour half updated. The arithmetic is that of a prolongation pass followed by
-// a black half-sweep (same sums, same order); it saves the pass between them on every level.
+// a black half-sweep (same sums, same order).
 // e_coarse is 0 on coarse cells that are not FLUID (every multigrid kernel writes 0 there), so
 // no coarse type is read.
 #include "common/sim.glsl"

@@ -3,6 +3,8 @@
 #include "solvers/common/solver_state.h"
 #include "solvers/mgpcg/multigrid_limits.h"
 
+static_assert(3 + 2 * PF_MG_MAX_LEVELS <= PF_SOLVER_MAX_RECORDS, "the multigrid's indirect records must fit the solver state");
+
 namespace pf {
 
 using gl::ProgramId;
@@ -16,7 +18,6 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         level.dims = dims;
         level.cells = uint32_t(dims.x * dims.y * dims.z);
         const bool fine = levels_.empty();
-        level.record = fine ? control.record(0) : control.record(control.add_record(level.cells));
         const glm::ivec3 next = (dims + 1) / 2;
         // Axes of two or three cells coarsen to one and two like any other (the prolongation clamps
         // onto the level); only an axis of one cell stays as it is.
@@ -30,6 +31,17 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
             level.out = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_out");
             if (!last) level.e = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_e");
         }
+        // Indirect records, which convergence zeroes: mg_down's and mg_up's tiles on a fused level;
+        // the level's cells where an unfused pass works on them (its own passes, the restriction
+        // from an unfused finer level). At most 3 + 2 per level (solver_state.h).
+        level.fused = level.cells <= PF_MG_FUSED_CELLS;
+        const bool finer_unfused = !fine && !levels_.back().fused;
+        if (fine) level.record = control.record(0);
+        else if (!level.fused || finer_unfused) level.record = control.record(control.add_record(level.cells));
+        if (!last && level.fused) {
+            level.down = control.record(control.add_record(tiles(next, PF_MG_DOWN_TILE) * PF_WORKGROUP_SIZE));
+            if (!fine) level.up = control.record(control.add_record(tiles(dims, PF_MG_UP_TILE) * PF_WORKGROUP_SIZE));
+        }
         levels_.push_back(std::move(level));
         if (last) break;
         dims = next;
@@ -37,27 +49,19 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
     if (levels_.back().cells > PF_MG_COARSE_CELLS)
         return "multigrid: the coarsest level has " + std::to_string(levels_.back().cells) + " cells (more than " +
                std::to_string(PF_MG_COARSE_CELLS) + ")";
-    for (ProgramId id : {ProgramId::mg_smooth, ProgramId::mg_smooth_from_zero, ProgramId::mg_coarsen_types,
-                         ProgramId::mg_residual, ProgramId::mg_restrict, ProgramId::mg_restrict_start,
-                         ProgramId::mg_prolong_smooth, ProgramId::mg_smooth_zstats, ProgramId::mg_coarse_solve,
-                         ProgramId::cg_zstats}) {
+    std::vector<ProgramId> programs{ProgramId::mg_smooth_from_zero, ProgramId::mg_coarsen_types,
+                                    ProgramId::mg_down,          ProgramId::mg_down_start,
+                                    ProgramId::mg_up,            ProgramId::mg_prolong_smooth,
+                                    ProgramId::mg_smooth_zstats, ProgramId::mg_coarse_solve,
+                                    ProgramId::cg_zstats};
+    if (!levels_.front().fused) {
+        programs.insert(programs.end(), {ProgramId::mg_smooth, ProgramId::mg_residual, ProgramId::mg_restrict,
+                                         ProgramId::mg_restrict_start});
+    }
+    for (ProgramId id : programs) {
         if (std::string error = runner.prepare(id); !error.empty()) return error;
     }
     return {};
-}
-
-Uniform Multigrid::coarse_dims(const Level& coarse) {
-    return Uniform::ivec4(PF_LOC_SOLVER_COARSE_DIMS, coarse.dims.x, coarse.dims.y, coarse.dims.z, int(coarse.cells));
-}
-
-void Multigrid::begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_type) {
-    fine_type_ = &cell_type;
-    for (size_t l = 0; l + 1 < levels_.size(); ++l) {
-        runner.run({ProgramId::mg_coarsen_types, stat, 0,
-                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &levels_[l + 1].type}},
-                    levels_[l + 1].record,
-                    {SolveControl::dims_uniform(levels_[l].dims), coarse_dims(levels_[l + 1])}});
-    }
 }
 
 void Multigrid::half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::Buffer& x, uint32_t color) {
@@ -67,6 +71,25 @@ void Multigrid::half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::
                 levels_[l].record,
                 {SolveControl::dims_uniform(levels_[l].dims), Uniform::uint1(PF_LOC_SOLVER_COLOR, color),
                  Uniform::float1(PF_LOC_SOLVER_OMEGA, 1.0f)}});
+}
+
+uint64_t Multigrid::tiles(glm::ivec3 dims, int edge) {
+    const glm::ivec3 n = (dims + edge - 1) / edge;
+    return uint64_t(n.x) * uint64_t(n.y) * uint64_t(n.z);
+}
+
+Uniform Multigrid::coarse_dims(const Level& coarse) {
+    return Uniform::ivec4(PF_LOC_SOLVER_COARSE_DIMS, coarse.dims.x, coarse.dims.y, coarse.dims.z, int(coarse.cells));
+}
+
+void Multigrid::begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_type) {
+    fine_type_ = &cell_type;
+    for (size_t l = 0; l + 1 < levels_.size(); ++l) {
+        runner.run({ProgramId::mg_coarsen_types, stat, levels_[l + 1].cells,
+                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &levels_[l + 1].type}},
+                    {},
+                    {SolveControl::dims_uniform(levels_[l].dims), coarse_dims(levels_[l + 1])}});
+    }
 }
 
 void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_step) {
@@ -82,27 +105,53 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
         return;
     }
     const Level& coarse = levels_[l + 1];
-    // e holds the red half-sweep from zero (made with r); the black one completes the sweep.
-    half_sweep(runner, stat, l, e_of(l), 1u);
-    runner.run({ProgramId::mg_residual, stat, 0,
-                {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
-                 {PF_SLOT_MG_TMP, &out_of(l)}},
-                level.record,
-                {dims}});
-    if (coarsest(l + 1)) {
-        runner.run({ProgramId::mg_restrict, stat, 0,
-                    {{PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
-                     {PF_SLOT_MG_COARSE_R, &coarse.r}},
-                    coarse.record,
+    // e holds the red half-sweep from zero (made with r); the black one completes the
+    // pre-smoothing, and its residual is restricted: one pass on a fused level (mg_down.comp).
+    if (!level.fused) {
+        half_sweep(runner, stat, l, e_of(l), 1u);
+        runner.run({ProgramId::mg_residual, stat, 0,
+                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
+                     {PF_SLOT_MG_TMP, &out_of(l)}},
+                    level.record,
+                    {dims}});
+        if (coarsest(l + 1)) {
+            runner.run({ProgramId::mg_restrict, stat, 0,
+                        {{PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
+                         {PF_SLOT_MG_COARSE_R, &coarse.r}},
+                        coarse.record,
+                        {dims, coarse_dims(coarse)}});
+        } else {
+            runner.run({ProgramId::mg_restrict_start, stat, 0,
+                        {{PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
+                         {PF_SLOT_MG_COARSE_R, &coarse.r}, {PF_SLOT_MG_COARSE_E, &coarse.e}},
+                        coarse.record,
+                        {dims, coarse_dims(coarse)}});
+        }
+    } else if (coarsest(l + 1)) {
+        runner.run({ProgramId::mg_down, stat, 0,
+                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
+                     {PF_SLOT_MG_COARSE_TYPE, &coarse.type}, {PF_SLOT_MG_COARSE_R, &coarse.r}},
+                    level.down,
                     {dims, coarse_dims(coarse)}});
     } else {
-        runner.run({ProgramId::mg_restrict_start, stat, 0,
-                    {{PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
-                     {PF_SLOT_MG_COARSE_R, &coarse.r}, {PF_SLOT_MG_COARSE_E, &coarse.e}},
-                    coarse.record,
+        runner.run({ProgramId::mg_down_start, stat, 0,
+                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
+                     {PF_SLOT_MG_COARSE_TYPE, &coarse.type}, {PF_SLOT_MG_COARSE_R, &coarse.r},
+                     {PF_SLOT_MG_COARSE_E, &coarse.e}},
+                    level.down,
                     {dims, coarse_dims(coarse)}});
     }
     vcycle(runner, stat, l + 1, cg_step);
+    // The correction, then black and red: one pass on a fused level (mg_up.comp); on the fine
+    // level the red half-sweep carries CG's sums.
+    if (l > 0 && level.fused) {
+        runner.run({ProgramId::mg_up, stat, 0,
+                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
+                     {PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_E, &out_of(l + 1)}},
+                    level.up,
+                    {dims, coarse_dims(coarse)}});
+        return;
+    }
     runner.run({ProgramId::mg_prolong_smooth, stat, 0,
                 {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
                  {PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_E, &out_of(l + 1)}},
@@ -129,7 +178,7 @@ void Multigrid::apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_ty
         runner.run({ProgramId::mg_smooth_from_zero, stat, 0,
                     {{PF_SLOT_MG_TYPE, &cell_type}, {PF_SLOT_MG_R, &r}, {PF_SLOT_MG_E, &start_},
                      {PF_SLOT_SOLVER_STATE, &control_->state()}},
-                    levels_[0].record,
+                    control_->record(0),
                     {dims, Uniform::uint1(PF_LOC_SOLVER_COLOR, 0u), Uniform::float1(PF_LOC_SOLVER_OMEGA, 1.0f)}});
     }
     vcycle(runner, stat, 0, cg_step);

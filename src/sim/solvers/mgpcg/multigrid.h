@@ -5,17 +5,21 @@
 // cell types: AIR if any child is AIR, else FLUID if any child is, else SOLID. Each level
 // smooths with one red-black Gauss-Seidel sweep from zero before the coarse correction (red,
 // black) and one after it (black, red), transfers residuals with R = P^T / 2 (the Galerkin scale
-// 4 / 2^d for d coarsened axes: 1 on a flat grid, mg_restrict.comp) and corrections with
+// 4 / 2^d for d coarsened axes: 1 on a flat grid, mg_down.comp) and corrections with
 // cell-centred trilinear P, and the coarsest level runs symmetric red-black sweeps in one
 // workgroup. Every piece is symmetric, so the V-cycle is a symmetric preconditioner, as CG
 // requires.
 //
 // Passes per level (docs/design.md §4.6): the first red half-sweep needs only the cell's own r,
 // so it is done by the pass that makes r (CG's update on the fine grid, the restriction on
-// coarser ones); the black half-sweep; the residual; the restriction; the prolongation fused
-// with the black half-sweep after it (into a second buffer); the last red half-sweep (on the
-// fine grid fused with CG's sums of z). Five passes a level where there were seven: on the H100
-// each pass costs a few microseconds whatever its size, and the V-cycle is most of MGPCG's time.
+// coarser ones). A level of at most PF_MG_FUSED_CELLS cells then takes one pass down (the
+// black half-sweep, the residual and its restriction: mg_down.comp) and one up (the coarse
+// correction, black and red: mg_up.comp), working on tiles with their halos in shared memory.
+// A larger level, where a tile's repeated halo reads cost more than a launch, takes five: the
+// black half-sweep, the residual (mg_residual.comp), the restriction (mg_restrict.comp), the
+// correction with the black half-sweep (mg_prolong_smooth.comp) and the red one. The fine
+// level's last red half-sweep carries CG's sums of z (mg_smooth_zstats.comp). On the H100 each
+// pass costs a few microseconds of launch and barrier whatever its size.
 #pragma once
 #include <vector>
 
@@ -37,7 +41,9 @@ private:
     struct Level {
         glm::ivec3 dims{0};
         uint32_t cells = 0;
-        Indirect record{};
+        bool fused = false;     // small enough for the fused kernels (PF_MG_FUSED_CELLS)
+        Indirect record{};      // the level's cells (the fine level's, or an unfused pass's)
+        Indirect down{}, up{};  // a fused level's mg_down (over the next level's tiles) and mg_up
         // type, r: the level's system; e: the correction while pre-smoothing; out: the residual
         // after pre-smoothing, then the level's result (the coarsest level: only its result).
         // Level 0 borrows type, r and out (= z) from the solve; its e is start_.
@@ -49,10 +55,12 @@ private:
     const gl::Buffer& e_of(size_t l) const { return l == 0 ? start_ : levels_[l].e; }
     const gl::Buffer& out_of(size_t l) const { return l == 0 ? *fine_z_ : levels_[l].out; }
     bool coarsest(size_t l) const { return l + 1 == levels_.size(); }
-    // One colour of a Gauss-Seidel sweep on level l's buffer x.
-    void half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::Buffer& x, uint32_t color);
     void vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_step);
+    // One colour of a Gauss-Seidel sweep on an unfused level l's buffer x.
+    void half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::Buffer& x, uint32_t color);
     static Uniform coarse_dims(const Level& coarse);
+    // Tiles of edge `edge` covering a level of `dims` cells.
+    static uint64_t tiles(glm::ivec3 dims, int edge);
 
     const SolveControl* control_ = nullptr;
     std::vector<Level> levels_;
