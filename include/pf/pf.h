@@ -431,6 +431,12 @@ typedef struct pf_stats {
                                            (docs/design.md §4.11) */
     float liquid_volume_drift;        /**< liquid_volume / (liquid_volume at the first measured step) - 1, same
                                            reference as fluid_cell_drift */
+    /* GPU memory held now; buffers made on first use (APIC's affine vectors, another P2G scheme's
+     * sort buffers, an effect's records) count from then on. */
+    uint64_t gpu_memory_bytes;        /**< every buffer and texture pflip made for this simulation and its
+                                           rendering, bytes (the engine's objects are not counted) */
+    uint64_t gpu_particle_bytes;      /**< the part of gpu_memory_bytes whose size follows max_particles:
+                                           divided by max_particles, the memory of one particle slot */
 } pf_stats;
 
 /** One entry of the per-pass statistics list (pf_get_pass_stats). The list is built at run

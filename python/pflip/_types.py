@@ -312,6 +312,8 @@ class Stats(_Struct):
         ("interior_density", ctypes.c_float),
         ("liquid_volume", ctypes.c_float),
         ("liquid_volume_drift", ctypes.c_float),
+        ("gpu_memory_bytes", ctypes.c_uint64),
+        ("gpu_particle_bytes", ctypes.c_uint64),
     ]
 
 

@@ -5,19 +5,23 @@
 
 #include "gl/debug.h"
 #include "gl/gl.h"
+#include "gl/memory_tally.h"
 
 namespace pf::gl {
 
 class Buffer {
 public:
     Buffer() = default;
-    // `label` names it for debuggers ("pflip/<label>", src/gl/debug.h).
-    Buffer(const Api& gl, size_t bytes, GLenum usage, const char* label) : gl_(&gl), bytes_(bytes) {
+    // `label` names it for debuggers ("pflip/<label>", src/gl/debug.h); `sizing` says what its
+    // size follows, for the simulation's memory tally (gl/memory_tally.h).
+    Buffer(const Api& gl, size_t bytes, GLenum usage, const char* label, Sizing sizing = Sizing::other)
+        : gl_(&gl), bytes_(bytes), sizing_(sizing) {
         gl.GenBuffers(1, &id_);
         // COPY_WRITE is a binding the state guard restores; allocation needs some target.
         gl.BindBuffer(GL_COPY_WRITE_BUFFER, id_);
         gl.BufferData(GL_COPY_WRITE_BUFFER, static_cast<GLsizeiptr>(bytes), nullptr, usage);
         label_object(gl, GL_BUFFER, id_, label);
+        if (MemoryTally* tally = memory_tally(gl)) tally->add(sizing_, bytes_);
     }
     ~Buffer() { reset(); }
     // Takes ownership of buffer `id` (made and allocated by the caller, e.g. with glBufferStorage).
@@ -27,6 +31,7 @@ public:
         b.id_ = id;
         b.bytes_ = bytes;
         label_object(gl, GL_BUFFER, id, label);
+        if (MemoryTally* tally = memory_tally(gl)) tally->add(b.sizing_, bytes);
         return b;
     }
     Buffer(Buffer&& o) noexcept { *this = std::move(o); }
@@ -36,6 +41,7 @@ public:
             std::swap(gl_, o.gl_);
             std::swap(id_, o.id_);
             std::swap(bytes_, o.bytes_);
+            std::swap(sizing_, o.sizing_);
         }
         return *this;
     }
@@ -73,13 +79,17 @@ public:
 
 private:
     void reset() {
-        if (gl_ && id_) gl_->DeleteBuffers(1, &id_);
+        if (gl_ && id_) {
+            gl_->DeleteBuffers(1, &id_);
+            if (MemoryTally* tally = memory_tally(*gl_)) tally->remove(sizing_, bytes_);
+        }
         id_ = 0;
         bytes_ = 0;
     }
     const Api* gl_ = nullptr;
     GLuint id_ = 0;
     size_t bytes_ = 0;
+    Sizing sizing_ = Sizing::other;
 };
 
 }  // namespace pf::gl

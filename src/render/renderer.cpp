@@ -421,6 +421,7 @@ void Renderer::stats(pf_stats& out) const {
         out.render_gpu_total_ms += r.at(size_t(p));
     }
     out.render_cpu_ms = last_cpu_ms_;
+    if (targets_) out.gpu_memory_bytes += targets_->bytes();  // its buffers are in the simulation's tally
 }
 
 }  // namespace pf

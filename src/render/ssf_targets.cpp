@@ -14,7 +14,25 @@ constexpr const char* kFramebufferLabels[SsfTargets::framebuffer_count] = {
 constexpr GLenum kFormats[SsfTargets::texture_count] = {
     GL_RGBA16F, 0 /* engine's depth format */, GL_R32F, GL_R32F, GL_DEPTH_COMPONENT32F,
     GL_R32F,    GL_R32F, GL_RGBA16F, GL_R32F, GL_R32UI, GL_R32UI};
+// Bytes per texel of the formats the targets use (an engine's depth format for the copy).
+uint64_t texel_bytes(GLenum format) {
+    switch (format) {
+        case GL_RGBA16F:
+        case GL_DEPTH32F_STENCIL8: return 8;
+        case GL_DEPTH_COMPONENT16: return 2;
+        default: return 4;  // R32F, R32UI, DEPTH_COMPONENT24/32/32F, DEPTH24_STENCIL8
+    }
+}
 }  // namespace
+
+uint64_t SsfTargets::bytes() const {
+    uint64_t total = 0;
+    for (int t = 0; t < texture_count; ++t) {
+        if (textures_[t].id() == 0) continue;
+        total += uint64_t(width_) * uint64_t(height_) * texel_bytes(t == scene_depth ? depth_format_ : kFormats[t]);
+    }
+    return total;
+}
 
 SsfTargets::SsfTargets(const gl::Api& gl) : gl_(gl) {
     for (int f = 0; f < framebuffer_count; ++f) {

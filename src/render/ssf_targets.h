@@ -3,6 +3,7 @@
 // touching an engine object.
 #pragma once
 #include <array>
+#include <cstdint>
 
 #include "gl/gl.h"
 #include "gl/objects.h"
@@ -46,6 +47,8 @@ public:
     GLuint texture(Texture t) const { return textures_[t].id(); }
     GLuint framebuffer(Framebuffer f) const { return framebuffers_[f].id(); }
     bool has_scene_depth_copy() const { return depth_format_ != 0; }
+    // GPU memory of the textures made so far, bytes.
+    uint64_t bytes() const;
 
 private:
     void allocate(Texture t, GLenum format);

@@ -68,6 +68,7 @@ pf_result Simulation::init() {
         return log_.error(PF_ERROR_GL_UNSUPPORTED,
                           std::string("pf_create: the GL loader returned no address for ") + missing);
     }
+    gl_.userptr = &memory_;  // every buffer made with this context counts itself (gl/memory_tally.h)
     // GL 4.4 added GL_QUERY_BUFFER, which redirects query results: the state guard parks it.
     gl_state_.query_buffer = major > 4 || minor >= 4;
     // A GL error the engine left pending would be mistaken for ours below.
@@ -98,8 +99,8 @@ pf_result Simulation::init() {
 
     gl::StateGuard guard(gl_, gl_state_);
     const size_t np = desc_.max_particles;
-    pos_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW, "particle_pos");
-    vel_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW, "particle_vel");
+    pos_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW, "particle_pos", gl::Sizing::particles);
+    vel_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW, "particle_vel", gl::Sizing::particles);
     face_accum_ = gl::Buffer(gl_, size_t(faces_) * 8, GL_DYNAMIC_COPY, "face_accum");
     face_vel_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_vel");
     face_vel_old_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_vel_old");
@@ -116,7 +117,9 @@ pf_result Simulation::init() {
     runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM);
     requests_ = std::make_unique<ParticleReadback>(gl_);
     const uint64_t metric_items = std::max<uint64_t>(uint64_t(cells_), desc_.max_particles);
-    metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 32, GL_DYNAMIC_COPY, "metrics_partials");
+    metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 32, GL_DYNAMIC_COPY,
+                                   "metrics_partials",
+                                   desc_.max_particles >= uint64_t(cells_) ? gl::Sizing::particles : gl::Sizing::other);
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
                           "pf_create: allocating " + std::to_string((np * 32 + size_t(faces_) * 28 + size_t(cells_) * 20) >> 20) +
@@ -230,7 +233,7 @@ pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const
                                                  "GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
                                                  "); lower max_particles");
     }
-    gl::Buffer made(gl_, size_t(bytes), GL_DYNAMIC_COPY, "particle_affine");
+    gl::Buffer made(gl_, size_t(bytes), GL_DYNAMIC_COPY, "particle_affine", gl::Sizing::particles);
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
         return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
                           std::string(fn) + ": allocating " + std::to_string(bytes >> 20) +
@@ -1058,6 +1061,8 @@ void Simulation::stats(pf_stats& out) const {
     out = pf_stats{};
     out.particle_count = gpu_count_ ? readback_count_ : particle_count_;
     out.max_particles = desc_.max_particles;
+    out.gpu_memory_bytes = memory_.bytes;
+    out.gpu_particle_bytes = memory_.particle_bytes;
     out.steps = steps_;
     out.substeps = last_substeps_;
     out.flags = flags_;

@@ -232,6 +232,7 @@ private:
         StatId free_surface;  // the ghost-fluid words, in the PF_PASS_CLASSIFY group
     };
 
+    gl::MemoryTally memory_;  // declared before every buffer: it outlives them (gl_.userptr points here)
     gl::Api gl_{};
     gl::StateGuard::Options gl_state_{};
     pf_sim_desc desc_;

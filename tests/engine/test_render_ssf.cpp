@@ -74,6 +74,28 @@ TEST_F(RenderSsf, LiquidExactlyWhereSpheresProjectAndNothingElseChanges) {
     }
 }
 
+// pf_stats.gpu_memory_bytes counts the renderer's screen-sized textures once a render call has
+// made them: 48 bytes a texel over the ten that do not copy the engine's depth (two RGBA16F,
+// eight 32-bit), at the viewport's size; the particle part stays as it was.
+TEST_F(RenderSsf, RenderTargetsCountInTheGpuMemory) {
+    add(scattered_spheres());
+    pf_stats before{};
+    before.struct_size = sizeof before;
+    ASSERT_EQ(pf_get_stats(sim_.get(), &before), PF_OK);
+    EngineTarget t(64, 48, GL_RGBA8);
+    const int vp[4] = {0, 0, 64, 48};
+    const TestCamera c = camera(vp);
+    pf_render_target target{t.fbo, t.color, t.depth, 0};
+    ASSERT_EQ(pf_render_ssf(sim_.get(), &c.cam, &target, nullptr), PF_OK) << last_log();
+    pf_stats after{};
+    after.struct_size = sizeof after;
+    ASSERT_EQ(pf_get_stats(sim_.get(), &after), PF_OK);
+    const uint64_t texels = 64 * 48, grown = after.gpu_memory_bytes - before.gpu_memory_bytes;
+    EXPECT_GE(grown, 48 * texels);
+    EXPECT_LE(grown, 56 * texels + (1u << 20));  // a depth copy of up to 8 bytes a texel, the renderer's buffers
+    EXPECT_EQ(after.gpu_particle_bytes, before.gpu_particle_bytes);
+}
+
 // No particles at all (the API fuzzer found a division by zero here): both paths render
 // nothing and leave the engine's frame exactly as it was.
 TEST_F(RenderSsf, EmptySimulationChangesNothing) {

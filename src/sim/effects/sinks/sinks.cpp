@@ -23,8 +23,8 @@ pf_result SinksEffect::init(const gl::Api& gl, PassRunner& runner, const Log& lo
     records_ = gl::Buffer(gl, size_t(PF_MAX_SINKS) * PF_SINK_VEC4S * 16, GL_DYNAMIC_DRAW, "sinks");
     state_ = gl::Buffer(gl, PF_SINK_STATE_WORDS * 4, GL_DYNAMIC_COPY, "sink_state");
     // Each list holds at most the removed count (<= capacity) entries.
-    holes_ = gl::Buffer(gl, size_t(capacity_) * 4, GL_DYNAMIC_COPY, "sink_holes");
-    movers_ = gl::Buffer(gl, size_t(capacity_) * 4, GL_DYNAMIC_COPY, "sink_movers");
+    holes_ = gl::Buffer(gl, size_t(capacity_) * 4, GL_DYNAMIC_COPY, "sink_holes", gl::Sizing::particles);
+    movers_ = gl::Buffer(gl, size_t(capacity_) * 4, GL_DYNAMIC_COPY, "sink_movers", gl::Sizing::particles);
     stat_ = runner.add_stat("sinks", PF_PASS_ADVECT);
     dirty_ = true;
     return PF_OK;

@@ -31,10 +31,10 @@ pf_result SortedGatherP2g::prepare(const gl::Api& gl, PassRunner& runner, const 
                                                 "this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
                                                 "); lower max_particles or the grid size");
     }
-    gl::Buffer cell_slot(gl, size_t(np) * 8, GL_DYNAMIC_COPY, "p2g_sort_cell_slot"),
-        unsorted(gl, size_t(np) * 4, GL_DYNAMIC_COPY, "p2g_sort_unsorted"),
-        sorted_grid(gl, size_t(np) * 16, GL_DYNAMIC_COPY, "p2g_sort_grid"),
-        sorted_particles(gl, size_t(np) * 16, GL_DYNAMIC_COPY, "p2g_sort_particles");
+    gl::Buffer cell_slot(gl, size_t(np) * 8, GL_DYNAMIC_COPY, "p2g_sort_cell_slot", gl::Sizing::particles),
+        unsorted(gl, size_t(np) * 4, GL_DYNAMIC_COPY, "p2g_sort_unsorted", gl::Sizing::particles),
+        sorted_grid(gl, size_t(np) * 16, GL_DYNAMIC_COPY, "p2g_sort_grid", gl::Sizing::particles),
+        sorted_particles(gl, size_t(np) * 16, GL_DYNAMIC_COPY, "p2g_sort_particles", gl::Sizing::particles);
     halves.allocate(gl, "p2g_sort");
     if (GLenum err = gl.GetError(); err != GL_NO_ERROR) {
         return log.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,

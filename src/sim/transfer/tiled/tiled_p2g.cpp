@@ -29,8 +29,8 @@ pf_result TiledP2g::prepare(const gl::Api& gl, PassRunner& runner, const P2gGrid
                                                 "GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
                                                 "); lower max_particles");
     }
-    gl::Buffer tile_slot(gl, size_t(np) * 8, GL_DYNAMIC_COPY, "p2g_tile_slot"),
-        order(gl, size_t(np) * 4, GL_DYNAMIC_COPY, "p2g_tile_order");
+    gl::Buffer tile_slot(gl, size_t(np) * 8, GL_DYNAMIC_COPY, "p2g_tile_slot", gl::Sizing::particles),
+        order(gl, size_t(np) * 4, GL_DYNAMIC_COPY, "p2g_tile_order", gl::Sizing::particles);
     per_tile.allocate(gl, "p2g_tile");
     if (GLenum err = gl.GetError(); err != GL_NO_ERROR) {
         return log.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
