@@ -135,6 +135,7 @@ std::vector<Config> sweep_configs() {
     combine("mgpcg_1e-02_apic", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_APIC, p.pressure_tolerance = 1e-2f; });
     combine("mgpcg_1e-04_apic", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_APIC, p.pressure_tolerance = 1e-4f; });
     combine("balanced_cfl_0.5", [](pf_sim_params& p) { p.cfl = 0.5f, p.max_substeps = 32; });
+    combine("balanced_cfl_2", [](pf_sim_params& p) { p.cfl = 2.0f; });  // issue 18: half the substeps
     combine("balanced_gather", [](pf_sim_params& p) { p.p2g = PF_P2G_SORTED_GATHER; });
     combine("fast_apic", [](pf_sim_params& p) {
         p = preset(PF_QUALITY_FAST);

@@ -11,6 +11,7 @@
 #include <pf/pf.h>
 
 #include "egl_context.h"
+#include "roofline.h"
 #include "scene.h"
 #include "scene_effects.h"
 #include "util.h"
@@ -43,6 +44,7 @@ struct Options {
     int p2g = -1;               // -1: the scene's (pf_p2g otherwise)
     int free_surface = -1;      // -1: the scene's (pf_free_surface otherwise)
     uint32_t max_substeps = 0; // 0: the scene's
+    float cfl = 0;             // 0: the scene's (or the preset's)
     float frame_dt = 0;        // 0: the scene's
     int64_t features = -1;     // -1: the scene's PF_FEATURE_* bits
     std::string json_path, csv_path;
@@ -72,6 +74,7 @@ void print_usage(std::FILE* f) {
                  "                           atomics, the sorted gather (PF_P2G_SORTED_GATHER) or fixed point\n"
                  "                           summed per tile in shared memory (PF_P2G_TILED)\n"
                  "  --max-substeps N         override the scenes' max_substeps (1 = one substep per step)\n"
+                 "  --cfl C                  override params.cfl (cells a particle may move per substep)\n"
                  "  --frame-dt S             override the scenes' frame_dt (seconds per pf_step)\n"
                  "  --features LIST          effects to run, overriding the scenes' (comma-separated\n"
                  "                           force_fields, obstacles, emitters, sinks; or all, none);\n"
@@ -115,6 +118,8 @@ Options parse_args(int argc, char** argv) {
             o.separation = int(pfs::parse_u32(args.value(), "--separation", 0, 1));
         } else if (a == "--max-substeps") {
             o.max_substeps = pfs::parse_u32(args.value(), "--max-substeps", 1, 64);
+        } else if (a == "--cfl") {
+            o.cfl = pfs::parse_float(args.value(), "--cfl", 0.05f, 10.0f);
         } else if (a == "--frame-dt") {
             o.frame_dt = pfs::parse_float(args.value(), "--frame-dt", 1e-6f, 1.0f);
         } else if (a == "--features") {
@@ -164,6 +169,7 @@ struct Result {
     pf_sim_params params{};
     float frame_dt = 0;
     uint32_t particles = 0, max_particles = 0, ppc = 0;
+    uint64_t gpu_memory_bytes = 0, gpu_particle_bytes = 0;  // after the measured steps (first-use buffers made)
     double create_ms = 0, fill_ms = 0;
     pfs::Summary wall, wall_per_substep, cpu, substeps;
     pfs::Summary gpu_total, gpu_per_substep;
@@ -198,6 +204,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     if (opt.p2g >= 0) desc.params.p2g = pf_p2g(opt.p2g);
     if (opt.free_surface >= 0) desc.params.free_surface = pf_free_surface(opt.free_surface);
     if (opt.max_substeps) desc.params.max_substeps = opt.max_substeps;
+    if (opt.cfl > 0) desc.params.cfl = opt.cfl;
     if (opt.features >= 0) desc.features = uint32_t(opt.features);
     r.params = desc.params;
     r.max_particles = desc.max_particles;
@@ -229,6 +236,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     r.fill_ms = pfs::now_ms() - t0;
 
     pf_stats st{};
+    st.struct_size = sizeof st;  // this header's fields (0 would mean the first layout only)
     pfs::check(pf_get_stats(sim.get(), &st), "pf_get_stats");
     r.particles = st.particle_count;
     std::printf("  %u particles; pf_create %.1f ms, fill %.1f ms; warming up %u steps...\n", r.particles,
@@ -292,6 +300,8 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     r.flags = st.flags;
     r.max_speed = st.max_speed;
     r.particles = st.particle_count;
+    r.gpu_memory_bytes = st.gpu_memory_bytes;
+    r.gpu_particle_bytes = st.gpu_particle_bytes;
     // GPU timings lag a few steps: keep stepping (unmeasured) until the last measured step's
     // timings are reported, or give up after a few.
     for (int i = 0; i < 8 && st.gpu_step < last; ++i) {
@@ -331,11 +341,49 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
                 r.gpu_total.median, r.gpu_samples, r.substeps.mean);
     std::printf("  solver: %.1f iterations (mean of the most per step; max %.0f), final residual %.3g (mean; max %.3g)\n",
                 r.solver_iterations.mean, r.solver_iterations.max, r.solver_residual.mean, r.solver_residual.max);
+    const uint64_t cells = uint64_t(desc.grid_size[0]) * desc.grid_size[1] * desc.grid_size[2];
+    std::printf("  GPU memory %.1f MiB: %.1f bytes per particle slot (x %u), %.1f bytes per cell for the rest\n",
+                double(r.gpu_memory_bytes) / (1 << 20), double(r.gpu_particle_bytes) / r.max_particles, r.max_particles,
+                double(r.gpu_memory_bytes - r.gpu_particle_bytes) / double(cells));
     sim.reset();
     glFinish();
 }
 
-ojson result_json(const Result& r) {
+// The particle passes against the ceilings: modelled bytes and atomics per step (the model per
+// substep times the mean substeps) over the median GPU time.
+struct RooflineRow {
+    pf_pass pass;
+    double ms = 0, bytes = 0, gbps = 0, copy_pct = 0, atomics = 0, gops = 0, atomics_pct = 0;
+};
+std::vector<RooflineRow> roofline_rows(const Result& r, const pfb::Ceilings& ceilings) {
+    pfb::TrafficInputs in;
+    in.particles = r.particles;
+    const uint64_t nx = r.scene.grid_size[0], ny = r.scene.grid_size[1], nz = r.scene.grid_size[2];
+    in.cells = nx * ny * nz;
+    in.faces = (nx + 1) * ny * nz + nx * (ny + 1) * nz + nx * ny * (nz + 1);
+    in.p2g = r.params.p2g;
+    in.apic = r.params.transfer == PF_TRANSFER_APIC;
+    in.rk_advection = r.params.advection != PF_ADVECTION_EULER;
+    in.volume_correction = r.params.volume_correction > 0.0f;
+    std::vector<RooflineRow> rows;
+    for (pf_pass pass : {PF_PASS_P2G, PF_PASS_G2P, PF_PASS_ADVECT}) {
+        const pfb::Traffic t = pfb::pass_traffic(pass, in);
+        RooflineRow row{pass};
+        row.ms = r.gpu_pass[pass].median;
+        row.bytes = t.bytes * r.substeps.mean;
+        row.atomics = t.atomics * r.substeps.mean;
+        if (row.ms > 0) {
+            row.gbps = row.bytes / (row.ms * 1e6);
+            row.gops = row.atomics / (row.ms * 1e6);
+        }
+        if (ceilings.copy_gbps > 0) row.copy_pct = 100.0 * row.gbps / ceilings.copy_gbps;
+        if (ceilings.atomics_gops > 0) row.atomics_pct = 100.0 * row.gops / ceilings.atomics_gops;
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+ojson result_json(const Result& r, const pfb::Ceilings& ceilings) {
     ojson j;
     j["scene"] = r.name;
     j["file"] = r.file;
@@ -367,6 +415,13 @@ ojson result_json(const Result& r) {
     j["params"] = p;
     j["solver_iterations"] = summary_json(r.solver_iterations);
     j["solver_residual"] = summary_json(r.solver_residual);
+    ojson memory;
+    const double cells = double(r.scene.grid_size[0]) * r.scene.grid_size[1] * r.scene.grid_size[2];
+    memory["bytes"] = r.gpu_memory_bytes;
+    memory["particle_bytes"] = r.gpu_particle_bytes;
+    memory["bytes_per_particle_slot"] = double(r.gpu_particle_bytes) / r.max_particles;
+    memory["other_bytes_per_cell"] = double(r.gpu_memory_bytes - r.gpu_particle_bytes) / cells;
+    j["gpu_memory"] = memory;
     j["create_ms"] = r.create_ms;
     j["fill_ms"] = r.fill_ms;
     j["substeps_per_step"] = summary_json(r.substeps);
@@ -389,6 +444,19 @@ ojson result_json(const Result& r) {
     for (const auto& [name, summary] : r.pass_list) list[name] = summary_json(summary);
     g["pass_list_ms_per_step"] = list;
     j["gpu"] = g;
+    ojson roofline;
+    for (const RooflineRow& row : roofline_rows(r, ceilings)) {
+        ojson rj;
+        rj["ms_per_step"] = row.ms;
+        rj["modelled_bytes_per_step"] = row.bytes;
+        rj["gb_per_s"] = row.gbps;
+        rj["percent_of_copy_bandwidth"] = row.copy_pct;
+        rj["modelled_global_atomics_per_step"] = row.atomics;
+        rj["g_atomics_per_s"] = row.gops;
+        rj["percent_of_atomics_rate"] = row.atomics_pct;
+        roofline[pf_pass_name(row.pass)] = rj;
+    }
+    j["roofline"] = roofline;
     j["flags"] = flag_list(r.flags);
     j["max_speed"] = r.max_speed;
     return j;
@@ -420,7 +488,7 @@ void write_csv(const std::string& path, const std::vector<Result>& results) {
     if (!f) throw Error("error writing " + path);
 }
 
-void print_tables(const std::vector<Result>& results) {
+void print_tables(const std::vector<Result>& results, const pfb::Ceilings& ceilings) {
     std::printf("\n%-16s %10s %13s %7s %12s %12s %14s %10s\n", "scene", "particles", "grid", "subst", "wall ms/step",
                 "gpu ms/step", "gpu ms/substep", "cpu ms");
     for (const Result& r : results) {
@@ -450,6 +518,25 @@ void print_tables(const std::vector<Result>& results) {
     std::printf("%-18s", "total");
     for (const Result* r : ok) std::printf(" %16.4f", r->gpu_total.median);
     std::printf("\n");
+    if (ceilings.measured()) {
+        std::printf("\nParticle passes against the ceilings (copy %.0f GB/s, atomics %.1f G/s):\n", ceilings.copy_gbps,
+                    ceilings.atomics_gops);
+        std::printf("%-16s %-8s %10s %12s %9s %8s %10s %8s\n", "scene", "pass", "ms/step", "MB/step", "GB/s", "% copy",
+                    "G atom/s", "% atom");
+        for (const Result* r : ok) {
+            for (const RooflineRow& row : roofline_rows(*r, ceilings)) {
+                if (row.bytes <= 0) {
+                    std::printf("%-16s %-8s %10.4f %12s\n", r->name.c_str(), pf_pass_name(row.pass), row.ms, "(no model)");
+                    continue;
+                }
+                std::printf("%-16s %-8s %10.4f %12.1f %9.1f %8.1f", r->name.c_str(), pf_pass_name(row.pass), row.ms,
+                            row.bytes / 1e6, row.gbps, row.copy_pct);
+                if (row.atomics > 0) std::printf(" %10.2f %8.1f", row.gops, row.atomics_pct);
+                std::printf("\n");
+            }
+        }
+        std::printf("(%s)\n", pfb::traffic_model_note());
+    }
     bool any_invalid = false;
     for (const Result* r : ok) any_invalid = any_invalid || !r->gpu_valid;
     if (any_invalid)
@@ -479,6 +566,15 @@ int run(int argc, char** argv) {
                 pfs::pf_version_string().c_str(), date.c_str(), ctx.describe().c_str(), opt.warmup, opt.steps,
                 opt.pressure_iterations);
 
+    const pfb::Ceilings ceilings = pfb::measure_ceilings();
+    if (ceilings.measured()) {
+        std::printf("ceilings measured now: compute copy %.0f GB/s (read + write), read %.0f GB/s, random 32-bit "
+                    "atomicAdd %.1f G/s\n",
+                    ceilings.copy_gbps, ceilings.read_gbps, ceilings.atomics_gops);
+    } else {
+        std::printf("ceilings: not measured (this GL's timer queries read 0)\n");
+    }
+
     std::vector<Result> results(opt.scenes.size());
     bool failed = false;
     for (size_t i = 0; i < opt.scenes.size(); ++i) {
@@ -493,7 +589,7 @@ int run(int argc, char** argv) {
         }
     }
 
-    print_tables(results);
+    print_tables(results, ceilings);
 
     if (!opt.json_path.empty()) {
         ojson j;
@@ -519,8 +615,14 @@ int run(int argc, char** argv) {
         settings["wall_time"] = "glFinish; t0; pf_step; glFinish; t1";
         settings["gpu_time"] = "pf_get_stats per-pass timer queries, each distinct gpu_step once, summed over substeps";
         j["settings"] = settings;
+        ojson cj;
+        cj["copy_gb_per_s"] = ceilings.copy_gbps;
+        cj["read_gb_per_s"] = ceilings.read_gbps;
+        cj["atomics_g_per_s"] = ceilings.atomics_gops;
+        cj["traffic_model"] = pfb::traffic_model_note();
+        j["ceilings"] = cj;
         ojson arr = ojson::array();
-        for (const Result& r : results) arr.push_back(result_json(r));
+        for (const Result& r : results) arr.push_back(result_json(r, ceilings));
         j["scenes"] = arr;
         std::ofstream f(opt.json_path);
         f << j.dump(2) << "\n";

@@ -3,6 +3,7 @@
 #include "util.h"
 
 #include <algorithm>
+#include <initializer_list>
 #include <cstdio>
 #include <cstring>
 
@@ -47,21 +48,13 @@ void check_gl(const char* where) {
     throw Error(msg);
 }
 
-GLuint link_program(const char* vs, const char* fs, const char* name) {
-    const GLuint v = compile(GL_VERTEX_SHADER, vs, name);
-    GLuint f = 0;
-    try {
-        f = compile(GL_FRAGMENT_SHADER, fs, name);
-    } catch (...) {
-        glDeleteShader(v);
-        throw;
-    }
+namespace {
+// Links the compiled shaders (deleting them) into a program; throws pfs::Error with the info log.
+GLuint link(std::initializer_list<GLuint> shaders, const char* name) {
     GLuint p = glCreateProgram();
-    glAttachShader(p, v);
-    glAttachShader(p, f);
+    for (GLuint s : shaders) glAttachShader(p, s);
     glLinkProgram(p);
-    glDeleteShader(v);
-    glDeleteShader(f);
+    for (GLuint s : shaders) glDeleteShader(s);
     GLint ok = 0;
     glGetProgramiv(p, GL_LINK_STATUS, &ok);
     if (!ok) {
@@ -74,6 +67,21 @@ GLuint link_program(const char* vs, const char* fs, const char* name) {
     }
     return p;
 }
+}  // namespace
+
+GLuint link_program(const char* vs, const char* fs, const char* name) {
+    const GLuint v = compile(GL_VERTEX_SHADER, vs, name);
+    GLuint f = 0;
+    try {
+        f = compile(GL_FRAGMENT_SHADER, fs, name);
+    } catch (...) {
+        glDeleteShader(v);
+        throw;
+    }
+    return link({v, f}, name);
+}
+
+GLuint link_compute_program(const char* cs, const char* name) { return link({compile(GL_COMPUTE_SHADER, cs, name)}, name); }
 
 void check_framebuffer(const char* what) {
     const GLenum st = glCheckFramebufferStatus(GL_FRAMEBUFFER);

@@ -16,6 +16,8 @@ void check_gl(const char* where);
 
 /// Compiles and links a vertex + fragment program; throws pfs::Error with the info log.
 GLuint link_program(const char* vs, const char* fs, const char* name);
+/// Compiles and links a compute program; throws pfs::Error with the info log.
+GLuint link_compute_program(const char* cs, const char* name);
 
 /// Throws pfs::Error naming the status unless the bound GL_FRAMEBUFFER is complete.
 void check_framebuffer(const char* what);

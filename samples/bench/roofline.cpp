@@ -1,0 +1,206 @@
+#include "roofline.h"
+
+#include <glad/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include "gl_util.h"
+
+namespace pfb {
+namespace {
+
+// Each invocation copies u_per_thread vec4s, a dispatch's width apart (coalesced).
+const char* kCopy = R"(#version 430
+layout(local_size_x = 256) in;
+layout(std430, binding = 0) readonly buffer Src { vec4 src[]; };
+layout(std430, binding = 1) writeonly buffer Dst { vec4 dst[]; };
+layout(location = 0) uniform uint u_per_thread;
+void main() {
+    uint width = gl_NumWorkGroups.x * gl_NumWorkGroups.y * 256u;
+    uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
+    for (uint k = 0u; k < u_per_thread; ++k) dst[i + k * width] = src[i + k * width];
+}
+)";
+
+// Each invocation reads u_per_thread vec4s (as kCopy) and writes nothing unless their sum is
+// impossible (so the reads cannot be optimised away): the read-only stream.
+const char* kRead = R"(#version 430
+layout(local_size_x = 256) in;
+layout(std430, binding = 0) readonly buffer Src { vec4 src[]; };
+layout(std430, binding = 1) writeonly buffer Dst { vec4 dst[]; };
+layout(location = 0) uniform uint u_per_thread;
+void main() {
+    uint width = gl_NumWorkGroups.x * gl_NumWorkGroups.y * 256u;
+    uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
+    vec4 sum = vec4(0.0);
+    for (uint k = 0u; k < u_per_thread; ++k) sum += src[i + k * width];
+    if (sum.x == -1.0e30) dst[i] = sum;
+}
+)";
+
+// Each invocation adds to 8 addresses from an integer hash of its index and step: no two
+// neighbouring invocations share a word, as in the worst case of a particle-to-grid scatter.
+const char* kAtomics = R"(#version 430
+layout(local_size_x = 256) in;
+layout(std430, binding = 0) buffer Counters { uint counters[]; };
+layout(location = 0) uniform uint u_mask;
+void main() {
+    uint h = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
+    for (int k = 0; k < 8; ++k) {
+        h ^= h >> 16; h *= 0x7feb352du; h ^= h >> 15; h *= 0x846ca68bu; h ^= h >> 16;
+        atomicAdd(counters[h & u_mask], 1u);
+    }
+}
+)";
+
+constexpr GLuint kGroupsX = 32768;  // dispatches of 2D grids of 256-invocation workgroups
+
+// GPU nanoseconds between timestamps around `groups_y` rows of kGroupsX workgroups of the bound
+// program (GL_TIMESTAMP pairs: Mesa's llvmpipe reads ~1 ns for GL_TIME_ELAPSED around a lone dispatch).
+double time_once(GLuint groups_x, GLuint groups_y) {
+    GLuint q[2] = {0, 0};
+    glGenQueries(2, q);
+    glQueryCounter(q[0], GL_TIMESTAMP);
+    glDispatchCompute(groups_x, groups_y, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glQueryCounter(q[1], GL_TIMESTAMP);
+    GLuint64 t0 = 0, t1 = 0;
+    glGetQueryObjectui64v(q[0], GL_QUERY_RESULT, &t0);
+    glGetQueryObjectui64v(q[1], GL_QUERY_RESULT, &t1);
+    glDeleteQueries(2, q);
+    return t1 > t0 ? double(t1 - t0) : 0.0;
+}
+
+// Median GPU milliseconds of `runs` timed dispatches of (kGroupsX, groups_y) after one untimed.
+double time_dispatch(GLuint groups_y, int runs) {
+    std::vector<double> ms;
+    for (int r = 0; r <= runs; ++r) {
+        const double ns = time_once(kGroupsX, groups_y);
+        if (r > 0) ms.push_back(ns * 1e-6);
+    }
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
+}
+
+GLuint make_buffer(GLsizeiptr bytes) {
+    GLuint b = 0;
+    glGenBuffers(1, &b);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, b);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, bytes, nullptr, GL_DYNAMIC_COPY);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    return b;
+}
+
+}  // namespace
+
+Ceilings measure_ceilings() {
+    Ceilings c;
+    const GLuint copy = pfs::link_compute_program(kCopy, "roofline_copy");
+    glUseProgram(copy);
+    // Without timer queries (Mesa's llvmpipe) nothing can be measured: a one-workgroup probe
+    // says so before any large buffer is made.
+    GLuint src = make_buffer(256 * 16), dst = make_buffer(256 * 16);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, src);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, dst);
+    const bool timed = time_once(1, 1) > 0;
+    glDeleteBuffers(1, &src);
+    glDeleteBuffers(1, &dst);
+    if (timed) {
+        // 512 MiB each way (or the GL's largest storage block), far beyond any L2.
+        GLint64 max_block = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
+        const GLsizeiptr copy_bytes = std::min<GLsizeiptr>(GLsizeiptr(512) << 20, GLsizeiptr(max_block));
+        src = make_buffer(copy_bytes);
+        dst = make_buffer(copy_bytes);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, src);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, dst);
+        // Untimed copies for 200 ms first: an idle GPU raises its clocks only under sustained load.
+        glUniform1ui(0, 1u);
+        const auto warm_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
+        while (std::chrono::steady_clock::now() < warm_until) {
+            glDispatchCompute(kGroupsX, GLuint(copy_bytes / 16 / 256 / kGroupsX), 1);
+            glFinish();
+        }
+        // The best of 1, 4 and 16 vec4s per invocation, for the copy (bytes read + written) and
+        // the read-only stream.
+        const GLuint read = pfs::link_compute_program(kRead, "roofline_read");
+        for (GLuint program : {copy, read}) {
+            glUseProgram(program);
+            double& best = program == copy ? c.copy_gbps : c.read_gbps;
+            for (GLuint per_thread : {1u, 4u, 16u}) {
+                const GLuint groups = GLuint(copy_bytes / 16 / 256 / per_thread);
+                const GLuint rows = groups / kGroupsX;  // whole rows: the pass covers rows * kGroupsX groups
+                if (rows == 0) continue;
+                glUniform1ui(0, per_thread);
+                const double ms = time_dispatch(rows, 5);
+                const double moved = (program == copy ? 2.0 : 1.0) * double(rows) * kGroupsX * 256 * per_thread * 16;
+                // Under 10 us would be a timer's reading, not a copy's (no GPU moves 256 MiB that fast).
+                if (ms > 0.01) best = std::max(best, moved / (ms * 1e6));
+            }
+        }
+        glDeleteProgram(read);
+        glDeleteBuffers(1, &src);
+        glDeleteBuffers(1, &dst);
+    }
+    const GLuint atomics = pfs::link_compute_program(kAtomics, "roofline_atomics");
+    if (timed) {
+        // Atomics: 2 rows of invocations x 8 atomics into 16M words (64 MiB).
+        const GLuint words = 1u << 24;
+        const GLuint counters = make_buffer(GLsizeiptr(words) * 4);
+        glUseProgram(atomics);
+        glUniform1ui(0, words - 1);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counters);
+        const double atomic_ms = time_dispatch(2, 5);
+        if (atomic_ms > 0) c.atomics_gops = double(kGroupsX) * 2 * 256 * 8 / (atomic_ms * 1e6);
+        glDeleteBuffers(1, &counters);
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+    glUseProgram(0);
+    glDeleteProgram(copy);
+    glDeleteProgram(atomics);
+    pfs::check_gl("measure_ceilings");
+    return c;
+}
+
+Traffic pass_traffic(pf_pass pass, const TrafficInputs& in) {
+    const double p = double(in.particles), f = double(in.faces), cells = double(in.cells);
+    Traffic t;
+    switch (pass) {
+        case PF_PASS_P2G:
+            // position, velocity (16 bytes each; APIC's affine vectors 48) in; two accumulator
+            // words per face and a count per cell out.
+            t.bytes = p * (32 + (in.apic ? 48 : 0)) + 8 * f + 4 * cells;
+            if (in.p2g == PF_P2G_TILED) {
+                t.bytes += p * (8 + 8 + 4 + 4);  // the sort: tile and slot written and read, order written and read
+            } else if (in.p2g == PF_P2G_FIXED_POINT) {
+                t.atomics = p * 49;  // 2 words x 8 nodes x 3 lattices, and the cell count
+            } else {
+                t.bytes = 0;  // the float-atomic and gather schemes: no model
+            }
+            break;
+        case PF_PASS_G2P:
+            // position and velocity in, velocity out (APIC: affine vectors out); the face
+            // velocities (FLIP: and the pre-force ones) in.
+            t.bytes = p * (48 + (in.apic ? 48 : 0)) + f * (in.apic ? 4 : 8);
+            break;
+        case PF_PASS_ADVECT:
+            // position and velocity in, position out (Runge-Kutta: the face velocities in); the
+            // volume correction's move: position in and out, the potential, types and face
+            // fractions in.
+            t.bytes = p * 48 + (in.rk_advection ? 4 * f : 0);
+            if (in.volume_correction) t.bytes += p * 32 + 8 * cells + 4 * f;
+            break;
+        default: break;
+    }
+    return t;
+}
+
+const char* traffic_model_note() {
+    return "modelled traffic: each particle attribute and grid field a pass reads or writes, counted once "
+           "(repeated stencil reads and cache hits not counted); roofline = the copy bandwidth measured at start-up";
+}
+
+}  // namespace pfb

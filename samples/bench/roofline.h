@@ -1,0 +1,39 @@
+// The GPU's own ceilings, measured by pf_bench at start-up through GL compute so that its
+// ratios hold on any GPU, and the traffic model of the particle passes they are compared with.
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "pf/pf.h"
+
+namespace pfb {
+
+struct Ceilings {
+    double copy_gbps = 0;     // a compute kernel copying vec4s (the best of three ways), bytes read + written per second / 1e9
+    double read_gbps = 0;     // the same reading only (kernels that read more than they write can pass the copy's rate)
+    double atomics_gops = 0;  // 32-bit atomicAdd to random addresses of a 64 MiB buffer, per second / 1e9
+    bool measured() const { return copy_gbps > 0; }  // false where timer queries read 0 (llvmpipe)
+};
+
+// Runs both microbenchmarks on the current context (a few hundred MiB of buffers, freed after).
+Ceilings measure_ceilings();
+
+// What one pass group moves per substep by the model: every particle attribute and grid field it
+// reads or writes, once (caches and repeated stencil reads not counted), and the global atomics
+// it issues. bytes 0: no model for that group.
+struct Traffic {
+    double bytes = 0;
+    double atomics = 0;
+};
+struct TrafficInputs {
+    uint64_t particles = 0, cells = 0, faces = 0;
+    pf_p2g p2g = PF_P2G_TILED;
+    bool apic = false;
+    bool rk_advection = false;
+    bool volume_correction = false;  // its particle move is timed with advection (PF_PASS_ADVECT)
+};
+Traffic pass_traffic(pf_pass pass, const TrafficInputs& in);
+// One line saying what pass_traffic counts (printed under the table, written to the JSON).
+const char* traffic_model_note();
+
+}  // namespace pfb
