@@ -275,7 +275,7 @@ double value_in(const Case& c, const std::string& var, double v, double scale) {
 // the first dimensionless time unit (Martin & Moyce) or of a tenth of a second (MARIN).
 double max_shift_in(const std::string& var) { return var == "t_s" ? 0.25 : 1.0; }
 
-Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, bool verbose) {
+Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, float cfl, bool verbose) {
     Run r;
     pf_sim_desc desc = pf_default_sim_desc();
     desc.gl_get_proc_address = pfs::get_proc;
@@ -283,6 +283,7 @@ Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, bo
     pfs::check(pf_quality_params(quality, &desc.params), "pf_quality_params");
     // A substep budget, not a quality choice: let the CFL condition hold at any resolution.
     desc.params.max_substeps = 64;
+    if (cfl > 0) desc.params.cfl = cfl;
 
     // The experiment's last data time (s, at this scale) and the frames to cover it, plus room for
     // the alignment shift.
@@ -388,6 +389,7 @@ pf_quality parse_quality(const std::string& name) {
 int run(int argc, char** argv) {
     uint32_t cells = 16;
     double scale = 1.0;
+    float cfl = 0.0f;
     std::vector<std::string> preset_names, case_names;
     std::string json_path, data_path = PF_VALIDATION_DATA;
     bool verbose = false;
@@ -402,6 +404,8 @@ int run(int argc, char** argv) {
     app.add_option("--data", data_path, "the published data (docs/validation_data.json)");
     app.add_option("--scale", scale, "build the experiments this many times larger (Froude similarity); default 1")
         ->check(CLI::Range(0.1, 100.0));
+    app.add_option("--cfl", cfl, "override the presets' cfl (cells a particle may cross per substep)")
+        ->check(CLI::Range(0.05f, 16.0f));
     app.add_flag("--verbose", verbose, "pflip's info messages");
     try {
         app.parse(argc, argv);
@@ -427,7 +431,7 @@ int run(int argc, char** argv) {
     ojson results = ojson::array();
     for (const Case& c : cases) {
         for (const std::string& pname : preset_names) {
-            const Run r = run_case(c, parse_quality(pname), cells, scale, verbose);
+            const Run r = run_case(c, parse_quality(pname), cells, scale, cfl, verbose);
             std::printf("\n%s / %s: grid %ux%ux%u, dx %.4g m, %u particles, %u frames, %.2f substeps/frame, %.1f s, flags 0x%x\n",
                         c.name.c_str(), pname.c_str(), r.grid.x, r.grid.y, r.grid.z, r.dx, r.particles, r.frames,
                         r.substeps, r.wall_s, r.flags);
@@ -438,6 +442,7 @@ int run(int argc, char** argv) {
             row["preset"] = pname;
             row["cells"] = cells;
             row["scale"] = scale;
+            row["cfl"] = cfl > 0 ? double(cfl) : 1.0;  // every preset's is 1
             row["grid"] = {r.grid.x, r.grid.y, r.grid.z};
             row["cell_size_m"] = r.dx;
             row["particles"] = r.particles;
