@@ -3,6 +3,7 @@
 #include <string>
 
 #include "common/render_slots.h"
+#include "gl/allocation_check.h"
 #include "gl/debug.h"
 #include "gl/render_state_guard.h"
 #include "sim/simulation.h"
@@ -194,11 +195,10 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
     if (!targets_) targets_ = std::make_unique<SsfTargets>(gl_);
     gl_.ActiveTexture(GL_TEXTURE0 + PF_TEX_SCENE_COLOR);  // ensure() binds on the active unit
     targets_->ensure(w, h, info.scene_depth_format);
-    if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
-        return sim_.log().error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                                std::string(fn) + ": allocating " + std::to_string(w) + "x" + std::to_string(h) +
-                                    " render targets failed (GL error " + gl::hex(err) + ")");
-    }
+    if (pf_result r = gl::check_allocated(gl_, sim_.log(), std::string(fn) + ": allocating " + std::to_string(w) + "x" +
+                                                              std::to_string(h) + " render targets");
+        r != PF_OK)
+        return r;
 
     RenderUniforms u{};
     fill_camera(camera, y_sign, sim_.domain_to_world(), u);

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "common/slots.h"
+#include "gl/allocation_check.h"
 #include "gl/debug.h"
 #include "gl/entry_points.h"
 #include "gl/state_guard.h"
@@ -82,8 +83,6 @@ pf_result Simulation::init() {
                     static_cast<int32_t>(n[0] * n[1] * (n[2] + 1))};
     faces_ = face_counts_[0] + face_counts_[1] + face_counts_[2];
 
-    GLint64 max_block = 0;
-    gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
     GLint max_blocks = 0;
     gl_.GetIntegerv(GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS, &max_blocks);
     if (max_blocks < PF_SLOT_COUNT) {
@@ -91,11 +90,10 @@ pf_result Simulation::init() {
                                                        " compute storage blocks, 8 are needed");
     }
     const uint64_t largest = std::max<uint64_t>(uint64_t(desc_.max_particles) * 16u, uint64_t(faces_) * 8u);
-    if (largest > uint64_t(max_block)) {
-        return log_.error(PF_ERROR_CAPACITY, "pf_create: a buffer of " + std::to_string(largest) +
-                                                 " bytes exceeds this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" +
-                                                 std::to_string(max_block) + "); lower max_particles or the grid size");
-    }
+    if (pf_result r = gl::check_storage_block(gl_, log_, largest, "pf_create: the simulation needs",
+                                              "(16 per particle, 8 per face)", "lower max_particles or the grid size");
+        r != PF_OK)
+        return r;
 
     gl::StateGuard guard(gl_, gl_state_);
     const size_t np = desc_.max_particles;
@@ -120,11 +118,10 @@ pf_result Simulation::init() {
     metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 32, GL_DYNAMIC_COPY,
                                    "metrics_partials",
                                    desc_.max_particles >= uint64_t(cells_) ? gl::Sizing::particles : gl::Sizing::other);
-    if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
-        return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                          "pf_create: allocating " + std::to_string((np * 32 + size_t(faces_) * 28 + size_t(cells_) * 20) >> 20) +
-                              " MiB of GPU buffers failed (GL error " + hex(err) + ")");
-    }
+    if (pf_result r = gl::check_allocated(gl_, log_, "pf_create: allocating " + std::to_string(memory_.bytes >> 20) +
+                                                         " MiB of GPU buffers");
+        r != PF_OK)
+        return r;
 
     PassRunner& r = *runner_;
     const StatId clear = r.add_stat("clear", PF_PASS_CLEAR);
@@ -194,10 +191,8 @@ pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, Pr
         const SolverGrid grid{glm::ivec3(desc_.grid_size[0], desc_.grid_size[1], desc_.grid_size[2]),
                               uint32_t(cells_)};
         if (pf_result r = made->init(gl_, *runner_, grid, log_, fn); r != PF_OK) return r;
-        if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
-            return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                              std::string(fn) + ": allocating the pressure solver failed (GL error " + hex(err) + ")");
-        }
+        if (pf_result r = gl::check_allocated(gl_, log_, std::string(fn) + ": allocating the pressure solver"); r != PF_OK)
+            return r;
         slot = std::move(made);
     }
     *out = slot.get();
@@ -225,20 +220,15 @@ pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const
     }
     if (params.transfer != PF_TRANSFER_APIC || affine_.bytes() != 0) return PF_OK;
     const uint64_t bytes = uint64_t(desc_.max_particles) * 48u;
-    GLint64 max_block = 0;
-    gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-    if (bytes > uint64_t(max_block)) {
-        return log_.error(PF_ERROR_CAPACITY, std::string(fn) + ": APIC needs a buffer of " + std::to_string(bytes) +
-                                                 " bytes (48 per particle), more than this GL's "
-                                                 "GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
-                                                 "); lower max_particles");
-    }
+    if (pf_result r = gl::check_storage_block(gl_, log_, bytes, std::string(fn) + ": APIC needs", "(48 per particle)",
+                                              "lower max_particles");
+        r != PF_OK)
+        return r;
     gl::Buffer made(gl_, size_t(bytes), GL_DYNAMIC_COPY, "particle_affine", gl::Sizing::particles);
-    if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
-        return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                          std::string(fn) + ": allocating " + std::to_string(bytes >> 20) +
-                              " MiB of APIC affine vectors failed (GL error " + hex(err) + ")");
-    }
+    if (pf_result r = gl::check_allocated(gl_, log_, std::string(fn) + ": allocating " + std::to_string(bytes >> 20) +
+                                                         " MiB of APIC affine vectors");
+        r != PF_OK)
+        return r;
     affine_ = std::move(made);
     return PF_OK;
 }
@@ -852,10 +842,8 @@ pf_result Simulation::set_features(uint32_t features, const char* fn) {
         const uint32_t bit = 1u << i;
         if (!(features & bit) || (effects_ready_ & bit)) continue;
         if (pf_result r = effects_[i]->init(gl_, *runner_, log_, fn); r != PF_OK) return r;
-        if (GLenum err = gl_.GetError(); err != GL_NO_ERROR) {
-            return log_.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                              std::string(fn) + ": allocating an effect's buffers failed (GL error " + hex(err) + ")");
-        }
+        if (pf_result r = gl::check_allocated(gl_, log_, std::string(fn) + ": allocating an effect's buffers"); r != PF_OK)
+            return r;
         effects_ready_ |= bit;
     }
     // A domain motion turned on has no previous step to take its acceleration from.

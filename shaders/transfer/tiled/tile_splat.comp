@@ -63,7 +63,7 @@ void main() {
         vec3 g = grid_coord(pos[i].xyz);
         vec3 v = vel[i].xyz;
         ivec3 cell = clamp(ivec3(floor(g)), ivec3(0), sim.grid.xyz - 1);
-        ivec3 c = cell - first_cell;
+        ivec3 c = clamp(cell - first_cell, ivec3(0), ivec3(PF_P2G_TILE - 1));  // the same cell tile_count gave this tile
         atomicAdd(s_count[c.x + PF_P2G_TILE * (c.y + PF_P2G_TILE * c.z)], 1u);
         for (int axis = 0; axis < 3; ++axis) {
             LatticeTerms t = lattice_terms(i, axis, g, v);

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "common/slots.h"
+#include "gl/allocation_check.h"
 
 namespace pf {
 
@@ -23,25 +24,21 @@ pf_result SortedGatherP2g::prepare(const gl::Api& gl, PassRunner& runner, const 
     halves.plan(grid.cells * 8u);
     const uint64_t words = halves.scan_words(), np = grid.max_particles;
     const uint64_t largest = std::max<uint64_t>(np * 16u, words * 4u);  // the sorted copies or the starts
-    GLint64 max_block = 0;
-    gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-    if (largest > uint64_t(max_block)) {
-        return log.error(PF_ERROR_CAPACITY, std::string(fn) + ": PF_P2G_SORTED_GATHER needs a buffer of " +
-                                                std::to_string(largest) + " bytes (16 per particle, 32 per cell), more than "
-                                                "this GL's GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
-                                                "); lower max_particles or the grid size");
-    }
+    if (pf_result r = gl::check_storage_block(gl, log, largest, std::string(fn) + ": PF_P2G_SORTED_GATHER needs",
+                                              "(16 per particle, 32 per cell)", "lower max_particles or the grid size");
+        r != PF_OK)
+        return r;
     gl::Buffer cell_slot(gl, size_t(np) * 8, GL_DYNAMIC_COPY, "p2g_sort_cell_slot", gl::Sizing::particles),
         unsorted(gl, size_t(np) * 4, GL_DYNAMIC_COPY, "p2g_sort_unsorted", gl::Sizing::particles),
         sorted_grid(gl, size_t(np) * 16, GL_DYNAMIC_COPY, "p2g_sort_grid", gl::Sizing::particles),
         sorted_particles(gl, size_t(np) * 16, GL_DYNAMIC_COPY, "p2g_sort_particles", gl::Sizing::particles);
     halves.allocate(gl, "p2g_sort");
-    if (GLenum err = gl.GetError(); err != GL_NO_ERROR) {
-        return log.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                         std::string(fn) + ": allocating " +
-                             std::to_string((np * 44 + words * 4 + halves.count_words() * 4) >> 20) +
-                             " MiB for the sorted-gather P2G failed (GL error " + gl::hex(err) + ")");
-    }
+    if (pf_result r = gl::check_allocated(gl, log,
+                                          std::string(fn) + ": allocating " +
+                                              std::to_string((np * 44 + words * 4 + halves.count_words() * 4) >> 20) +
+                                              " MiB for the sorted-gather P2G");
+        r != PF_OK)
+        return r;
     grid_ = grid;
     cell_slot_ = std::move(cell_slot);
     unsorted_ = std::move(unsorted);

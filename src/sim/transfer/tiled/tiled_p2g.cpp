@@ -3,6 +3,7 @@
 #include <string>
 
 #include "common/slots.h"
+#include "gl/allocation_check.h"
 
 namespace pf {
 
@@ -21,23 +22,20 @@ pf_result TiledP2g::prepare(const gl::Api& gl, PassRunner& runner, const P2gGrid
     PrefixSum per_tile;
     per_tile.plan(tile_count);
     const uint64_t np = grid.max_particles;
-    GLint64 max_block = 0;
-    gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &max_block);
-    if (np * 8u > uint64_t(max_block)) {
-        return log.error(PF_ERROR_CAPACITY, std::string(fn) + ": PF_P2G_TILED needs a buffer of " +
-                                                std::to_string(np * 8u) + " bytes (8 per particle), more than this GL's "
-                                                "GL_MAX_SHADER_STORAGE_BLOCK_SIZE (" + std::to_string(max_block) +
-                                                "); lower max_particles");
-    }
+    if (pf_result r = gl::check_storage_block(gl, log, np * 8u, std::string(fn) + ": PF_P2G_TILED needs",
+                                              "(8 per particle)", "lower max_particles");
+        r != PF_OK)
+        return r;
     gl::Buffer tile_slot(gl, size_t(np) * 8, GL_DYNAMIC_COPY, "p2g_tile_slot", gl::Sizing::particles),
         order(gl, size_t(np) * 4, GL_DYNAMIC_COPY, "p2g_tile_order", gl::Sizing::particles);
     per_tile.allocate(gl, "p2g_tile");
-    if (GLenum err = gl.GetError(); err != GL_NO_ERROR) {
-        return log.error(err == GL_OUT_OF_MEMORY ? PF_ERROR_OUT_OF_MEMORY : PF_ERROR_GL,
-                         std::string(fn) + ": allocating " +
-                             std::to_string((np * 12 + (per_tile.scan_words() + per_tile.count_words()) * 4) >> 20) +
-                             " MiB for the tiled P2G failed (GL error " + gl::hex(err) + ")");
-    }
+    if (pf_result r = gl::check_allocated(
+            gl, log,
+            std::string(fn) + ": allocating " +
+                std::to_string((np * 12 + (per_tile.scan_words() + per_tile.count_words()) * 4) >> 20) +
+                " MiB for the tiled P2G");
+        r != PF_OK)
+        return r;
     grid_ = grid;
     tiles_ = tile_count;
     tile_slot_ = std::move(tile_slot);
