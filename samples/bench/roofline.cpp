@@ -11,32 +11,30 @@
 namespace pfb {
 namespace {
 
-// Each invocation copies u_per_thread vec4s, a dispatch's width apart (coalesced).
-const char* kCopy = R"(#version 430
-layout(local_size_x = 256) in;
-layout(std430, binding = 0) readonly buffer Src { vec4 src[]; };
-layout(std430, binding = 1) writeonly buffer Dst { vec4 dst[]; };
-layout(location = 0) uniform uint u_per_thread;
+// The streaming kernels' common part: vec4s from src to dst, u_per_thread per invocation, a
+// dispatch's width apart (coalesced).
+#define PFB_STREAM_KERNEL_HEAD \
+    "#version 430\n" \
+    "layout(local_size_x = 256) in;\n" \
+    "layout(std430, binding = 0) readonly buffer Src { vec4 src[]; };\n" \
+    "layout(std430, binding = 1) writeonly buffer Dst { vec4 dst[]; };\n" \
+    "layout(location = 0) uniform uint u_per_thread;\n" \
+    "uint width() { return gl_NumWorkGroups.x * gl_NumWorkGroups.y * 256u; }\n" \
+    "uint first() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u; }\n"
+
+// Copy: every vec4 read and written.
+const char* kCopy = PFB_STREAM_KERNEL_HEAD R"(
 void main() {
-    uint width = gl_NumWorkGroups.x * gl_NumWorkGroups.y * 256u;
-    uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
-    for (uint k = 0u; k < u_per_thread; ++k) dst[i + k * width] = src[i + k * width];
+    for (uint k = 0u; k < u_per_thread; ++k) dst[first() + k * width()] = src[first() + k * width()];
 }
 )";
 
-// Each invocation reads u_per_thread vec4s (as kCopy) and writes nothing unless their sum is
-// impossible (so the reads cannot be optimised away): the read-only stream.
-const char* kRead = R"(#version 430
-layout(local_size_x = 256) in;
-layout(std430, binding = 0) readonly buffer Src { vec4 src[]; };
-layout(std430, binding = 1) writeonly buffer Dst { vec4 dst[]; };
-layout(location = 0) uniform uint u_per_thread;
+// Read only: nothing is written unless the sum is impossible (so the reads cannot be optimised away).
+const char* kRead = PFB_STREAM_KERNEL_HEAD R"(
 void main() {
-    uint width = gl_NumWorkGroups.x * gl_NumWorkGroups.y * 256u;
-    uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 256u;
     vec4 sum = vec4(0.0);
-    for (uint k = 0u; k < u_per_thread; ++k) sum += src[i + k * width];
-    if (sum.x == -1.0e30) dst[i] = sum;
+    for (uint k = 0u; k < u_per_thread; ++k) sum += src[first() + k * width()];
+    if (sum.x == -1.0e30) dst[first()] = sum;
 }
 )";
 
@@ -57,7 +55,7 @@ void main() {
 
 constexpr GLuint kGroupsX = 32768;  // dispatches of 2D grids of 256-invocation workgroups
 
-// GPU nanoseconds between timestamps around `groups_y` rows of kGroupsX workgroups of the bound
+// GPU nanoseconds between timestamps around a (groups_x, groups_y) grid of workgroups of the bound
 // program (GL_TIMESTAMP pairs: Mesa's llvmpipe reads ~1 ns for GL_TIME_ELAPSED around a lone dispatch).
 double time_once(GLuint groups_x, GLuint groups_y) {
     GLuint q[2] = {0, 0};
@@ -73,11 +71,11 @@ double time_once(GLuint groups_x, GLuint groups_y) {
     return t1 > t0 ? double(t1 - t0) : 0.0;
 }
 
-// Median GPU milliseconds of `runs` timed dispatches of (kGroupsX, groups_y) after one untimed.
-double time_dispatch(GLuint groups_y, int runs) {
+// Median GPU milliseconds of `runs` timed dispatches of (groups_x, groups_y) after one untimed.
+double time_dispatch(GLuint groups_x, GLuint groups_y, int runs) {
     std::vector<double> ms;
     for (int r = 0; r <= runs; ++r) {
-        const double ns = time_once(kGroupsX, groups_y);
+        const double ns = time_once(groups_x, groups_y);
         if (r > 0) ms.push_back(ns * 1e-6);
     }
     std::sort(ms.begin(), ms.end());
@@ -131,11 +129,10 @@ Ceilings measure_ceilings() {
             double& best = program == copy ? c.copy_gbps : c.read_gbps;
             for (GLuint per_thread : {1u, 4u, 16u}) {
                 const GLuint groups = GLuint(copy_bytes / 16 / 256 / per_thread);
-                const GLuint rows = groups / kGroupsX;  // whole rows: the pass covers rows * kGroupsX groups
-                if (rows == 0) continue;
+                const GLuint columns = std::min(groups, kGroupsX), rows = groups / columns;  // whole rows
                 glUniform1ui(0, per_thread);
-                const double ms = time_dispatch(rows, 5);
-                const double moved = (program == copy ? 2.0 : 1.0) * double(rows) * kGroupsX * 256 * per_thread * 16;
+                const double ms = time_dispatch(columns, rows, 5);
+                const double moved = (program == copy ? 2.0 : 1.0) * double(rows) * columns * 256 * per_thread * 16;
                 // Under 10 us would be a timer's reading, not a copy's (no GPU moves 256 MiB that fast).
                 if (ms > 0.01) best = std::max(best, moved / (ms * 1e6));
             }
@@ -152,7 +149,7 @@ Ceilings measure_ceilings() {
         glUseProgram(atomics);
         glUniform1ui(0, words - 1);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counters);
-        const double atomic_ms = time_dispatch(2, 5);
+        const double atomic_ms = time_dispatch(kGroupsX, 2, 5);
         if (atomic_ms > 0) c.atomics_gops = double(kGroupsX) * 2 * 256 * 8 / (atomic_ms * 1e6);
         glDeleteBuffers(1, &counters);
     }
