@@ -346,8 +346,8 @@ TEST_P(SolverLadder, MgpcgCoarsensFlatAndThinGrids) {
 // from p = 0, one MGPCG iteration gives x = alpha V(b), so the solution after one iteration is
 // V(b) up to CG's scalar. The fused kernels work on tiles (mg_down.comp, mg_up.comp) whose halos
 // are recomputed by neighbouring tiles: grids that are no multiple of a tile, two to four levels,
-// a flat grid (an axis that never coarsens), SOLID cells and the ghost-fluid surface term; levels
-// above PF_MG_FUSED_CELLS take the unfused passes (the fine level alone, and two levels).
+// a flat grid (an axis that never coarsens), SOLID cells and the ghost-fluid surface term; the
+// fine level and coarse levels above PF_MG_FUSED_CELLS take the unfused passes.
 TEST_P(SolverLadder, VcycleMatchesTheReference) {
     struct Case {
         const char* name;

@@ -5,7 +5,7 @@
 #define PF_MG_COARSE_INVOCATIONS 512 /* the coarse solve's workgroup: two cells each (PF_MG_COARSE_CELLS / 2) */
 #define PF_MG_COARSE_SWEEPS 8    /* black-red half-sweep pairs of the coarsest level (after one red) */
 #define PF_MG_MAX_LEVELS 12
-#define PF_MG_FUSED_CELLS 131072 /* levels up to this size take the fused passes (a larger level, the unfused ones) */
+#define PF_MG_FUSED_CELLS 131072 /* coarse levels up to this size take the fused passes (the fine level never) */
 #define PF_MG_DOWN_TILE 4  /* mg_down.comp: coarse cells per tile edge (a fine block of 8^3 and its halo) */
 #define PF_MG_UP_TILE 8    /* mg_up.comp: cells per tile edge */
 #define PF_MG_TILE_INVOCATIONS 512 /* the workgroup of mg_down.comp and mg_up.comp, one per tile */

@@ -34,7 +34,10 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         // Indirect records, which convergence zeroes: mg_down's and mg_up's tiles on a fused level;
         // the level's cells where an unfused pass works on them (its own passes, the restriction
         // from an unfused finer level). At most 3 + 2 per level (solver_state.h).
-        level.fused = level.cells <= PF_MG_FUSED_CELLS;
+        // The fine level never: its tiles' repeated halo work costs more than its launches save
+        // wherever it holds most of the work (a large grid; a CPU rasteriser, which has no launch
+        // cost to save).
+        level.fused = !fine && level.cells <= PF_MG_FUSED_CELLS;
         const bool finer_unfused = !fine && !levels_.back().fused;
         if (fine) level.record = control.record(0);
         else if (!level.fused || finer_unfused) level.record = control.record(control.add_record(level.cells));

@@ -12,12 +12,13 @@
 //
 // Passes per level (docs/design.md §4.6): the first red half-sweep needs only the cell's own r,
 // so it is done by the pass that makes r (CG's update on the fine grid, the restriction on
-// coarser ones). A level of at most PF_MG_FUSED_CELLS cells then takes one pass down (the
+// coarser ones). A coarse level of at most PF_MG_FUSED_CELLS cells then takes one pass down (the
 // black half-sweep, the residual and its restriction: mg_down.comp) and one up (the coarse
 // correction, black and red: mg_up.comp), working on tiles with their halos in shared memory.
-// A larger level, where a tile's repeated halo reads cost more than a launch, takes five: the
-// black half-sweep, the residual (mg_residual.comp), the restriction (mg_restrict.comp), the
-// correction with the black half-sweep (mg_prolong_smooth.comp) and the red one. The fine
+// The fine level and larger ones, where a tile's repeated halo work costs more than a launch,
+// take five: the black half-sweep, the residual (mg_residual.comp), the restriction
+// (mg_restrict.comp), the correction with the black half-sweep (mg_prolong_smooth.comp) and the
+// red one. The fine
 // level's last red half-sweep carries CG's sums of z (mg_smooth_zstats.comp). On the H100 each
 // pass costs a few microseconds of launch and barrier whatever its size.
 #pragma once
