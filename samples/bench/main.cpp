@@ -183,6 +183,10 @@ struct Result {
     std::vector<std::pair<std::string, pfs::Summary>> pass_list;  // pf_get_pass_stats entries, ms per step
 };
 
+uint64_t cell_count(const pfs::Scene& scene) {
+    return uint64_t(scene.grid_size[0]) * scene.grid_size[1] * scene.grid_size[2];
+}
+
 // Run one scene; fills r (r.error on failure).
 void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     r.name = arg;
@@ -341,7 +345,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
                 r.gpu_total.median, r.gpu_samples, r.substeps.mean);
     std::printf("  solver: %.1f iterations (mean of the most per step; max %.0f), final residual %.3g (mean; max %.3g)\n",
                 r.solver_iterations.mean, r.solver_iterations.max, r.solver_residual.mean, r.solver_residual.max);
-    const uint64_t cells = uint64_t(desc.grid_size[0]) * desc.grid_size[1] * desc.grid_size[2];
+    const uint64_t cells = cell_count(r.scene);
     std::printf("  GPU memory %.1f MiB: %.1f bytes per particle slot (x %u), %.1f bytes per cell for the rest\n",
                 double(r.gpu_memory_bytes) / (1 << 20), double(r.gpu_particle_bytes) / r.max_particles, r.max_particles,
                 double(r.gpu_memory_bytes - r.gpu_particle_bytes) / double(cells));
@@ -359,7 +363,7 @@ std::vector<RooflineRow> roofline_rows(const Result& r, const pfb::Ceilings& cei
     pfb::TrafficInputs in;
     in.particles = r.particles;
     const uint64_t nx = r.scene.grid_size[0], ny = r.scene.grid_size[1], nz = r.scene.grid_size[2];
-    in.cells = nx * ny * nz;
+    in.cells = cell_count(r.scene);
     in.faces = (nx + 1) * ny * nz + nx * (ny + 1) * nz + nx * ny * (nz + 1);
     in.p2g = r.params.p2g;
     in.apic = r.params.transfer == PF_TRANSFER_APIC;
@@ -416,7 +420,7 @@ ojson result_json(const Result& r, const pfb::Ceilings& ceilings) {
     j["solver_iterations"] = summary_json(r.solver_iterations);
     j["solver_residual"] = summary_json(r.solver_residual);
     ojson memory;
-    const double cells = double(r.scene.grid_size[0]) * r.scene.grid_size[1] * r.scene.grid_size[2];
+    const double cells = double(cell_count(r.scene));
     memory["bytes"] = r.gpu_memory_bytes;
     memory["particle_bytes"] = r.gpu_particle_bytes;
     memory["bytes_per_particle_slot"] = double(r.gpu_particle_bytes) / r.max_particles;

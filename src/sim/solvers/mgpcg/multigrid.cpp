@@ -53,11 +53,13 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         return "multigrid: the coarsest level has " + std::to_string(levels_.back().cells) + " cells (more than " +
                std::to_string(PF_MG_COARSE_CELLS) + ")";
     std::vector<ProgramId> programs{ProgramId::mg_smooth_from_zero, ProgramId::mg_coarsen_types,
-                                    ProgramId::mg_down,          ProgramId::mg_down_start,
-                                    ProgramId::mg_up,            ProgramId::mg_prolong_smooth,
-                                    ProgramId::mg_smooth_zstats, ProgramId::mg_coarse_solve,
-                                    ProgramId::cg_zstats};
-    if (!levels_.front().fused) {
+                                    ProgramId::mg_prolong_smooth,   ProgramId::mg_smooth_zstats,
+                                    ProgramId::mg_coarse_solve,     ProgramId::cg_zstats};
+    // The passes of the levels above the coarsest, fused or not: only those built.
+    bool fused = false, unfused = false;
+    for (size_t l = 0; l + 1 < levels_.size(); ++l) (levels_[l].fused ? fused : unfused) = true;
+    if (fused) programs.insert(programs.end(), {ProgramId::mg_down, ProgramId::mg_down_start, ProgramId::mg_up});
+    if (unfused) {
         programs.insert(programs.end(), {ProgramId::mg_smooth, ProgramId::mg_residual, ProgramId::mg_restrict,
                                          ProgramId::mg_restrict_start});
     }
