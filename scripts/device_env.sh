@@ -4,4 +4,5 @@
 for f in .gl/*.deb; do dpkg -x "$f" /; done
 ldconfig
 export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+[ -f build-dev/runtime-libs.tar.gz ] && tar -C build-dev -xzf build-dev/runtime-libs.tar.gz  # scripts/pack_device.sh
 export LD_LIBRARY_PATH="$PWD/build-dev${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"

@@ -10,6 +10,7 @@
 
 #include <pf/pf.h>
 
+#include "cli.h"
 #include "egl_context.h"
 #include "roofline.h"
 #include "scene.h"
@@ -36,13 +37,9 @@ struct Options {
     std::vector<std::string> scenes;
     uint32_t warmup = 20;
     uint32_t steps = 100;
-    uint32_t pressure_iterations = 40;
-    std::string preset;         // empty: the scene's parameters
-    std::string solver;         // empty: the scene's
-    float tolerance = 0;        // 0: the scene's
+    uint32_t pressure_iterations = 40;  // without --preset
+    pfs::ParamOverrides overrides;      // --preset, --solver, --tolerance, --transfer, --advection, --p2g, ...
     int separation = -1;        // -1: the scene's
-    int p2g = -1;               // -1: the scene's (pf_p2g otherwise)
-    int free_surface = -1;      // -1: the scene's (pf_free_surface otherwise)
     uint32_t max_substeps = 0; // 0: the scene's
     float cfl = 0;             // 0: the scene's (or the preset's)
     float frame_dt = 0;        // 0: the scene's
@@ -54,91 +51,53 @@ struct Options {
 
 const char* kDefaultScenes[] = {"original_24", "dam_break_1m", "dam_break_10m"};
 
-void print_usage(std::FILE* f) {
-    std::fprintf(f,
-                 "usage: pf_bench [options] [SCENE ...]\n"
-                 "  SCENE                    scene file or name in the scenes directory\n"
-                 "                           (default: original_24 dam_break_1m dam_break_10m)\n"
-                 "  --warmup W               unmeasured steps first (default 20)\n"
-                 "  --steps M                measured steps (default 100)\n"
-                 "  --pressure-iterations N  Jacobi iterations per substep for every scene (default 40,\n"
-                 "                           the original's \"step (40 Jacobi iterations)\")\n"
-                 "  --preset NAME            quality preset fast, balanced or accurate (replaces the scenes'\n"
-                 "                           step parameters but gravity and max_substeps; options below\n"
-                 "                           apply on top)\n"
-                 "  --solver NAME            pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
-                 "  --tolerance T            pressure_tolerance (relative residual) for every scene\n"
-                 "  --separation 0|1         override the scenes' separation\n"
-                 "  --free-surface ghost_fluid|marker_cell  where the pressure's free surface sits\n"
-                 "  --p2g fixed|float|gather|tiled  particle-to-grid scheme: fixed-point atomics, float\n"
-                 "                           atomics, the sorted gather (PF_P2G_SORTED_GATHER) or fixed point\n"
-                 "                           summed per tile in shared memory (PF_P2G_TILED)\n"
-                 "  --max-substeps N         override the scenes' max_substeps (1 = one substep per step)\n"
-                 "  --cfl C                  override params.cfl (cells a particle may move per substep)\n"
-                 "  --frame-dt S             override the scenes' frame_dt (seconds per pf_step)\n"
-                 "  --features LIST          effects to run, overriding the scenes' (comma-separated\n"
-                 "                           force_fields, obstacles, emitters, sinks; or all, none);\n"
-                 "                           the scenes' objects are added either way\n"
-                 "  --json PATH              write results as JSON\n"
-                 "  --csv PATH               write results as CSV (one row per scene and metric)\n"
-                 "  --verbose                pflip's info messages and EGL details\n"
-                 "  -h, --help               this text\n"
-                 "environment: PF_EGL_PLATFORM=device|surfaceless, PF_EGL_DEVICE=N, PF_SCENES_DIR=DIR\n"
-                 "scenes directory: %s\n",
-                 pfs::scenes_dir().c_str());
-}
-
-Options parse_args(int argc, char** argv) {
-    Options o;
-    for (int i = 0; i < argc; ++i) o.command_line += std::string(i ? " " : "") + argv[i];
-    for (pfs::ArgCursor args(argc, argv); args.next();) {
-        const std::string& a = args.option();
-        if (a == "-h" || a == "--help") {
-            print_usage(stdout);
-            std::exit(0);
-        } else if (a == "--warmup") {
-            o.warmup = pfs::parse_u32(args.value(), "--warmup", 0, 1000000);
-        } else if (a == "--steps") {
-            o.steps = pfs::parse_u32(args.value(), "--steps", 1, 1000000);
-        } else if (a == "--pressure-iterations") {
-            o.pressure_iterations = pfs::parse_u32(args.value(), "--pressure-iterations", 1, 10000);
-        } else if (a == "--preset") {
-            o.preset = args.value();
-            pfs::parse_preset(o.preset, "--preset");
-        } else if (a == "--solver") {
-            o.solver = args.value();
-            pfs::parse_solver(o.solver, "--solver");
-        } else if (a == "--tolerance") {
-            o.tolerance = pfs::parse_float(args.value(), "--tolerance", 1e-12f, 0.999f);
-        } else if (a == "--p2g") {
-            o.p2g = pfs::parse_p2g(args.value(), "--p2g");
-        } else if (a == "--free-surface") {
-            o.free_surface = pfs::parse_free_surface(args.value(), "--free-surface");
-        } else if (a == "--separation") {
-            o.separation = int(pfs::parse_u32(args.value(), "--separation", 0, 1));
-        } else if (a == "--max-substeps") {
-            o.max_substeps = pfs::parse_u32(args.value(), "--max-substeps", 1, 64);
-        } else if (a == "--cfl") {
-            o.cfl = pfs::parse_float(args.value(), "--cfl", 0.05f, 10.0f);
-        } else if (a == "--frame-dt") {
-            o.frame_dt = pfs::parse_float(args.value(), "--frame-dt", 1e-6f, 1.0f);
-        } else if (a == "--features") {
-            o.features = int64_t(pfs::parse_feature_list(args.value(), "--features"));
-        } else if (a == "--json") {
-            o.json_path = args.value();
-        } else if (a == "--csv") {
-            o.csv_path = args.value();
-        } else if (a == "--verbose") {
-            o.verbose = true;
-        } else if (!a.empty() && a[0] == '-') {
-            throw Error("unknown option '" + a + "' (see --help)");
-        } else {
-            o.scenes.push_back(a);
-        }
+/// --features: the list becomes its PF_FEATURE_* bits (parse_feature_list knows the names).
+class FeatureList : public CLI::Validator {
+public:
+    FeatureList() {
+        func_ = [](std::string& input) -> std::string {
+            try {
+                input = std::to_string(pfs::parse_feature_list(input, "--features"));
+                return {};
+            } catch (const Error& e) {
+                // CLI11 puts the option's name in front: drop parse_feature_list's own.
+                return std::string(e.what()).substr(std::string("--features: ").size());
+            }
+        };
     }
-    if (o.scenes.empty())
-        for (const char* s : kDefaultScenes) o.scenes.push_back(s);
-    return o;
+};
+
+void add_options(CLI::App& app, Options& o) {
+    pfs::init_app(app);
+    app.add_option("scenes", o.scenes,
+                   "scene files or names in the scenes directory (default: original_24 dam_break_1m dam_break_10m)")
+        ->type_name("SCENE");
+    app.add_option("--warmup", o.warmup, "unmeasured steps first")
+        ->check(pfs::Range(0u, 1000000u))
+        ->capture_default_str();
+    app.add_option("--steps", o.steps, "measured steps")->check(pfs::Range(1u, 1000000u))->capture_default_str();
+    app.add_option("--pressure-iterations", o.pressure_iterations,
+                   "iteration cap per substep for every scene without --preset (default 40, the original's \"step "
+                   "(40 Jacobi iterations)\")")
+        ->check(pfs::Range(1u, 10000u));
+    pfs::add_param_overrides(app, o.overrides);
+    app.add_option("--separation", o.separation, "override the scenes' separation")->check(pfs::Range(0, 1));
+    app.add_option("--max-substeps", o.max_substeps, "override the scenes' max_substeps (1 = one substep per step)")
+        ->check(pfs::Range(1u, 64u));
+    app.add_option("--cfl", o.cfl, "override params.cfl (cells a particle may move per substep)")
+        ->check(pfs::Range(0.05f, 10.0f));
+    app.add_option("--frame-dt", o.frame_dt, "override the scenes' frame_dt (seconds per pf_step)")
+        ->check(pfs::Range(1e-6f, 1.0f));
+    app.add_option("--features", o.features,
+                   "effects to run, overriding the scenes' (comma-separated force_fields, obstacles, emitters, "
+                   "sinks, domain_motion; or all, none); the scenes' objects are added either way")
+        ->transform(FeatureList())
+        ->type_name("LIST");
+    app.add_option("--json", o.json_path, "write results as JSON")->type_name("PATH");
+    app.add_option("--csv", o.csv_path, "write results as CSV (one row per scene and metric)")->type_name("PATH");
+    app.add_flag("--verbose", o.verbose, "pflip's info messages and EGL details");
+    app.footer("environment: PF_EGL_PLATFORM=device|surfaceless, PF_EGL_DEVICE=N, PF_SCENES_DIR=DIR\n"
+               "scenes directory: " + pfs::scenes_dir());
 }
 
 using pfs::SimPtr;
@@ -197,16 +156,9 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     r.frame_dt = opt.frame_dt > 0 ? opt.frame_dt : r.scene.frame_dt;
 
     pf_sim_desc desc = pfs::make_sim_desc(r.scene, pfs::get_proc, pfs::stderr_logger(opt.verbose));
-    if (!opt.preset.empty()) {
-        pfs::apply_preset(pfs::parse_preset(opt.preset, "--preset"), desc.params);
-    } else {
-        desc.params.pressure_iterations = opt.pressure_iterations;
-    }
-    if (!opt.solver.empty()) desc.params.pressure_solver = pfs::parse_solver(opt.solver, "--solver");
-    if (opt.tolerance > 0) desc.params.pressure_tolerance = opt.tolerance;
+    if (!opt.overrides.has_preset) desc.params.pressure_iterations = opt.pressure_iterations;
+    opt.overrides.apply(desc.params);
     if (opt.separation >= 0) desc.params.separation = uint32_t(opt.separation);
-    if (opt.p2g >= 0) desc.params.p2g = pf_p2g(opt.p2g);
-    if (opt.free_surface >= 0) desc.params.free_surface = pf_free_surface(opt.free_surface);
     if (opt.max_substeps) desc.params.max_substeps = opt.max_substeps;
     if (opt.cfl > 0) desc.params.cfl = opt.cfl;
     if (opt.features >= 0) desc.features = uint32_t(opt.features);
@@ -414,6 +366,8 @@ ojson result_json(const Result& r, const pfb::Ceilings& ceilings) {
     p["pressure_solver"] = pfs::solver_name(r.params.pressure_solver);
     p["pressure_tolerance"] = r.params.pressure_tolerance;
     p["sor_omega"] = r.params.sor_omega;
+    p["transfer"] = pfs::transfer_name(r.params.transfer);
+    p["advection"] = pfs::advection_name(r.params.advection);
     p["p2g"] = pfs::p2g_name(r.params.p2g);
     p["free_surface"] = pfs::free_surface_name(r.params.free_surface);
     j["params"] = p;
@@ -556,7 +510,13 @@ void print_tables(const std::vector<Result>& results, const pfb::Ceilings& ceili
 }
 
 int run(int argc, char** argv) {
-    const Options opt = parse_args(argc, argv);
+    Options opt;
+    for (int i = 0; i < argc; ++i) opt.command_line += std::string(i ? " " : "") + argv[i];
+    CLI::App app{"pf_bench: pflip benchmark harness (per-pass GPU times, docs/performance.md)", "pf_bench"};
+    add_options(app, opt);
+    CLI11_PARSE(app, argc, argv);
+    if (opt.scenes.empty())
+        for (const char* s : kDefaultScenes) opt.scenes.push_back(s);
 
     pfs::EglContext::Options copt;
     copt.verbose = opt.verbose;

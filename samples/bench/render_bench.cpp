@@ -12,6 +12,7 @@
 #include <pf/pf.h>
 
 #include "camera.h"
+#include "cli.h"
 #include "egl_context.h"
 #include "scene.h"
 #include "util.h"
@@ -33,7 +34,7 @@ using ojson = nlohmann::ordered_json;
 
 struct Options {
     std::vector<std::string> scenes{"original_24", "dam_break_1m"};
-    std::vector<std::pair<uint32_t, uint32_t>> sizes{{1280, 720}, {1920, 1080}};
+    std::vector<pfs::Size> sizes{{1280, 720}, {1920, 1080}};
     uint32_t warmup = 60;   // simulated frames before rendering
     uint32_t frames = 60;   // measured render calls per configuration
     std::string json_path, csv_path;
@@ -59,46 +60,27 @@ struct Measurement {
     pfs::Summary total, wall;
 };
 
-void print_usage() {
-    std::printf("usage: pf_render_bench [--warmup W] [--frames M] [--sizes 1280x720,1920x1080] [--json F] [--csv F] [SCENE ...]\n"
-                "  default scenes: original_24 dam_break_1m; every size x {bilateral, narrow, none} x\n"
-                "  {compute, raster} plus the particle view\n");
-}
-
-Options parse_args(int argc, char** argv) {
-    Options o;
-    std::vector<std::string> scenes;
-    for (pfs::ArgCursor args(argc, argv); args.next();) {
-        const std::string& a = args.option();
-        if (a == "-h" || a == "--help") {
-            print_usage();
-            std::exit(0);
-        } else if (a == "--warmup") {
-            o.warmup = pfs::parse_u32(args.value(), "--warmup", 0, 100000);
-        } else if (a == "--frames") {
-            o.frames = pfs::parse_u32(args.value(), "--frames", 1, 100000);
-        } else if (a == "--sizes") {
-            o.sizes.clear();
-            std::string list = args.value();
-            for (size_t start = 0; start <= list.size();) {
-                const size_t comma = std::min(list.find(',', start), list.size());
-                uint32_t w = 0, h = 0;
-                pfs::parse_size(list.substr(start, comma - start), "--sizes", w, h);
-                o.sizes.emplace_back(w, h);
-                start = comma + 1;
-            }
-        } else if (a == "--json") {
-            o.json_path = args.value();
-        } else if (a == "--csv") {
-            o.csv_path = args.value();
-        } else if (!a.empty() && a[0] == '-') {
-            throw Error("unknown option '" + a + "' (see --help)");
-        } else {
-            scenes.push_back(a);
-        }
-    }
-    if (!scenes.empty()) o.scenes = scenes;
-    return o;
+void add_options(CLI::App& app, Options& o) {
+    pfs::init_app(app);
+    app.add_option("scenes", o.scenes, "scene files or names in the scenes directory")
+        ->type_name("SCENE")
+        ->capture_default_str();
+    app.add_option("--warmup", o.warmup, "frames simulated before rendering")
+        ->check(pfs::Range(0u, 100000u))
+        ->capture_default_str();
+    app.add_option("--frames", o.frames, "measured render calls per configuration")
+        ->check(pfs::Range(1u, 100000u))
+        ->capture_default_str();
+    // One argument (a list), so a scene after it stays a scene.
+    app.add_option("--sizes", o.sizes, "render sizes, comma-separated; each x {bilateral, narrow, none} x "
+                                       "{compute, raster} plus the particle view")
+        ->delimiter(',')
+        ->allow_extra_args(false)
+        ->check(pfs::SizeValidator())
+        ->type_name("WxH,...")
+        ->capture_default_str();
+    app.add_option("--json", o.json_path, "write results as JSON")->type_name("PATH");
+    app.add_option("--csv", o.csv_path, "write results as CSV")->type_name("PATH");
 }
 
 std::vector<Config> configs(const Options& o) {
@@ -212,7 +194,11 @@ void print_table(const std::vector<Measurement>& ms) {
 }
 
 int run(int argc, char** argv) {
-    const Options opt = parse_args(argc, argv);
+    Options opt;
+    CLI::App app{"pf_render_bench: per-pass GPU cost of pflip's liquid rendering (docs/performance.md)",
+                 "pf_render_bench"};
+    add_options(app, opt);
+    CLI11_PARSE(app, argc, argv);
     pfs::EglContext ctx;
     if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(pfs::get_proc))) throw Error("gladLoadGL failed");
     std::printf("pf_render_bench, %s\n%s\n", pfs::utc_timestamp().c_str(), ctx.describe().c_str());

@@ -23,10 +23,10 @@
 
 #include <pf/pf.h>
 
+#include "cli.h"
 #include "egl_context.h"
 #include "util.h"
 
-#include <CLI/CLI.hpp>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
@@ -379,26 +379,21 @@ Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, fl
     return r;
 }
 
-pf_quality parse_quality(const std::string& name) {
-    if (name == "fast") return PF_QUALITY_FAST;
-    if (name == "balanced") return PF_QUALITY_BALANCED;
-    if (name == "accurate") return PF_QUALITY_ACCURATE;
-    throw Error("unknown preset '" + name + "'");
-}
-
 int run(int argc, char** argv) {
     uint32_t cells = 16;
     double scale = 1.0;
     float cfl = 0.0f;
-    std::vector<std::string> preset_names, case_names;
+    std::vector<pf_quality> presets;
+    std::vector<std::string> case_names;
     std::string json_path, data_path = PF_VALIDATION_DATA;
     bool verbose = false;
     CLI::App app{"pf_validation: pflip against published dam-break experiments (docs/validation_data.json)"};
     app.add_option("--cells", cells,
                    "cells across the column width a (Martin & Moyce) or the water depth (MARIN); default 16")
         ->check(CLI::Range(4u, 256u));
-    app.add_option("--preset", preset_names, "fast, balanced or accurate (repeatable; default all three)")
-        ->check(CLI::IsMember({"fast", "balanced", "accurate"}));
+    app.add_option("--preset", presets, "quality presets to run (repeatable; default all three)")
+        ->transform(pfs::NameMap(pfs::preset_choices(), "preset"))
+        ->type_name("NAME");
     app.add_option("--case", case_names, "martin_moyce_2, martin_moyce_1 or marin_obstacle (repeatable; default all)");
     app.add_option("--json", json_path, "write the time series and the comparisons as JSON");
     app.add_option("--data", data_path, "the published data (docs/validation_data.json)");
@@ -412,7 +407,8 @@ int run(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
-    if (preset_names.empty()) preset_names = {"fast", "balanced", "accurate"};
+    if (presets.empty())
+        for (const auto& [name, quality] : pfs::preset_choices()) presets.push_back(quality);
 
     const std::vector<Case> all = load_cases(data_path);
     std::vector<Case> cases;
@@ -430,8 +426,9 @@ int run(int argc, char** argv) {
 
     ojson results = ojson::array();
     for (const Case& c : cases) {
-        for (const std::string& pname : preset_names) {
-            const Run r = run_case(c, parse_quality(pname), cells, scale, cfl, verbose);
+        for (const pf_quality quality : presets) {
+            const std::string pname = pfs::choice_name(pfs::preset_choices(), quality);
+            const Run r = run_case(c, quality, cells, scale, cfl, verbose);
             std::printf("\n%s / %s: grid %ux%ux%u, dx %.4g m, %u particles, %u frames, %.2f substeps/frame, %.1f s, flags 0x%x\n",
                         c.name.c_str(), pname.c_str(), r.grid.x, r.grid.y, r.grid.z, r.dx, r.particles, r.frames,
                         r.substeps, r.wall_s, r.flags);

@@ -108,11 +108,4 @@ const char* depth_convention_name(pf_depth_convention d) {
     }
 }
 
-pf_depth_convention parse_depth_convention(const std::string& text, const char* option) {
-    if (text == "standard") return PF_DEPTH_STANDARD;
-    if (text == "zero_to_one" || text == "zo") return PF_DEPTH_ZERO_TO_ONE;
-    if (text == "reversed_z" || text == "reversed") return PF_DEPTH_REVERSED_Z;
-    throw Error(std::string(option) + ": expected standard, zero_to_one or reversed_z, got '" + text + "'");
-}
-
 } // namespace pfs

@@ -64,7 +64,5 @@ public:
 
 /// "standard", "zero_to_one", "reversed_z".
 const char* depth_convention_name(pf_depth_convention d);
-/// Parses the names above (also "reversed"); throws pfs::Error naming option otherwise.
-pf_depth_convention parse_depth_convention(const std::string& text, const char* option);
 
 } // namespace pfs

@@ -30,13 +30,6 @@ void put_le(float v, unsigned char* out) {
 
 } // namespace
 
-bool parse_ply_format(const std::string& name, PlyFormat& out) {
-    if (name == "binary") out = PlyFormat::binary_little_endian;
-    else if (name == "ascii") out = PlyFormat::ascii;
-    else return false;
-    return true;
-}
-
 bool write_ply_particles(const std::string& path, const float* xyz, const float* vel, uint32_t n,
                          PlyFormat format, const std::string& comment) {
     std::unique_ptr<std::FILE, FileCloser> f(std::fopen(path.c_str(), "wb"));

@@ -19,7 +19,4 @@ enum class PlyFormat {
 bool write_ply_particles(const std::string& path, const float* xyz, const float* vel, uint32_t n,
                          PlyFormat format, const std::string& comment);
 
-/// "binary" or "ascii" to a format; false for anything else.
-bool parse_ply_format(const std::string& name, PlyFormat& out);
-
 } // namespace pfs

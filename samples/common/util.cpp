@@ -149,18 +149,6 @@ uint32_t parse_u32(const std::string& text, const char* option, uint32_t lo, uin
     return static_cast<uint32_t>(v);
 }
 
-float parse_float(const std::string& text, const char* option, float lo, float hi) {
-    errno = 0;
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || errno != 0 || end == text.c_str() || *end != '\0' || !std::isfinite(v) || v < lo || v > hi) {
-        char buf[128];
-        std::snprintf(buf, sizeof buf, ": expected a number in [%g, %g], got '", double(lo), double(hi));
-        throw Error(std::string(option) + buf + text + "'");
-    }
-    return static_cast<float>(v);
-}
-
 namespace {
 const char* const kSolverNames[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
 static_assert(sizeof(kSolverNames) / sizeof(kSolverNames[0]) == PF_PRESSURE_SOLVER_COUNT,
@@ -212,24 +200,12 @@ int parse_name(const char* const (&names)[N], const std::string& name, const cha
 }
 }  // namespace
 
-pf_transfer parse_transfer(const std::string& name, const char* what) {
-    return pf_transfer(parse_name(kTransferNames, name, what, "transfer"));
-}
-
 const char* transfer_name(pf_transfer transfer) {
     return transfer >= 0 && transfer < PF_TRANSFER_COUNT ? kTransferNames[transfer] : "unknown";
 }
 
-pf_advection parse_advection(const std::string& name, const char* what) {
-    return pf_advection(parse_name(kAdvectionNames, name, what, "advection"));
-}
-
 const char* advection_name(pf_advection advection) {
     return advection >= 0 && advection < PF_ADVECTION_COUNT ? kAdvectionNames[advection] : "unknown";
-}
-
-pf_p2g parse_p2g(const std::string& name, const char* what) {
-    return pf_p2g(parse_name(kP2gNames, name, what, "particle-to-grid scheme"));
 }
 
 const char* const kFreeSurfaceNames[PF_FREE_SURFACE_COUNT] = {"marker_cell", "ghost_fluid"};
@@ -244,58 +220,6 @@ const char* free_surface_name(pf_free_surface surface) {
 
 const char* p2g_name(pf_p2g p2g) { return p2g >= 0 && p2g < PF_P2G_COUNT ? kP2gNames[p2g] : "unknown"; }
 
-bool ParamOverrides::parse(ArgCursor& args) {
-    const std::string& a = args.option();
-    if (a == "--preset") {
-        preset = parse_preset(args.value(), "--preset");
-        has_preset = true;
-    } else if (a == "--solver") {
-        solver = parse_solver(args.value(), "--solver");
-        has_solver = true;
-    } else if (a == "--tolerance") {
-        // The library takes (0, 1); the bounds keep a typo like "1e4" from passing.
-        tolerance = parse_float(args.value(), "--tolerance", 1e-12f, 0.999f);
-        has_tolerance = true;
-    } else if (a == "--transfer") {
-        transfer = parse_transfer(args.value(), "--transfer");
-        has_transfer = true;
-    } else if (a == "--advection") {
-        advection = parse_advection(args.value(), "--advection");
-        has_advection = true;
-    } else if (a == "--p2g") {
-        p2g = parse_p2g(args.value(), "--p2g");
-        has_p2g = true;
-    } else if (a == "--free-surface") {
-        free_surface = parse_free_surface(args.value(), "--free-surface");
-        has_free_surface = true;
-    } else {
-        return false;
-    }
-    return true;
-}
-
-void ParamOverrides::apply(pf_sim_params& p) const {
-    if (has_preset) apply_preset(preset, p);
-    if (has_solver) p.pressure_solver = solver;
-    if (has_tolerance) p.pressure_tolerance = tolerance;
-    if (has_transfer) p.transfer = transfer;
-    if (has_advection) p.advection = advection;
-    if (has_p2g) p.p2g = p2g;
-    if (has_free_surface) p.free_surface = free_surface;
-}
-
-const char* ParamOverrides::usage() {
-    return "  --preset NAME       quality preset fast, balanced or accurate (docs/accuracy.md); the options\n"
-           "                      below apply on top of it (default: the scene's parameters)\n"
-           "  --solver NAME       pressure solver: jacobi, rbgs, cg, pcg, mgpcg (default: the scene's)\n"
-           "  --tolerance T       relative residual at which a pressure solve stops, (0, 1) (default: the scene's)\n"
-           "  --transfer pic_flip|apic  grid-particle transfer (default: the scene's)\n"
-           "  --advection euler|rk2|rk3  particle integrator (default: the scene's)\n"
-           "  --p2g fixed|float|gather  particle-to-grid scheme: fixed-point atomics, float atomics or the\n"
-           "                      sorted gather (default: the scene's)\n"
-           "  --free-surface ghost_fluid|marker_cell  where the pressure's free surface sits (default: the scene's)\n";
-}
-
 pf_result get_pass_list(const pf_sim* sim, std::vector<pf_pass_stats>& out) {
     out.clear();
     uint32_t n = 0;
@@ -307,13 +231,6 @@ pf_result get_pass_list(const pf_sim* sim, std::vector<pf_pass_stats>& out) {
             return r;
         }
     return PF_OK;
-}
-
-void parse_size(const std::string& text, const char* option, uint32_t& w, uint32_t& h) {
-    const size_t x = text.find_first_of("xX");
-    if (x == std::string::npos) throw Error(std::string(option) + ": expected WxH, got '" + text + "'");
-    w = parse_u32(text.substr(0, x), option, 16, 16384);
-    h = parse_u32(text.substr(x + 1), option, 16, 16384);
 }
 
 std::string pf_version_string() {

@@ -20,10 +20,12 @@
 #include <pf/pf.h>
 
 #include "camera.h"
+#include "cli.h"
 #include "egl_context.h"
 #include "gl_util.h"
 #include "image_write.h"
 #include "ply_write.h"
+#include "vdb_write.h"
 #include "floating.h"
 #include "obstacle_shapes.h"
 #include "scene.h"
@@ -48,16 +50,18 @@ using pfs::Error;
 
 // ---- command line ---------------------------------------------------------------------------
 
+/// What --export-vdb writes each frame.
+enum class VdbContent { volume, points, both };
+
 struct Options {
     std::string scene = "dam_break_small";
     bool frames_set = false;
     uint32_t frames = 0;
     std::string out = "out";
-    uint32_t width = 960, height = 540;
+    pfs::Size size{960, 540};
     uint32_t every = 4;
     bool ssf = true;
     pf_ssf_filter filter = PF_SSF_FILTER_BILATERAL;
-    bool filter_set = false;
     pf_ssf_path path = PF_SSF_PATH_COMPUTE;
     pf_depth_convention depth = PF_DEPTH_STANDARD;
     bool builtin_sky = false;
@@ -69,119 +73,98 @@ struct Options {
     float fps = 0;                    // 0: real time
     bool verbose = false;
     bool debug = false;
-    pfs::ParamOverrides overrides;    // --solver, --tolerance, --transfer, --advection
+    pfs::ParamOverrides overrides;    // --preset, --solver, --tolerance, --transfer, --advection, --p2g, ...
     std::string export_ply;           // directory for frame_NNNN.ply; empty: no export
     pfs::PlyFormat ply_format = pfs::PlyFormat::binary_little_endian;
+    std::string export_vdb;           // directory for frame_NNNN.vdb / frame_NNNN_points.vdb; empty: none
+    VdbContent vdb_content = VdbContent::both;
 };
 
-void print_usage(std::FILE* f) {
-    std::fprintf(f,
-                 "usage: pf_headless [options]\n"
-                 "  --scene PATH|NAME   scene file, or a name in the scenes directory (default dam_break_small)\n"
-                 "  --frames N          frames to simulate (default: the scene's \"frames\")\n"
-                 "  --out DIR           where frame_NNNN.png go (default ./out)\n"
-                 "  --size WxH          image size (default 960x540)\n"
-                 "  --every K           write an image every K frames, 0 = none (default 4)\n"
-                 "  --render ssf|particles  pflip's screen-space fluid (default) or its debug particles\n"
-                 "  --filter bilateral|narrow|none  SSF depth filter (default bilateral)\n"
-                 "  --path compute|raster  SSF passes as compute or fragment shaders (default compute)\n"
-                 "  --depth standard|zero_to_one|reversed_z  depth convention of the camera (default\n"
-                 "                      standard; the others use glClipControl, GL 4.5)\n"
-                 "  --builtin-sky       let pflip reflect its built-in sky instead of the world's cube map\n"
-                 "  --hide-obstacles    leave the scene's obstacles out of the images (still simulated;\n"
-                 "                      for comparisons)\n"
-                 "  --radius M          particle radius in metres (default: half a cell)\n"
-                 "  --color-by speed|vx|vy|vz|height|uniform  particle colouring (with --render particles)\n"
-                 "  --video FILE.mp4    encode the PNGs to H.264 with ffmpeg (needs ffmpeg on PATH)\n"
-                 "  --fps F             video frame rate (default: real time, 1 / (frame_dt * every))\n"
-                 "  --export-ply DIR    write every frame's particles to DIR/frame_NNNN.ply (x y z vx vy vz;\n"
-                 "                      frame 0 is the initial fill)\n"
-                 "  --ply-format binary|ascii  PLY encoding (default binary, little-endian)\n"
-                 "%s"
-                 "  --verbose           pflip's info messages and EGL details\n"
-                 "  --debug-context     request a debug GL context\n"
-                 "  -h, --help          this text\n"
-                 "environment: PF_EGL_PLATFORM=device|surfaceless, PF_EGL_DEVICE=N, PF_SCENES_DIR=DIR\n"
-                 "scenes directory: %s\n",
-                 pfs::ParamOverrides::usage(), pfs::scenes_dir().c_str());
-}
-
-Options parse_args(int argc, char** argv) {
-    Options o;
-    for (pfs::ArgCursor args(argc, argv); args.next();) {
-        const std::string& a = args.option();
-        if (a == "-h" || a == "--help") {
-            print_usage(stdout);
-            std::exit(0);
-        } else if (o.overrides.parse(args)) {
-            // an accuracy knob, applied over the scene's parameters
-        } else if (a == "--scene") {
-            o.scene = args.value();
-        } else if (a == "--frames") {
-            o.frames = pfs::parse_u32(args.value(), "--frames", 0, 10000000);
-            o.frames_set = true;
-        } else if (a == "--out") {
-            o.out = args.value();
-        } else if (a == "--size") {
-            pfs::parse_size(args.value(), "--size", o.width, o.height);
-        } else if (a == "--every") {
-            o.every = pfs::parse_u32(args.value(), "--every", 0, 1000000);
-        } else if (a == "--render") {
-            const std::string v = args.value();
-            if (v == "ssf") o.ssf = true;
-            else if (v == "particles") o.ssf = false;
-            else throw Error("--render: expected ssf or particles, got '" + v + "'");
-        } else if (a == "--filter") {
-            const std::string v = args.value();
-            if (v == "bilateral") o.filter = PF_SSF_FILTER_BILATERAL;
-            else if (v == "narrow" || v == "narrow_range") o.filter = PF_SSF_FILTER_NARROW_RANGE;
-            else if (v == "none") o.filter = PF_SSF_FILTER_NONE;
-            else throw Error("--filter: expected bilateral, narrow or none, got '" + v + "'");
-            o.filter_set = true;
-        } else if (a == "--path") {
-            const std::string v = args.value();
-            if (v == "compute") o.path = PF_SSF_PATH_COMPUTE;
-            else if (v == "raster") o.path = PF_SSF_PATH_RASTER;
-            else throw Error("--path: expected compute or raster, got '" + v + "'");
-        } else if (a == "--depth") {
-            o.depth = pfs::parse_depth_convention(args.value(), "--depth");
-        } else if (a == "--builtin-sky") {
-            o.builtin_sky = true;
-        } else if (a == "--hide-obstacles") {
-            o.draw_obstacles = false;
-        } else if (a == "--radius") {
-            o.radius = pfs::parse_float(args.value(), "--radius", 1e-5f, 100.0f);
-        } else if (a == "--color-by") {
-            const std::string v = args.value();
-            static const char* names[] = {"speed", "vx", "vy", "vz", "height", "uniform"};
-            bool found = false;
-            for (int k = 0; k < 6 && !found; ++k)
-                if (v == names[k]) {
-                    o.color_by = pf_particle_color(k);
-                    found = true;
-                }
-            if (!found) throw Error("--color-by: expected speed, vx, vy, vz, height or uniform, got '" + v + "'");
-            o.color_by_set = true;
-        } else if (a == "--video") {
-            o.video = args.value();
-        } else if (a == "--fps") {
-            o.fps = pfs::parse_float(args.value(), "--fps", 0.1f, 1000.0f);
-        } else if (a == "--export-ply") {
-            o.export_ply = args.value();
-        } else if (a == "--ply-format") {
-            const std::string v = args.value();
-            if (!pfs::parse_ply_format(v, o.ply_format))
-                throw Error("--ply-format: expected binary or ascii, got '" + v + "'");
-        } else if (a == "--verbose") {
-            o.verbose = true;
-        } else if (a == "--debug-context") {
-            o.debug = true;
-        } else {
-            throw Error("unknown argument '" + a + "' (see --help)");
-        }
-    }
-    if (!o.video.empty() && o.every == 0) throw Error("--video needs images: --every must be > 0");
-    return o;
+void add_options(CLI::App& app, Options& o) {
+    pfs::init_app(app);
+    app.add_option("--scene", o.scene, "scene file, or a name in the scenes directory")
+        ->type_name("PATH|NAME")
+        ->capture_default_str();
+    app.add_option("--frames", o.frames, "frames to simulate (default: the scene's \"frames\")")
+        ->check(pfs::Range(0u, 10000000u));
+    app.add_option("--out", o.out, "where frame_NNNN.png go")->type_name("DIR")->capture_default_str();
+    app.add_option("--size", o.size, "image size")
+        ->check(pfs::SizeValidator())
+        ->type_name("WxH")
+        ->capture_default_str();
+    app.add_option("--every", o.every, "write an image every K frames, 0 = none")
+        ->check(pfs::Range(0u, 1000000u))
+        ->capture_default_str();
+    app.add_option("--render", o.ssf, "pflip's screen-space fluid or its debug particles")
+        ->transform(pfs::NameMap(pfs::render_choices(), "renderer"))
+        ->type_name("NAME")
+        ->default_str("ssf");
+    app.add_option("--filter", o.filter, "SSF depth filter")
+        ->transform(pfs::NameMap(pfs::Choices<pf_ssf_filter>{{"bilateral", PF_SSF_FILTER_BILATERAL},
+                                                             {"narrow", PF_SSF_FILTER_NARROW_RANGE},
+                                                             {"narrow_range", PF_SSF_FILTER_NARROW_RANGE},
+                                                             {"none", PF_SSF_FILTER_NONE}},
+                                 "filter"))
+        ->type_name("NAME")
+        ->default_str("bilateral");
+    app.add_option("--path", o.path, "SSF passes as compute or fragment shaders")
+        ->transform(pfs::NameMap(
+            pfs::Choices<pf_ssf_path>{{"compute", PF_SSF_PATH_COMPUTE}, {"raster", PF_SSF_PATH_RASTER}}, "path"))
+        ->type_name("NAME")
+        ->default_str("compute");
+    app.add_option("--depth", o.depth, "depth convention of the camera (all but standard use glClipControl, GL 4.5)")
+        ->transform(pfs::NameMap(pfs::depth_choices(), "depth convention"))
+        ->type_name("NAME")
+        ->default_str("standard");
+    app.add_flag("--builtin-sky", o.builtin_sky, "let pflip reflect its built-in sky instead of the world's cube map");
+    app.add_flag_callback("--hide-obstacles", [&o] { o.draw_obstacles = false; },
+                          "leave the scene's obstacles out of the images (still simulated; for comparisons)");
+    app.add_option("--radius", o.radius, "particle radius in metres (default: half a cell)")
+        ->check(pfs::Range(1e-5f, 100.0f));
+    app.add_option("--color-by", o.color_by, "particle colouring (with --render particles)")
+        ->transform(pfs::NameMap(pfs::Choices<pf_particle_color>{{"speed", PF_PARTICLE_COLOR_SPEED},
+                                                                 {"vx", PF_PARTICLE_COLOR_VELOCITY_X},
+                                                                 {"vy", PF_PARTICLE_COLOR_VELOCITY_Y},
+                                                                 {"vz", PF_PARTICLE_COLOR_VELOCITY_Z},
+                                                                 {"height", PF_PARTICLE_COLOR_HEIGHT},
+                                                                 {"uniform", PF_PARTICLE_COLOR_UNIFORM}},
+                                 "colouring"))
+        ->type_name("NAME");
+    app.add_option("--video", o.video, "encode the PNGs to H.264 with ffmpeg (needs ffmpeg on PATH and --every > 0)")
+        ->type_name("FILE.mp4");
+    app.add_option("--fps", o.fps, "video frame rate (default: real time, 1 / (frame_dt * every))")
+        ->check(pfs::Range(0.1f, 1000.0f));
+    app.add_option("--export-ply", o.export_ply,
+                   "write every frame's particles to DIR/frame_NNNN.ply (x y z vx vy vz; frame 0: the initial fill)")
+        ->type_name("DIR");
+    app.add_option("--ply-format", o.ply_format, "PLY encoding (binary is little-endian)")
+        ->transform(pfs::NameMap(pfs::Choices<pfs::PlyFormat>{{"binary", pfs::PlyFormat::binary_little_endian},
+                                                              {"ascii", pfs::PlyFormat::ascii}},
+                                 "PLY format"))
+        ->type_name("NAME")
+        ->default_str("binary");
+    app.add_option("--export-vdb", o.export_vdb,
+                   "write every frame to DIR as OpenVDB: frame_NNNN.vdb (grids surface, density, velocity) and "
+                   "frame_NNNN_points.vdb (point data P, v); frame 0: the initial fill")
+        ->type_name("DIR");
+    app.add_option("--vdb-content", o.vdb_content, "which OpenVDB files --export-vdb writes")
+        ->transform(pfs::NameMap(pfs::Choices<VdbContent>{{"both", VdbContent::both},
+                                                          {"volume", VdbContent::volume},
+                                                          {"points", VdbContent::points}},
+                                 "VDB content"))
+        ->type_name("NAME")
+        ->default_str("both");
+    pfs::add_param_overrides(app, o.overrides);
+    app.add_flag("--verbose", o.verbose, "pflip's info messages and EGL details");
+    app.add_flag("--debug-context", o.debug, "request a debug GL context");
+    app.footer("environment: PF_EGL_PLATFORM=device|surfaceless, PF_EGL_DEVICE=N, PF_SCENES_DIR=DIR\n"
+               "scenes directory: " + pfs::scenes_dir());
+    app.callback([&app, &o] {
+        o.frames_set = app.count("--frames") > 0;
+        o.color_by_set = app.count("--color-by") > 0;
+        if (!o.video.empty() && o.every == 0)
+            throw CLI::ValidationError("--video", "needs images: --every must be > 0");
+    });
 }
 
 // ---- video ----------------------------------------------------------------------------------
@@ -226,25 +209,74 @@ bool encode_video(const std::string& dir, uint32_t count, float fps, const std::
     return true;
 }
 
-// ---- PLY export ------------------------------------------------------------------------------
+// ---- particle export (PLY, OpenVDB) ---------------------------------------------------------
 
-/// Writes the particles of sim to dir/frame_NNNN.ply (reads them back from the GPU: a stall,
-/// acceptable for an export).
-void export_ply_frame(pf_sim* sim, const std::string& dir, uint32_t frame, pfs::PlyFormat format,
-                      const std::string& scene_name, std::vector<float>& xyz, std::vector<float>& vel) {
-    pf_stats st{};
-    pfs::check(pf_get_stats(sim, &st), "pf_get_stats");
-    xyz.resize(3 * size_t(st.particle_count));
-    vel.resize(3 * size_t(st.particle_count));
-    if (st.particle_count > 0)
-        pfs::check(pf_read_particles(sim, 0, st.particle_count, xyz.data(), vel.data()), "pf_read_particles");
-    char name[64];
-    std::snprintf(name, sizeof name, "frame_%04u.ply", frame);
-    const std::string path = (std::filesystem::path(dir) / name).string();
-    const std::string comment = "pflip " + pfs::pf_version_string() + " scene " + scene_name + " frame " +
-                                std::to_string(frame) + ", metres and m/s";
-    if (!pfs::write_ply_particles(path, xyz.data(), vel.data(), st.particle_count, format, comment))
-        throw Error("writing " + path + " failed: " + std::strerror(errno));
+/// Every frame's particles, read back once for all the exports asked for (a stall, acceptable
+/// for an export), and the wall time each part took.
+struct ParticleExport {
+    std::string ply_dir, vdb_dir;
+    pfs::PlyFormat ply_format = pfs::PlyFormat::binary_little_endian;
+    VdbContent vdb_content = VdbContent::both;
+    std::string scene_name;
+    float cell_size = 0;
+    uint32_t particles_per_cell = 8;
+    std::vector<float> xyz, vel;
+    double readback_ms = 0, ply_ms = 0, vdb_ms = 0;
+    uint64_t particles_written = 0;
+    uint32_t frames_written = 0;
+
+    bool any() const { return !ply_dir.empty() || !vdb_dir.empty(); }
+
+    void write(pf_sim* sim, uint32_t frame) {
+        if (!any()) return;
+        const double t0 = pfs::now_ms();
+        pf_stats st{};
+        pfs::check(pf_get_stats(sim, &st), "pf_get_stats");
+        const uint32_t n = st.particle_count;
+        xyz.resize(3 * size_t(n));
+        vel.resize(3 * size_t(n));
+        if (n > 0) pfs::check(pf_read_particles(sim, 0, n, xyz.data(), vel.data()), "pf_read_particles");
+        const double t1 = pfs::now_ms();
+        readback_ms += t1 - t0;
+        char stem[32];
+        std::snprintf(stem, sizeof stem, "frame_%04u", frame);
+        if (!ply_dir.empty()) {
+            const std::string path = (std::filesystem::path(ply_dir) / (std::string(stem) + ".ply")).string();
+            const std::string comment = "pflip " + pfs::pf_version_string() + " scene " + scene_name + " frame " +
+                                        std::to_string(frame) + ", metres and m/s";
+            if (!pfs::write_ply_particles(path, xyz.data(), vel.data(), n, ply_format, comment))
+                throw Error("writing " + path + " failed: " + std::strerror(errno));
+        }
+        const double t2 = pfs::now_ms();
+        ply_ms += t2 - t1;
+        if (!vdb_dir.empty()) {
+            std::string error;
+            const std::filesystem::path dir(vdb_dir);
+            if (vdb_content != VdbContent::points) {
+                pfs::VdbVolumeParams p;
+                p.cell_size = cell_size;
+                p.particles_per_cell = float(particles_per_cell);
+                const std::string path = (dir / (std::string(stem) + ".vdb")).string();
+                if (!pfs::write_vdb_volume(path, xyz.data(), vel.data(), n, p, &error))
+                    throw Error("writing " + path + " failed: " + error);
+            }
+            if (vdb_content != VdbContent::volume) {
+                const std::string path = (dir / (std::string(stem) + "_points.vdb")).string();
+                if (!pfs::write_vdb_points(path, xyz.data(), vel.data(), n, cell_size, &error))
+                    throw Error("writing " + path + " failed: " + error);
+            }
+        }
+        vdb_ms += pfs::now_ms() - t2;
+        particles_written += n;
+        ++frames_written;
+    }
+};
+
+/// Creates an export directory or says why it cannot.
+void make_export_dir(const std::string& dir, const char* what) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw Error(std::string("cannot create ") + what + " directory '" + dir + "': " + ec.message());
 }
 
 // ---- the simulation handle ------------------------------------------------------------------
@@ -269,7 +301,7 @@ void print_obstacle_pixels(const std::vector<pf_obstacle>& obstacles, const pfs:
         glm::vec2 px(0.0f);
         float depth = 0.0f;
         const glm::vec3 centre(o.position[0], o.position[1], o.position[2]);
-        if (camera.window_position(centre, int(opt.width), int(opt.height), px, depth))
+        if (camera.window_position(centre, int(opt.size.width), int(opt.size.height), px, depth))
             std::printf("  obstacle %zu (%s, %s) centre at pixel %.1f,%.1f\n", i, obstacle_shape_name(o.shape),
                         drawn ? "drawn" : "hidden", double(px.x), double(px.y));
         else
@@ -288,7 +320,11 @@ const char* filter_name(pf_ssf_filter f) {
 
 int run(int argc, char** argv) {
     const double t_start = pfs::now_ms();
-    const Options opt = parse_args(argc, argv);
+    Options opt;
+    CLI::App app{"pf_headless: the pflip demo without a window (EGL): a scene simulated, its frames rendered to PNG",
+                 "pf_headless"};
+    add_options(app, opt);
+    CLI11_PARSE(app, argc, argv);
 
     // Scene first: a typo in the file should not cost a context creation.
     const std::string scene_path = pfs::resolve_scene_path(opt.scene);
@@ -356,7 +392,7 @@ int run(int argc, char** argv) {
         std::filesystem::create_directories(opt.out, ec);
         if (ec) throw Error("cannot create output directory '" + opt.out + "': " + ec.message());
         world = std::make_unique<pfs::World>(scene, pfs::get_proc);
-        world->resize(int(opt.width), int(opt.height));
+        world->resize(int(opt.size.width), int(opt.size.height));
         if (opt.depth != PF_DEPTH_STANDARD && !world->has_clip_control())
             throw Error(std::string("--depth ") + pfs::depth_convention_name(opt.depth) +
                         ": this context has no glClipControl (GL 4.5 / ARB_clip_control)");
@@ -376,12 +412,13 @@ int run(int argc, char** argv) {
         if (opt.ssf)
             std::printf("  images: %ux%u every %u frames -> %s/frame_NNNN.png; pf_render_ssf, %s filter, %s path, "
                         "%s depth, %s sky\n",
-                        opt.width, opt.height, opt.every, opt.out.c_str(), filter_name(opt.filter),
+                        opt.size.width, opt.size.height, opt.every, opt.out.c_str(), filter_name(opt.filter),
                         opt.path == PF_SSF_PATH_RASTER ? "raster" : "compute", pfs::depth_convention_name(opt.depth),
                         opt.builtin_sky ? "built-in" : "world cube-map");
         else
             std::printf("  images: %ux%u every %u frames -> %s/frame_NNNN.png; pf_render_particles, %s depth\n",
-                        opt.width, opt.height, opt.every, opt.out.c_str(), pfs::depth_convention_name(opt.depth));
+                        opt.size.width, opt.size.height, opt.every, opt.out.c_str(),
+                        pfs::depth_convention_name(opt.depth));
         print_obstacle_pixels(scene.obstacles, camera, opt, opt.draw_obstacles);
     }
 
@@ -435,7 +472,7 @@ int run(int argc, char** argv) {
         pfs::check(pfs::draw_frame(*world, sim.get(), camera, look), look.ssf ? "pf_render_ssf" : "pf_render_particles");
         glBindFramebuffer(GL_READ_FRAMEBUFFER, world->framebuffer());
         glReadBuffer(GL_COLOR_ATTACHMENT0);
-        pfs::read_rgba(int(opt.width), int(opt.height), pixels);
+        pfs::read_rgba(int(opt.size.width), int(opt.size.height), pixels);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         pfs::check_gl("rendering");
         const double r1 = pfs::now_ms();
@@ -444,21 +481,34 @@ int run(int argc, char** argv) {
         char name[64];
         std::snprintf(name, sizeof name, "frame_%04u.png", image_index++);
         const std::string path = (std::filesystem::path(opt.out) / name).string();
-        if (!pfs::write_png_rgba(path, opt.width, opt.height, pixels.data(), true))
+        if (!pfs::write_png_rgba(path, opt.size.width, opt.size.height, pixels.data(), true))
             throw Error("writing " + path + " failed: " + std::strerror(errno));
         render_total_ms += r1 - r0;
         png_total_ms += pfs::now_ms() - r1;
     };
 
-    std::vector<float> ply_xyz, ply_vel;
+    ParticleExport exporter;
+    exporter.ply_dir = opt.export_ply;
+    exporter.ply_format = opt.ply_format;
+    exporter.vdb_dir = opt.export_vdb;
+    exporter.vdb_content = opt.vdb_content;
+    exporter.scene_name = scene.name;
+    exporter.cell_size = scene.cell_size;
+    exporter.particles_per_cell = scene.particles_per_cell ? scene.particles_per_cell
+                                                           : pf_default_sim_desc().fill_particles_per_cell;
     if (!opt.export_ply.empty()) {
-        std::error_code ec;
-        std::filesystem::create_directories(opt.export_ply, ec);
-        if (ec) throw Error("cannot create PLY directory '" + opt.export_ply + "': " + ec.message());
+        make_export_dir(opt.export_ply, "PLY");
         std::printf("  particles: every frame -> %s/frame_NNNN.ply (%s)\n", opt.export_ply.c_str(),
                     opt.ply_format == pfs::PlyFormat::ascii ? "ascii" : "binary little-endian");
-        export_ply_frame(sim.get(), opt.export_ply, 0, opt.ply_format, scene.name, ply_xyz, ply_vel);
     }
+    if (!opt.export_vdb.empty()) {
+        make_export_dir(opt.export_vdb, "VDB");
+        std::printf("  OpenVDB: every frame -> %s/frame_NNNN%s\n", opt.export_vdb.c_str(),
+                    opt.vdb_content == VdbContent::both     ? ".vdb and frame_NNNN_points.vdb"
+                    : opt.vdb_content == VdbContent::volume ? ".vdb"
+                                                            : "_points.vdb");
+    }
+    exporter.write(sim.get(), 0);
 
     if (world) write_image();
     for (uint32_t f = 1; f <= frames; ++f) {
@@ -499,8 +549,7 @@ int run(int argc, char** argv) {
         std::fflush(stdout);
 
         if (world && (f % opt.every == 0 || f == frames)) write_image();
-        if (!opt.export_ply.empty())
-            export_ply_frame(sim.get(), opt.export_ply, f, opt.ply_format, scene.name, ply_xyz, ply_vel);
+        exporter.write(sim.get(), f);
     }
 
     // ---- report ----
@@ -601,6 +650,14 @@ int run(int argc, char** argv) {
     std::printf("total wall time %.2f s: simulation %.2f s, rendering %.2f s, PNG encoding %.2f s, %u images in %s\n",
                 total_s, sim_total_ms / 1000.0, render_total_ms / 1000.0, png_total_ms / 1000.0, image_index,
                 world ? opt.out.c_str() : "(none)");
+    if (exporter.any()) {
+        const double write_s = (exporter.ply_ms + exporter.vdb_ms) / 1000.0;
+        std::printf("export: %u frames, %llu particles in all: read back %.2f s, PLY %.2f s, OpenVDB %.2f s "
+                    "(%.3g particles/s written)\n",
+                    exporter.frames_written, static_cast<unsigned long long>(exporter.particles_written),
+                    exporter.readback_ms / 1000.0, exporter.ply_ms / 1000.0, exporter.vdb_ms / 1000.0,
+                    write_s > 0 ? double(exporter.particles_written) / write_s : 0.0);
+    }
 
     bool video_failed = false;
     if (!opt.video.empty() && image_index > 0) {

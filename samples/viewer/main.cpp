@@ -39,6 +39,7 @@
 #include <pf/pf.h>
 
 #include "camera.h"
+#include "cli.h"
 #include "gl_util.h"
 #include "image_write.h"
 #include "floating.h"
@@ -70,7 +71,7 @@ using pfs::Error;
 
 struct Options {
     std::string scene = "dam_break_small";
-    uint32_t width = 1280, height = 720;
+    pfs::Size size{1280, 720};
     bool ssf = true;
     pf_depth_convention depth = PF_DEPTH_STANDARD;
     std::string screenshot;
@@ -78,7 +79,7 @@ struct Options {
     bool paused = false;
     bool vsync = true;
     bool verbose = false;
-    pfs::ParamOverrides overrides; // --solver, --tolerance, --transfer, --advection
+    pfs::ParamOverrides overrides; // --preset, --solver, --tolerance, --transfer, --advection, --p2g, ...
     // --drag: a synthetic left drag (scripted pushes, tests)
     bool drag = false;
     float drag_from[2] = {0, 0}, drag_to[2] = {0, 0};
@@ -89,7 +90,7 @@ struct Options {
 };
 
 /// A scripted drag's text: `count` values (named by `shape`, e.g. "X0,Y0,X1,Y1"), then
-/// optionally the frames F0,F1 it spans (default 5..15). Throws naming option.
+/// optionally the frames F0,F1 it spans (default 5..15). Throws CLI::ValidationError naming option.
 void parse_scripted_drag(const std::string& v, const char* option, const char* shape, int count, float* values,
                          uint32_t& first, uint32_t& last) {
     float f[8] = {};
@@ -110,99 +111,81 @@ void parse_scripted_drag(const std::string& v, const char* option, const char* s
         f1 = f[count + 1];
     }
     if ((n != count && n != count + 2) || f0 < 1 || f1 <= f0)
-        throw Error(std::string(option) + ": expected " + shape + " or " + shape + ",F0,F1 (F0 >= 1, F1 > F0), got '" +
-                    v + "'");
+        throw CLI::ValidationError(option, std::string("expected ") + shape + " or " + shape +
+                                               ",F0,F1 (F0 >= 1, F1 > F0), got '" + v + "'");
     std::copy(f, f + count, values);
     first = uint32_t(f0);
     last = uint32_t(f1);
 }
 
-void print_usage(std::FILE* f) {
-    std::fprintf(f,
-                 "usage: pf_viewer [options]\n"
-                 "  --scene PATH|NAME   scene file, or a name in the scenes directory (default dam_break_small)\n"
-                 "  --size WxH          window size (default 1280x720)\n"
-                 "  --render ssf|particles  start with pflip's screen-space fluid (default) or its particles\n"
-                 "  --depth standard|zero_to_one|reversed_z  camera depth convention (default standard)\n"
-                 "  --paused            start paused\n"
-                 "  --no-vsync          do not wait for the display between frames\n"
-                 "  --screenshot PATH   after --frames frames save the window to PATH (.png, or .jpg) and exit\n"
-                 "  --frames N          frames to run before the screenshot, or before exiting (default 60\n"
-                 "                      with --screenshot, otherwise until the window closes)\n"
-                 "  --drag X0,Y0,X1,Y1[,F0,F1]  scripted left drag (a push) from window pixel X0,Y0 to X1,Y1\n"
-                 "                      over frames F0..F1 (default 5..15)\n"
-                 "  --drag-obstacle I,DX,DY[,F0,F1]  scripted left drag that grabs scene obstacle I at its\n"
-                 "                      centre (seen from the camera at frame F0) and moves the cursor by DX,DY\n"
-                 "                      window pixels over frames F0..F1; an error if the press grabs no\n"
-                 "                      obstacle or another one\n"
-                 "%s"
-                 "  --verbose           pflip's info messages\n"
-                 "  -h, --help          this text\n"
-                 "mouse: right drag / Alt+left drag orbit, middle drag / Shift+right drag pan, wheel zoom,\n"
-                 "       left drag on an obstacle moves it, elsewhere pushes the liquid.\n"
-                 "keys: Space pause, S step, R reset, P SSF/particles, Esc quit\n"
-                 "scenes directory: %s (PF_SCENES_DIR)\n",
-                 pfs::ParamOverrides::usage(), pfs::scenes_dir().c_str());
-}
-
-Options parse_args(int argc, char** argv) {
-    Options o;
-    bool frames_set = false;
-    for (pfs::ArgCursor args(argc, argv); args.next();) {
-        const std::string& a = args.option();
-        if (a == "-h" || a == "--help") {
-            print_usage(stdout);
-            std::exit(0);
-        } else if (o.overrides.parse(args)) {
-            // an accuracy knob, applied over every scene loaded
-        } else if (a == "--scene") {
-            o.scene = args.value();
-        } else if (a == "--size") {
-            pfs::parse_size(args.value(), "--size", o.width, o.height);
-        } else if (a == "--render") {
-            const std::string v = args.value();
-            if (v == "ssf") o.ssf = true;
-            else if (v == "particles") o.ssf = false;
-            else throw Error("--render: expected ssf or particles, got '" + v + "'");
-        } else if (a == "--depth") {
-            o.depth = pfs::parse_depth_convention(args.value(), "--depth");
-        } else if (a == "--paused") {
-            o.paused = true;
-        } else if (a == "--no-vsync") {
+void add_options(CLI::App& app, Options& o) {
+    pfs::init_app(app);
+    app.add_option("--scene", o.scene, "scene file, or a name in the scenes directory")
+        ->type_name("PATH|NAME")
+        ->capture_default_str();
+    app.add_option("--size", o.size, "window size")
+        ->check(pfs::SizeValidator())
+        ->type_name("WxH")
+        ->capture_default_str();
+    app.add_option("--render", o.ssf, "start with pflip's screen-space fluid or its particles")
+        ->transform(pfs::NameMap(pfs::render_choices(), "renderer"))
+        ->type_name("NAME")
+        ->default_str("ssf");
+    app.add_option("--depth", o.depth, "camera depth convention")
+        ->transform(pfs::NameMap(pfs::depth_choices(), "depth convention"))
+        ->type_name("NAME")
+        ->default_str("standard");
+    app.add_flag("--paused", o.paused, "start paused");
+    app.add_flag_callback("--no-vsync", [&o] { o.vsync = false; }, "do not wait for the display between frames");
+    app.add_option("--screenshot", o.screenshot,
+                   "after --frames frames save the window to PATH (.png, or .jpg) and exit")
+        ->type_name("PATH");
+    app.add_option("--frames", o.frames,
+                   "frames to run before the screenshot, or before exiting (default 60 with --screenshot, otherwise "
+                   "until the window closes)")
+        ->check(pfs::Range(1u, 100000000u));
+    app.add_option_function<std::string>(
+           "--drag",
+           [&o](const std::string& v) {
+               float f[4];
+               parse_scripted_drag(v, "--drag", "X0,Y0,X1,Y1", 4, f, o.drag_first, o.drag_last);
+               o.drag = true;
+               o.drag_from[0] = f[0];
+               o.drag_from[1] = f[1];
+               o.drag_to[0] = f[2];
+               o.drag_to[1] = f[3];
+           },
+           "scripted left drag (a push) from window pixel X0,Y0 to X1,Y1 over frames F0..F1 (default 5..15)")
+        ->type_name("X0,Y0,X1,Y1[,F0,F1]");
+    app.add_option_function<std::string>(
+           "--drag-obstacle",
+           [&o](const std::string& v) {
+               float f[3];
+               parse_scripted_drag(v, "--drag-obstacle", "I,DX,DY", 3, f, o.drag_first, o.drag_last);
+               if (f[0] < 0 || f[0] != std::floor(f[0]) || f[0] >= float(PF_MAX_OBSTACLES))
+                   throw CLI::ValidationError("--drag-obstacle", "I must be an obstacle index, got '" + v + "'");
+               o.drag_obstacle = int(f[0]);
+               o.drag_obstacle_by[0] = f[1];
+               o.drag_obstacle_by[1] = f[2];
+           },
+           "scripted left drag that grabs scene obstacle I at its centre (seen from the camera at frame F0) and "
+           "moves the cursor by DX,DY window pixels over frames F0..F1; an error if the press grabs no obstacle "
+           "or another one")
+        ->type_name("I,DX,DY[,F0,F1]");
+    pfs::add_param_overrides(app, o.overrides);
+    app.add_flag("--verbose", o.verbose, "pflip's info messages");
+    app.footer("mouse: right drag / Alt+left drag orbit, middle drag / Shift+right drag pan, wheel zoom,\n"
+               "       left drag on an obstacle moves it, elsewhere pushes the liquid.\n"
+               "keys: Space pause, S step, R reset, P SSF/particles, Esc quit\n"
+               "scenes directory: " + pfs::scenes_dir() + " (PF_SCENES_DIR)");
+    app.callback([&app, &o] {
+        if (o.drag && o.drag_obstacle >= 0)
+            throw CLI::ValidationError("--drag and --drag-obstacle both script the left button: give one");
+        if (!o.screenshot.empty()) {
+            if (app.count("--frames") == 0) o.frames = 60;
             o.vsync = false;
-        } else if (a == "--screenshot") {
-            o.screenshot = args.value();
-        } else if (a == "--frames") {
-            o.frames = pfs::parse_u32(args.value(), "--frames", 1, 100000000);
-            frames_set = true;
-        } else if (a == "--drag") {
-            float f[4];
-            parse_scripted_drag(args.value(), "--drag", "X0,Y0,X1,Y1", 4, f, o.drag_first, o.drag_last);
-            o.drag = true;
-            o.drag_from[0] = f[0];
-            o.drag_from[1] = f[1];
-            o.drag_to[0] = f[2];
-            o.drag_to[1] = f[3];
-        } else if (a == "--drag-obstacle") {
-            float f[3];
-            parse_scripted_drag(args.value(), "--drag-obstacle", "I,DX,DY", 3, f, o.drag_first, o.drag_last);
-            if (f[0] < 0 || f[0] != std::floor(f[0]) || f[0] >= float(PF_MAX_OBSTACLES))
-                throw Error("--drag-obstacle: I must be an obstacle index, got '" + args.value() + "'");
-            o.drag_obstacle = int(f[0]);
-            o.drag_obstacle_by[0] = f[1];
-            o.drag_obstacle_by[1] = f[2];
-        } else if (a == "--verbose") {
-            o.verbose = true;
-        } else {
-            throw Error("unknown argument '" + a + "' (see --help)");
         }
-    }
-    if (o.drag && o.drag_obstacle >= 0) throw Error("--drag and --drag-obstacle both script the left button: give one");
-    if (!o.screenshot.empty()) {
-        if (!frames_set) o.frames = 60;
-        o.vsync = false;
-    }
-    return o;
+    });
 }
 
 // ---- helpers --------------------------------------------------------------------------------
@@ -1300,7 +1283,10 @@ void Viewer::ui_render_pass_table() {
 void glfw_error(int code, const char* message) { std::fprintf(stderr, "pf_viewer: GLFW error %d: %s\n", code, message); }
 
 int run(int argc, char** argv) {
-    const Options opt = parse_args(argc, argv);
+    Options opt;
+    CLI::App app{"pf_viewer: the interactive pflip viewer (GLFW + Dear ImGui)", "pf_viewer"};
+    add_options(app, opt);
+    CLI11_PARSE(app, argc, argv); // before any window or GL context: a refused option costs none
     pfs::resolve_scene_path(opt.scene); // fail early on a typo
 
     glfwSetErrorCallback(glfw_error);
@@ -1314,7 +1300,7 @@ int run(int argc, char** argv) {
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_DEPTH_BITS, 0);   // the world has its own depth texture
     glfwWindowHint(GLFW_SAMPLES, 0);
-    GLFWwindow* window = glfwCreateWindow(int(opt.width), int(opt.height), "pflip viewer", nullptr, nullptr);
+    GLFWwindow* window = glfwCreateWindow(int(opt.size.width), int(opt.size.height), "pflip viewer", nullptr, nullptr);
     if (!window) throw Error("could not create a GL 4.3 core window");
     glfwMakeContextCurrent(window);
     glfwSwapInterval(opt.vsync ? 1 : 0);
