@@ -1,23 +1,19 @@
 // The C boundary: checks every argument, then forwards to pf::Simulation. Nothing here
-// throws across the boundary; host allocation failures become PF_ERROR_OUT_OF_MEMORY.
+// throws across the boundary; host allocation failures become PF_ERROR_OUT_OF_MEMORY. Each
+// effect's entry points live in its folder (src/sim/effects/<name>/<name>_api.cpp).
 #include <cmath>
 #include <memory>
 #include <new>
 #include <string>
 
 #include "api/abi.h"
+#include "api/entry.h"
 #include "api/handle.h"
 #include "api/validate.h"
 #include "pf/pf.h"
 
 namespace {
 using pf::guarded;
-
-// The entry a live handle names, as `var`; otherwise the call returns PF_ERROR_INVALID_ARGUMENT
-// after logging through the global logger (a dead handle has no simulation, hence no logger).
-#define PF_ENTRY(var, handle, fn)                     \
-    pf::SimEntry* const var = pf::entry(handle);      \
-    if (!var) return pf::invalid_handle(handle, fn)
 }  // namespace
 
 extern "C" {
@@ -224,205 +220,6 @@ pf_result pf_get_features(const pf_sim* handle, uint32_t* out) {
     return PF_OK;
 }
 
-namespace {
-pf_force_field full_default_force_field() {
-    pf_force_field f{};
-    f.struct_size = uint32_t(sizeof(pf_force_field));
-    f.type = PF_FORCE_FIELD_DIRECTIONAL;
-    f.radius = 1.0f;
-    return f;
-}
-}  // namespace
-
-pf_result pf_init_force_field(pf_force_field* out, uint32_t struct_size) {
-    return pf::init_struct(out, struct_size, full_default_force_field(), "pf_init_force_field");
-}
-
-namespace {
-pf_obstacle full_default_obstacle() {
-    pf_obstacle o{};
-    o.struct_size = uint32_t(sizeof(pf_obstacle));
-    o.shape = PF_OBSTACLE_BOX;
-    o.rotation[3] = 1.0f;
-    o.half_extents[0] = o.half_extents[1] = o.half_extents[2] = 0.1f;
-    o.radius = 0.1f;
-    o.sdf_scale = 1.0f;
-    return o;
-}
-}  // namespace
-
-pf_result pf_init_obstacle(pf_obstacle* out, uint32_t struct_size) {
-    return pf::init_struct(out, struct_size, full_default_obstacle(), "pf_init_obstacle");
-}
-
-pf_result pf_add_force_field(pf_sim* handle, const pf_force_field* field, uint32_t* out_id) {
-    PF_ENTRY(sim, handle, "pf_add_force_field");
-    pf::Simulation& s = *sim->impl;
-    if (!field) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_force_field: field must not be NULL");
-    pf_force_field in{};  // the caller's struct_size bytes over the defaults (ABI rules)
-    if (pf_result r = pf::read_input(field, full_default_force_field(), in, s.log(), "pf_add_force_field"); r != PF_OK) return r;
-    if (pf_result r = pf::validate_force_field(in, s.log(), "pf_add_force_field"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_add_force_field", [&] { return s.add_force_field(in, out_id); });
-}
-
-pf_result pf_set_force_field(pf_sim* handle, uint32_t id, const pf_force_field* field) {
-    PF_ENTRY(sim, handle, "pf_set_force_field");
-    pf::Simulation& s = *sim->impl;
-    if (!field) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_force_field: field must not be NULL");
-    pf_force_field in{};  // the caller's struct_size bytes over the defaults (ABI rules)
-    if (pf_result r = pf::read_input(field, full_default_force_field(), in, s.log(), "pf_set_force_field"); r != PF_OK) return r;
-    if (pf_result r = pf::validate_force_field(in, s.log(), "pf_set_force_field"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_set_force_field", [&] { return s.set_force_field(id, in); });
-}
-
-pf_result pf_remove_force_field(pf_sim* handle, uint32_t id) {
-    PF_ENTRY(sim, handle, "pf_remove_force_field");
-    pf::Simulation& s = *sim->impl;
-    return guarded(s.log(), "pf_remove_force_field", [&] { return s.remove_force_field(id); });
-}
-
-pf_result pf_add_obstacle(pf_sim* handle, const pf_obstacle* obstacle, uint32_t* out_id) {
-    PF_ENTRY(sim, handle, "pf_add_obstacle");
-    pf::Simulation& s = *sim->impl;
-    if (!obstacle) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_obstacle: obstacle must not be NULL");
-    pf_obstacle in{};  // the caller's struct_size bytes over the defaults (ABI rules)
-    if (pf_result r = pf::read_input(obstacle, full_default_obstacle(), in, s.log(), "pf_add_obstacle"); r != PF_OK) return r;
-    if (pf_result r = pf::validate_obstacle(in, s.log(), "pf_add_obstacle"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_add_obstacle", [&] { return s.add_obstacle(in, out_id); });
-}
-
-pf_result pf_set_obstacle(pf_sim* handle, uint32_t id, const pf_obstacle* obstacle) {
-    PF_ENTRY(sim, handle, "pf_set_obstacle");
-    pf::Simulation& s = *sim->impl;
-    if (!obstacle) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_obstacle: obstacle must not be NULL");
-    pf_obstacle in{};  // the caller's struct_size bytes over the defaults (ABI rules)
-    if (pf_result r = pf::read_input(obstacle, full_default_obstacle(), in, s.log(), "pf_set_obstacle"); r != PF_OK) return r;
-    if (pf_result r = pf::validate_obstacle(in, s.log(), "pf_set_obstacle"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_set_obstacle", [&] { return s.set_obstacle(id, in); });
-}
-
-pf_result pf_remove_obstacle(pf_sim* handle, uint32_t id) {
-    PF_ENTRY(sim, handle, "pf_remove_obstacle");
-    pf::Simulation& s = *sim->impl;
-    return guarded(s.log(), "pf_remove_obstacle", [&] { return s.remove_obstacle(id); });
-}
-
-namespace {
-pf_emitter full_default_emitter() {
-    pf_emitter e{};
-    e.struct_size = uint32_t(sizeof(pf_emitter));
-    e.shape = PF_EMITTER_SPHERE;
-    e.rotation[3] = 1.0f;
-    e.half_extents[0] = e.half_extents[1] = e.half_extents[2] = 0.1f;
-    e.radius = 0.1f;
-    e.rate_unit = PF_RATE_PARTICLES_PER_SECOND;
-    return e;
-}
-}  // namespace
-
-pf_result pf_init_emitter(pf_emitter* out, uint32_t struct_size) {
-    return pf::init_struct(out, struct_size, full_default_emitter(), "pf_init_emitter");
-}
-
-namespace {
-pf_sink full_default_sink() {
-    pf_sink k{};
-    k.struct_size = uint32_t(sizeof(pf_sink));
-    k.shape = PF_SINK_BOX;
-    k.rotation[3] = 1.0f;
-    k.half_extents[0] = k.half_extents[1] = k.half_extents[2] = 0.1f;
-    k.radius = 0.1f;
-    return k;
-}
-}  // namespace
-
-pf_result pf_init_sink(pf_sink* out, uint32_t struct_size) {
-    return pf::init_struct(out, struct_size, full_default_sink(), "pf_init_sink");
-}
-
-pf_result pf_add_emitter(pf_sim* handle, const pf_emitter* emitter, uint32_t* out_id) {
-    PF_ENTRY(sim, handle, "pf_add_emitter");
-    pf::Simulation& s = *sim->impl;
-    if (!emitter) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_emitter: emitter must not be NULL");
-    pf_emitter in{};  // the caller's struct_size bytes over the defaults (ABI rules)
-    if (pf_result r = pf::read_input(emitter, full_default_emitter(), in, s.log(), "pf_add_emitter"); r != PF_OK) return r;
-    if (pf_result r = pf::validate_emitter(in, s.desc(), s.log(), "pf_add_emitter"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_add_emitter", [&] { return s.add_emitter(in, out_id); });
-}
-
-pf_result pf_set_emitter(pf_sim* handle, uint32_t id, const pf_emitter* emitter) {
-    PF_ENTRY(sim, handle, "pf_set_emitter");
-    pf::Simulation& s = *sim->impl;
-    if (!emitter) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_emitter: emitter must not be NULL");
-    pf_emitter in{};  // the caller's struct_size bytes over the defaults (ABI rules)
-    if (pf_result r = pf::read_input(emitter, full_default_emitter(), in, s.log(), "pf_set_emitter"); r != PF_OK) return r;
-    if (pf_result r = pf::validate_emitter(in, s.desc(), s.log(), "pf_set_emitter"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_set_emitter", [&] { return s.set_emitter(id, in); });
-}
-
-pf_result pf_remove_emitter(pf_sim* handle, uint32_t id) {
-    PF_ENTRY(sim, handle, "pf_remove_emitter");
-    pf::Simulation& s = *sim->impl;
-    return guarded(s.log(), "pf_remove_emitter", [&] { return s.remove_emitter(id); });
-}
-
-pf_result pf_add_sink(pf_sim* handle, const pf_sink* sink, uint32_t* out_id) {
-    PF_ENTRY(sim, handle, "pf_add_sink");
-    pf::Simulation& s = *sim->impl;
-    if (!sink) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_add_sink: sink must not be NULL");
-    pf_sink in{};  // the caller's struct_size bytes over the defaults (ABI rules)
-    if (pf_result r = pf::read_input(sink, full_default_sink(), in, s.log(), "pf_add_sink"); r != PF_OK) return r;
-    if (pf_result r = pf::validate_sink(in, s.desc(), s.log(), "pf_add_sink"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_add_sink", [&] { return s.add_sink(in, out_id); });
-}
-
-pf_result pf_set_sink(pf_sim* handle, uint32_t id, const pf_sink* sink) {
-    PF_ENTRY(sim, handle, "pf_set_sink");
-    pf::Simulation& s = *sim->impl;
-    if (!sink) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_sink: sink must not be NULL");
-    pf_sink in{};  // the caller's struct_size bytes over the defaults (ABI rules)
-    if (pf_result r = pf::read_input(sink, full_default_sink(), in, s.log(), "pf_set_sink"); r != PF_OK) return r;
-    if (pf_result r = pf::validate_sink(in, s.desc(), s.log(), "pf_set_sink"); r != PF_OK) return r;
-    return guarded(s.log(), "pf_set_sink", [&] { return s.set_sink(id, in); });
-}
-
-pf_result pf_remove_sink(pf_sim* handle, uint32_t id) {
-    PF_ENTRY(sim, handle, "pf_remove_sink");
-    pf::Simulation& s = *sim->impl;
-    return guarded(s.log(), "pf_remove_sink", [&] { return s.remove_sink(id); });
-}
-
-namespace {
-pf_domain_motion full_default_domain_motion() {
-    pf_domain_motion m{};
-    m.struct_size = uint32_t(sizeof(pf_domain_motion));
-    m.rotation[3] = 1.0f;
-    return m;
-}
-}  // namespace
-
-pf_result pf_init_domain_motion(pf_domain_motion* out, uint32_t struct_size) {
-    return pf::init_struct(out, struct_size, full_default_domain_motion(), "pf_init_domain_motion");
-}
-
-pf_result pf_set_domain_motion(pf_sim* handle, const pf_domain_motion* motion) {
-    PF_ENTRY(sim, handle, "pf_set_domain_motion");
-    pf::Simulation& s = *sim->impl;
-    if (!motion) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_domain_motion: motion must not be NULL");
-    pf_domain_motion in{};  // the caller's struct_size bytes over the defaults (ABI rules)
-    if (pf_result r = pf::read_input(motion, full_default_domain_motion(), in, s.log(), "pf_set_domain_motion"); r != PF_OK)
-        return r;
-    if (pf_result r = pf::validate_domain_motion(in, s.log(), "pf_set_domain_motion"); r != PF_OK) return r;
-    s.set_domain_motion(in);
-    return PF_OK;
-}
-
-pf_result pf_get_domain_motion(const pf_sim* handle, pf_domain_motion* out) {
-    PF_ENTRY(sim, handle, "pf_get_domain_motion");
-    if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_domain_motion: out must not be NULL");
-    return pf::write_output(out, sim->impl->domain_motion_state(), sim->impl->log(), "pf_get_domain_motion");
-}
-
 pf_result pf_get_particle_count(pf_sim* handle, uint32_t* out) {
     PF_ENTRY(sim, handle, "pf_get_particle_count");
     pf::Simulation& s = *sim->impl;
@@ -431,13 +228,6 @@ pf_result pf_get_particle_count(pf_sim* handle, uint32_t* out) {
         *out = s.live_count();
         return PF_OK;
     });
-}
-
-pf_result pf_get_obstacle_force(const pf_sim* handle, uint32_t id, pf_obstacle_force* out) {
-    PF_ENTRY(sim, handle, "pf_get_obstacle_force");
-    const pf::Simulation& s = *sim->impl;
-    if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_obstacle_force: out must not be NULL");
-    return guarded(s.log(), "pf_get_obstacle_force", [&] { return s.obstacle_force(id, *out); });
 }
 
 pf_result pf_get_params(const pf_sim* handle, pf_sim_params* out) {

@@ -1,5 +1,7 @@
 #include "api/validate.h"
 
+#include "api/field_checks.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -10,13 +12,7 @@ namespace {
 constexpr float kMinCellSize = 1e-5f, kMaxCellSize = 1e5f;
 constexpr double kMaxCellsFromWorldOrigin = 65536.0;
 
-bool finite3(const float v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
-
-std::string str(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof(buf), "%g", v);
-    return buf;
-}
+std::string str(double v) { return number_string(v); }
 }  // namespace
 
 // The solver's stopping rule, pressure_iterations and pressure_tolerance, is not resolved: with
@@ -126,145 +122,6 @@ pf_result validate_features(uint32_t features, const Log& log, const char* fn) {
         return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": unknown feature bits " +
                                                         std::to_string(features & ~uint32_t(PF_FEATURE_ALL)) +
                                                         " (known: PF_FEATURE_ALL = " + std::to_string(PF_FEATURE_ALL) + ")");
-    }
-    return PF_OK;
-}
-
-pf_result validate_force_field(const pf_force_field& f, const Log& log, const char* fn) {
-    auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
-    if (enum_bits(f.type) >= PF_FORCE_FIELD_TYPE_COUNT) return bad("unknown force field type " + std::to_string(int32_t(enum_bits(f.type))));
-    if (!finite3(f.position) || !finite3(f.vector) || !std::isfinite(f.strength) || !std::isfinite(f.radius) ||
-        !std::isfinite(f.drag))
-        return bad("every field of the force field must be finite");
-    if (f.type == PF_FORCE_FIELD_DIRECTIONAL) {
-        if (f.drag < 0.0f) return bad("drag must be >= 0, got " + str(f.drag));
-        return PF_OK;
-    }
-    if (!(f.radius > 0.0f)) return bad("radius must be > 0, got " + str(f.radius));
-    if (f.type == PF_FORCE_FIELD_VORTEX) {
-        const double n2 = double(f.vector[0]) * f.vector[0] + double(f.vector[1]) * f.vector[1] + double(f.vector[2]) * f.vector[2];
-        if (!(n2 > 1e-20)) return bad("a vortex needs a non-zero axis (vector)");
-    }
-    return PF_OK;
-}
-
-pf_result validate_obstacle(const pf_obstacle& o, const Log& log, const char* fn) {
-    auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
-    if (enum_bits(o.shape) >= PF_OBSTACLE_SHAPE_COUNT) return bad("unknown obstacle shape " + std::to_string(int32_t(enum_bits(o.shape))));
-    if (!finite3(o.position) || !finite3(o.half_extents) || !std::isfinite(o.rotation[3]) || !finite3(o.rotation) ||
-        !std::isfinite(o.radius) || !std::isfinite(o.half_height) || !std::isfinite(o.sdf_scale))
-        return bad("every field of the obstacle must be finite");
-    if (!finite3(o.velocity)) return bad("velocity must be finite");
-    if (!finite3(o.angular_velocity)) return bad("angular_velocity must be finite");
-    if (o.shape == PF_OBSTACLE_SDF) {
-        if (!(o.sdf_scale > 0.0f) || !std::isfinite(o.sdf_scale)) return bad("sdf_scale must be finite and > 0, got " + str(o.sdf_scale));
-        if (o.sdf_texture == 0) return bad("an SDF obstacle needs an sdf_texture (0 given)");
-    }
-    if (o.shape == PF_OBSTACLE_BOX || o.shape == PF_OBSTACLE_SDF) {
-        for (int a = 0; a < 3; ++a) {
-            if (!(o.half_extents[a] > 0.0f))
-                return bad("half_extents[" + std::to_string(a) + "] must be > 0, got " + str(o.half_extents[a]));
-        }
-        return PF_OK;
-    }
-    if (!(o.radius > 0.0f)) return bad("radius must be > 0, got " + str(o.radius));
-    if (o.shape == PF_OBSTACLE_CAPSULE && o.half_height < 0.0f) return bad("half_height must be >= 0, got " + str(o.half_height));
-    return PF_OK;
-}
-
-namespace {
-// Half sizes along the world axes of the box `half` (local axes) turned by quaternion q
-// ((0, 0, 0, 0): identity): the axis-aligned bounds of the turned box.
-void turned_extent(const float q_in[4], const double half[3], double out[3]) {
-    double q[4] = {q_in[0], q_in[1], q_in[2], q_in[3]};
-    const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-    if (n > 0.0) {
-        for (double& c : q) c /= n;
-    } else {
-        q[3] = 1.0;
-    }
-    const double x = q[0], y = q[1], z = q[2], w = q[3];
-    const double r[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)},
-                            {2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)},
-                            {2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)}};
-    for (int a = 0; a < 3; ++a) out[a] = std::abs(r[a][0]) * half[0] + std::abs(r[a][1]) * half[1] + std::abs(r[a][2]) * half[2];
-}
-
-bool finite4(const float v[4]) { return finite3(v) && std::isfinite(v[3]); }
-
-// The shape's axis-aligned bounds [lo, hi] in world m.
-void shape_bounds(const float position[3], const float rotation[4], const double half[3], double lo[3], double hi[3]) {
-    double ext[3];
-    turned_extent(rotation, half, ext);
-    for (int a = 0; a < 3; ++a) lo[a] = double(position[a]) - ext[a], hi[a] = double(position[a]) + ext[a];
-}
-}  // namespace
-
-pf_result validate_emitter(const pf_emitter& e, const pf_sim_desc& d, const Log& log, const char* fn) {
-    auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
-    if (enum_bits(e.shape) >= PF_EMITTER_SHAPE_COUNT) return bad("unknown emitter shape " + std::to_string(int32_t(enum_bits(e.shape))));
-    if (enum_bits(e.rate_unit) >= PF_RATE_UNIT_COUNT) return bad("unknown rate unit " + std::to_string(int32_t(enum_bits(e.rate_unit))));
-    if (!finite3(e.position) || !finite4(e.rotation) || !finite3(e.half_extents) || !std::isfinite(e.radius) ||
-        !finite3(e.velocity) || !std::isfinite(e.rate))
-        return bad("every field of the emitter must be finite");
-    double half[3] = {e.radius, e.radius, e.radius};
-    if (e.shape == PF_EMITTER_BOX) {
-        for (int a = 0; a < 3; ++a) {
-            if (!(e.half_extents[a] > 0.0f))
-                return bad("half_extents[" + std::to_string(a) + "] must be > 0, got " + str(e.half_extents[a]));
-            half[a] = e.half_extents[a];
-        }
-    } else if (!(e.radius > 0.0f)) {
-        return bad("radius must be > 0, got " + str(e.radius));
-    }
-    if (e.shape == PF_EMITTER_DISC) half[1] = 0.0;  // a disc facing local +y
-    if (!(e.rate >= 0.0f)) return bad("rate must be >= 0, got " + str(e.rate));
-    const double speed = std::sqrt(double(e.velocity[0]) * e.velocity[0] + double(e.velocity[1]) * e.velocity[1] +
-                                   double(e.velocity[2]) * e.velocity[2]);
-    if (speed > d.max_speed) return bad("|velocity| = " + str(float(speed)) + " exceeds desc.max_speed (" + str(d.max_speed) + ")");
-    double lo[3], hi[3];
-    shape_bounds(e.position, e.rotation, half, lo, hi);
-    for (int a = 0; a < 3; ++a) {
-        const double dlo = d.origin[a], dhi = d.origin[a] + double(d.cell_size) * d.grid_size[a];
-        if (lo[a] < dlo || hi[a] > dhi) {
-            return bad("the emitter reaches outside the domain on axis " + std::to_string(a) + " ([" + str(float(lo[a])) +
-                       ", " + str(float(hi[a])) + "] not within [" + str(float(dlo)) + ", " + str(float(dhi)) + "])");
-        }
-    }
-    return PF_OK;
-}
-
-pf_result validate_domain_motion(const pf_domain_motion& m, const Log& log, const char* fn) {
-    auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
-    if (!finite3(m.position) || !finite4(m.rotation) || !finite3(m.velocity) || !finite3(m.angular_velocity))
-        return bad("every field of the domain motion must be finite");
-    const double w = std::sqrt(double(m.angular_velocity[0]) * m.angular_velocity[0] +
-                               double(m.angular_velocity[1]) * m.angular_velocity[1] +
-                               double(m.angular_velocity[2]) * m.angular_velocity[2]);
-    if (w > 1000.0) return bad("|angular_velocity| = " + str(float(w)) + " rad/s exceeds 1000");
-    return PF_OK;
-}
-
-pf_result validate_sink(const pf_sink& k, const pf_sim_desc& d, const Log& log, const char* fn) {
-    auto bad = [&](const std::string& what) { return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what); };
-    if (enum_bits(k.shape) >= PF_SINK_SHAPE_COUNT) return bad("unknown sink shape " + std::to_string(int32_t(enum_bits(k.shape))));
-    if (!finite3(k.position) || !finite4(k.rotation) || !finite3(k.half_extents) || !std::isfinite(k.radius))
-        return bad("every field of the sink must be finite");
-    double half[3] = {k.radius, k.radius, k.radius};
-    if (k.shape == PF_SINK_BOX) {
-        for (int a = 0; a < 3; ++a) {
-            if (!(k.half_extents[a] > 0.0f))
-                return bad("half_extents[" + std::to_string(a) + "] must be > 0, got " + str(k.half_extents[a]));
-            half[a] = k.half_extents[a];
-        }
-    } else if (!(k.radius > 0.0f)) {
-        return bad("radius must be > 0, got " + str(k.radius));
-    }
-    double lo[3], hi[3];
-    shape_bounds(k.position, k.rotation, half, lo, hi);
-    for (int a = 0; a < 3; ++a) {
-        const double dlo = d.origin[a], dhi = d.origin[a] + double(d.cell_size) * d.grid_size[a];
-        if (hi[a] <= dlo || lo[a] >= dhi) return bad("the sink does not overlap the domain (axis " + std::to_string(a) + ")");
     }
     return PF_OK;
 }

@@ -1,4 +1,6 @@
-// Argument checks of the C API: every rule in one place, each failure a logged message.
+// Argument checks of the C API, each failure a logged message: the simulation's own (its
+// descriptor, parameters, features, particles). Each effect validates its objects in its folder
+// (src/sim/effects/<name>/<name>_api.cpp).
 #pragma once
 #include <cstdint>
 #include <cstring>
@@ -26,13 +28,6 @@ pf_sim_params resolve_params(const pf_sim_params& params);
 // PF_OK or PF_ERROR_INVALID_ARGUMENT with a message naming the field; `fn` prefixes messages.
 pf_result validate_desc(const pf_sim_desc& desc, const Log& log);
 pf_result validate_params(const pf_sim_params& params, const Log& log, const char* fn);
-// Effects' objects: every field finite and in range (pf.h documents the ranges); `fn` prefixes messages.
-pf_result validate_force_field(const pf_force_field& field, const Log& log, const char* fn);
-pf_result validate_obstacle(const pf_obstacle& obstacle, const Log& log, const char* fn);
-// Emitters must lie inside the domain and emit no faster than desc.max_speed; sinks must overlap it.
-pf_result validate_emitter(const pf_emitter& emitter, const pf_sim_desc& desc, const Log& log, const char* fn);
-pf_result validate_domain_motion(const pf_domain_motion& motion, const Log& log, const char* fn);
-pf_result validate_sink(const pf_sink& sink, const pf_sim_desc& desc, const Log& log, const char* fn);
 // Only known PF_FEATURE_* bits.
 pf_result validate_features(uint32_t features, const Log& log, const char* fn);
 // Positions finite and inside the domain, velocities finite and at most max_speed.

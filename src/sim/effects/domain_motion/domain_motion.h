@@ -13,6 +13,11 @@
 
 namespace pf {
 
+// A domain motion's arguments: every field finite, |angular_velocity| <= 1000 rad/s; PF_OK or
+// PF_ERROR_INVALID_ARGUMENT logged with `fn` first. Also checks a snapshot's motion on restore.
+// (domain_motion_api.cpp, with the entry points)
+pf_result validate_domain_motion(const pf_domain_motion& motion, const Log& log, const char* fn);
+
 class DomainMotionEffect final : public Effect {
 public:
     explicit DomainMotionEffect(const pf_sim_desc& desc);

@@ -11,6 +11,12 @@
 
 namespace pf {
 
+// An emitter's arguments: every field finite, known shape and rate unit, positive sizes, rate
+// >= 0, inside the domain of `desc` and no faster than desc.max_speed; PF_OK or
+// PF_ERROR_INVALID_ARGUMENT logged with `fn` first. Also checks a snapshot's emitters on
+// restore. (emitters_api.cpp, with the entry points)
+pf_result validate_emitter(const pf_emitter& emitter, const pf_sim_desc& desc, const Log& log, const char* fn);
+
 class EmittersEffect final : public Effect {
 public:
     // An emitter and the fraction of a particle it still owes (carried to the next step).

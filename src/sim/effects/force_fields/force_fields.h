@@ -9,6 +9,11 @@
 
 namespace pf {
 
+// A force field's arguments: every field finite, a known type, drag >= 0 (directional), radius
+// > 0 and a vortex's axis non-zero; PF_OK or PF_ERROR_INVALID_ARGUMENT logged with `fn` first.
+// Also checks a snapshot's fields on restore. (force_fields_api.cpp, with the entry points)
+pf_result validate_force_field(const pf_force_field& field, const Log& log, const char* fn);
+
 class ForceFieldsEffect final : public Effect {
 public:
     using List = ObjectList<pf_force_field, PF_MAX_FORCE_FIELDS>;

@@ -20,6 +20,11 @@
 
 namespace pf {
 
+// An obstacle's arguments: every field finite, a known shape with positive sizes, an SDF with a
+// texture; PF_OK or PF_ERROR_INVALID_ARGUMENT logged with `fn` first. Also checks a snapshot's
+// obstacles on restore. (obstacles_api.cpp, with the entry points)
+pf_result validate_obstacle(const pf_obstacle& obstacle, const Log& log, const char* fn);
+
 // An obstacle as the engine gave it, and how its SDF texture (if any) encodes distances.
 struct ObstacleEntry {
     pf_obstacle obstacle{};

@@ -10,6 +10,11 @@
 
 namespace pf {
 
+// A sink's arguments: every field finite, a known shape with positive sizes, overlapping the
+// domain of `desc`; PF_OK or PF_ERROR_INVALID_ARGUMENT logged with `fn` first. Also checks a
+// snapshot's sinks on restore. (sinks_api.cpp, with the entry points)
+pf_result validate_sink(const pf_sink& sink, const pf_sim_desc& desc, const Log& log, const char* fn);
+
 class SinksEffect final : public Effect {
 public:
     using List = ObjectList<pf_sink, PF_MAX_SINKS>;
