@@ -162,7 +162,11 @@ pf_result Simulation::init() {
 }
 
 glm::mat4 Simulation::domain_to_world() const {
-    return (desc_.features & PF_FEATURE_DOMAIN_MOTION) ? domain_motion().domain_to_world() : glm::mat4(1.0f);
+    glm::mat4 pose(1.0f);
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        if (desc_.features & (1u << i)) pose = effects_[i]->domain_to_world() * pose;
+    }
+    return pose;
 }
 
 void Simulation::write_count_record(uint32_t live) {
@@ -422,20 +426,21 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     if (added_at_step_ > cfl_step_) v_max = std::max(v_max, added_speed_);
     const float* g = desc_.params.gravity;
     float accel = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-    float wind = 0.0f;  // drag pulls the liquid towards the wind, never beyond it
-    if (desc_.features & PF_FEATURE_FORCE_FIELDS) {
-        accel += force_fields().max_acceleration();
-        wind = force_fields().max_wind_speed();
-    }
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (desc_.features & (1u << i)) v_max = std::max(v_max, effects_[i]->added_speed());
     }
-    if (desc_.features & PF_FEATURE_DOMAIN_MOTION) accel += domain_motion().max_acceleration(v_max);
-    // Moving obstacles push the liquid at up to their surface speed.
-    const float pushed = (desc_.features & PF_FEATURE_OBSTACLES) ? obstacles().max_surface_speed() : 0.0f;
+    // Effects add accelerations (force fields, a moving frame) and impose speeds whatever was
+    // measured (a wind's drag, an obstacle's surface pushing the liquid).
+    float imposed = 0.0f;
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        if (!(desc_.features & (1u << i))) continue;
+        const CflBound bound = effects_[i]->cfl_bound(v_max);
+        accel += bound.acceleration;
+        imposed = std::max(imposed, bound.speed);
+    }
     // The speed was measured at the end of the previous step (kStatusLag): it may grow by one
     // frame of acceleration before this step ends.
-    const float v_est = std::max({v_max + accel * frame_dt, wind, pushed});
+    const float v_est = std::max(v_max + accel * frame_dt, imposed);
     const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
     const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
     if (clamped) *clamped = wanted > double(desc_.params.max_substeps);
@@ -830,7 +835,7 @@ pf_result Simulation::set_params(const pf_sim_params& params) {
     solver_ = solver;
     desc_.params = params;
     warn_about_free_surface(params, "pf_set_params");
-    domain_motion().set_gravity(params.gravity);
+    for (auto& effect : effects_) effect->params_changed(params);
     restart_energy_reference();  // gravity may have changed: the old total is not comparable
     return PF_OK;
 }
@@ -846,8 +851,10 @@ pf_result Simulation::set_features(uint32_t features, const char* fn) {
             return r;
         effects_ready_ |= bit;
     }
-    // A domain motion turned on has no previous step to take its acceleration from.
-    if ((features & PF_FEATURE_DOMAIN_MOTION) && !(desc_.features & PF_FEATURE_DOMAIN_MOTION)) domain_motion().restart();
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        const uint32_t bit = 1u << i;
+        if ((features & bit) && !(desc_.features & bit)) effects_[i]->turned_on();
+    }
     const bool gpu_count = (features & kGpuCountFeatures) != 0;
     // The count record is current in both modes; leaving GPU mode makes the host count exact.
     if (gpu_count_ && !gpu_count) live_count();
@@ -879,7 +886,10 @@ void Simulation::begin_effects_step(float frame_dt) {
         // Passes cover the slots emitters may fill; the GPU decides how many they do.
         particle_count_ = uint32_t(std::min<uint64_t>(uint64_t(particle_count_) + added, desc_.max_particles));
         added_total_ += added;
-        const float fastest = (desc_.features & PF_FEATURE_EMITTERS) ? emitters().added_speed() : 0.0f;
+        float fastest = 0.0f;
+        for (uint32_t i = 0; i < kEffectCount; ++i) {
+            if (desc_.features & (1u << i)) fastest = std::max(fastest, effects_[i]->added_speed());
+        }
         added_speed_ = (added_at_step_ > cfl_step_) ? std::max(added_speed_, fastest) : fastest;
         added_at_step_ = int64_t(steps_);
     }
@@ -911,103 +921,6 @@ void Simulation::run_count_stage(EffectStage stage) {
     if (!gpu_count_) return;
     run_effects(stage);
     copy_count_to_uniforms();
-}
-
-namespace {
-template <typename List, typename T>
-pf_result add_to(List& list, const T& item, uint32_t* out_id, const Log& log, const char* fn, const char* what) {
-    if (list.full()) {
-        return log.error(PF_ERROR_CAPACITY, std::string(fn) + ": already " + std::to_string(List::kCapacity) + " " + what +
-                                                " (the most a simulation holds); remove one first");
-    }
-    const uint32_t id = list.add(item);
-    if (out_id) *out_id = id;
-    return PF_OK;
-}
-
-template <typename List, typename T>
-pf_result set_in(List& list, uint32_t id, const T& item, const Log& log, const char* fn) {
-    T* slot = list.find(id);
-    if (!slot) return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": no object has id " + std::to_string(id));
-    *slot = item;
-    return PF_OK;
-}
-
-template <typename List>
-pf_result remove_from(List& list, uint32_t id, const Log& log, const char* fn) {
-    if (!list.remove(id)) return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": no object has id " + std::to_string(id));
-    return PF_OK;
-}
-}  // namespace
-
-pf_result Simulation::add_force_field(const pf_force_field& field, uint32_t* out_id) {
-    force_fields().changed();
-    return add_to(force_fields().list(), field, out_id, log_, "pf_add_force_field", "force fields");
-}
-pf_result Simulation::set_force_field(uint32_t id, const pf_force_field& field) {
-    force_fields().changed();
-    return set_in(force_fields().list(), id, field, log_, "pf_set_force_field");
-}
-pf_result Simulation::remove_force_field(uint32_t id) {
-    force_fields().changed();
-    return remove_from(force_fields().list(), id, log_, "pf_remove_force_field");
-}
-pf_result Simulation::obstacle_entry(const pf_obstacle& obstacle, const ObstacleEntry* current, const char* fn,
-                                     ObstacleEntry& out) const {
-    out = ObstacleEntry{obstacle, false};
-    if (obstacle.shape != PF_OBSTACLE_SDF) return PF_OK;
-    // The same texture as before: checked when it was given.
-    if (current && current->obstacle.shape == PF_OBSTACLE_SDF && current->obstacle.sdf_texture == obstacle.sdf_texture) {
-        out.sdf_normalized = current->sdf_normalized;
-        return PF_OK;
-    }
-    gl::StateGuard guard(gl_, gl_state_);
-    return check_sdf_texture(gl_, log_, fn, obstacle.sdf_texture, out.sdf_normalized);
-}
-pf_result Simulation::add_obstacle(const pf_obstacle& obstacle, uint32_t* out_id) {
-    ObstacleEntry entry;
-    if (pf_result r = obstacle_entry(obstacle, nullptr, "pf_add_obstacle", entry); r != PF_OK) return r;
-    obstacles().changed();
-    return add_to(obstacles().list(), entry, out_id, log_, "pf_add_obstacle", "obstacles");
-}
-pf_result Simulation::set_obstacle(uint32_t id, const pf_obstacle& obstacle) {
-    ObstacleEntry entry;
-    if (pf_result r = obstacle_entry(obstacle, obstacles().list().find(id), "pf_set_obstacle", entry); r != PF_OK)
-        return r;
-    obstacles().changed();
-    return set_in(obstacles().list(), id, entry, log_, "pf_set_obstacle");
-}
-pf_result Simulation::remove_obstacle(uint32_t id) {
-    obstacles().changed();
-    return remove_from(obstacles().list(), id, log_, "pf_remove_obstacle");
-}
-pf_result Simulation::obstacle_force(uint32_t id, pf_obstacle_force& out) const {
-    gl::StateGuard guard(gl_, gl_state_);
-    if (!obstacles().force(id, out))
-        return log_.error(PF_ERROR_INVALID_ARGUMENT, "pf_get_obstacle_force: no obstacle has id " + std::to_string(id));
-    return PF_OK;
-}
-
-pf_result Simulation::add_emitter(const pf_emitter& emitter, uint32_t* out_id) {
-    return add_to(emitters().list(), EmittersEffect::Emitter{emitter, 0.0}, out_id, log_, "pf_add_emitter", "emitters");
-}
-pf_result Simulation::set_emitter(uint32_t id, const pf_emitter& emitter) {
-    if (!emitters().set(id, emitter))
-        return log_.error(PF_ERROR_INVALID_ARGUMENT, "pf_set_emitter: no object has id " + std::to_string(id));
-    return PF_OK;
-}
-pf_result Simulation::remove_emitter(uint32_t id) { return remove_from(emitters().list(), id, log_, "pf_remove_emitter"); }
-pf_result Simulation::add_sink(const pf_sink& sink, uint32_t* out_id) {
-    sinks().changed();
-    return add_to(sinks().list(), sink, out_id, log_, "pf_add_sink", "sinks");
-}
-pf_result Simulation::set_sink(uint32_t id, const pf_sink& sink) {
-    sinks().changed();
-    return set_in(sinks().list(), id, sink, log_, "pf_set_sink");
-}
-pf_result Simulation::remove_sink(uint32_t id) {
-    sinks().changed();
-    return remove_from(sinks().list(), id, log_, "pf_remove_sink");
 }
 
 pf_result Simulation::read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const {

@@ -14,11 +14,6 @@
 #include "gl/readback_ring.h"
 #include "gl/state_guard.h"
 #include "pf/pf.h"
-#include "sim/effects/domain_motion/domain_motion.h"
-#include "sim/effects/emitters/emitters.h"
-#include "sim/effects/force_fields/force_fields.h"
-#include "sim/effects/obstacles/obstacles.h"
-#include "sim/effects/sinks/sinks.h"
 #include "sim/effects/registry.h"
 #include "sim/particle_readback.h"
 #include "sim/pass_runner.h"
@@ -52,30 +47,24 @@ public:
     // pf_set_features: initialises the effects turned on for the first time (all or nothing).
     pf_result set_features(uint32_t features, const char* fn);
     uint32_t features() const { return desc_.features; }
-    // The effects' object lists (validated by the API); edits take effect at the next step.
-    pf_result add_force_field(const pf_force_field& field, uint32_t* out_id);
-    pf_result set_force_field(uint32_t id, const pf_force_field& field);
-    pf_result remove_force_field(uint32_t id);
-    pf_result add_obstacle(const pf_obstacle& obstacle, uint32_t* out_id);
-    pf_result set_obstacle(uint32_t id, const pf_obstacle& obstacle);
-    pf_result remove_obstacle(uint32_t id);
-    pf_result add_emitter(const pf_emitter& emitter, uint32_t* out_id);
-    pf_result set_emitter(uint32_t id, const pf_emitter& emitter);
-    pf_result remove_emitter(uint32_t id);
-    pf_result add_sink(const pf_sink& sink, uint32_t* out_id);
-    pf_result set_sink(uint32_t id, const pf_sink& sink);
-    pf_result remove_sink(uint32_t id);
-    void set_domain_motion(const pf_domain_motion& motion) { domain_motion().set(motion); }
-    const pf_domain_motion& domain_motion_state() const { return domain_motion().motion(); }
-    // Domain -> world (the renderer's model matrix): the domain's pose while
-    // PF_FEATURE_DOMAIN_MOTION is on, else the identity.
+    // The effect of class E (its kFeature bit names its slot): the effect's own C API
+    // (src/sim/effects/<name>/<name>_api.cpp) edits its objects through it; edits take effect at
+    // the next step.
+    template <typename E>
+    E& effect() {
+        constexpr uint32_t slot = effect_slot(E::kFeature);
+        static_assert(slot < kEffectCount, "E::kFeature must be one PF_FEATURE_* bit");
+        return static_cast<E&>(*effects_[slot]);
+    }
+    template <typename E>
+    const E& effect() const {
+        constexpr uint32_t slot = effect_slot(E::kFeature);
+        static_assert(slot < kEffectCount, "E::kFeature must be one PF_FEATURE_* bit");
+        return static_cast<const E&>(*effects_[slot]);
+    }
+    // Domain -> world (the renderer's model matrix): the poses of the effects that are on
+    // (Effect::domain_to_world; only a domain motion moves it), else the identity.
     glm::mat4 domain_to_world() const;
-    // The list entry of `obstacle`: an SDF texture is checked on the GL unless `current` (the entry
-    // it replaces, or nullptr) has the same texture.
-    pf_result obstacle_entry(const pf_obstacle& obstacle, const ObstacleEntry* current, const char* fn,
-                             ObstacleEntry& out) const;
-    // pf_get_obstacle_force: the newest readback of obstacle `id` (never waits).
-    pf_result obstacle_force(uint32_t id, pf_obstacle_force& out) const;
     pf_result read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const;
     // pf_request_particles / pf_poll_particles (range checked by the API).
     pf_result request_particles(uint32_t first, uint32_t count, uint32_t* ticket);
@@ -97,6 +86,8 @@ public:
     const pf_sim_params& params() const { return desc_.params; }
     const Log& log() const { return log_; }
     const gl::Api& api() const { return gl_; }
+    // How a gl::StateGuard of this simulation's context saves state (what the context supports).
+    const gl::StateGuard::Options& gl_state_options() const { return gl_state_; }
     // Particle slots in use: the live count, or while the GPU keeps the count (emitters or sinks
     // on) an upper bound of it. Never waits.
     uint32_t particle_count() const { return particle_count_; }
@@ -184,13 +175,6 @@ private:
     void run_effects(EffectStage stage);
     // Start of a step: effects that are on upload what changed.
     void begin_effects_step(float frame_dt);
-    ForceFieldsEffect& force_fields() { return static_cast<ForceFieldsEffect&>(*effects_[0]); }
-    const ForceFieldsEffect& force_fields() const { return static_cast<const ForceFieldsEffect&>(*effects_[0]); }
-    ObstaclesEffect& obstacles() { return static_cast<ObstaclesEffect&>(*effects_[1]); }
-    EmittersEffect& emitters() { return static_cast<EmittersEffect&>(*effects_[2]); }
-    SinksEffect& sinks() { return static_cast<SinksEffect&>(*effects_[3]); }
-    DomainMotionEffect& domain_motion() { return static_cast<DomainMotionEffect&>(*effects_[4]); }
-    const DomainMotionEffect& domain_motion() const { return static_cast<const DomainMotionEffect&>(*effects_[4]); }
     // The effects' buffers and sizes for this substep.
     EffectBuffers effect_buffers() const;
     // Runs the once-per-step stage `stage` (emitters, sinks), then hands the GPU's live count to
@@ -202,7 +186,6 @@ private:
     void copy_count_to_uniforms();
     // End of a step: effects that are on start their readbacks.
     void end_effects_step();
-    const ObstaclesEffect& obstacles() const { return static_cast<const ObstaclesEffect&>(*effects_[1]); }
     void run_g2p();
     void run_advect();
     const gl::Buffer& grid_buffer(GridBuffer which) const;

@@ -4,12 +4,17 @@
 // owns its programs, buffers and statistics entries, and makes them only when its feature is
 // first turned on (init), so an effect that is off costs nothing: no program is built, no pass
 // dispatched, no statistics entry listed. Adding an effect: a class here, a feature bit in
-// pf.h, one case in make_effect (registry.cpp), its passes at the stages it needs, and its host
-// state in snapshots (save_state / restore_state). Effects that add or remove particles
+// pf.h, one case in make_effect (registry.cpp), its passes at the stages it needs, its host
+// state in snapshots (save_state / restore_state), and its C entry points, defaults and
+// validation in <name>_api.cpp. What the simulation needs from it (its part of the CFL bound,
+// parameter changes, a restart when turned on, the domain's pose) goes through this interface;
+// the simulation reaches an effect's own object API through Simulation::effect<E>(). Effects that add or remove particles
 // (emitters, sinks) make the simulation keep its live count on the GPU (docs/design.md §9.3).
 #pragma once
 #include <cstdint>
 #include <memory>
+
+#include <glm/mat4x4.hpp>
 
 #include "api/log.h"
 #include "gl/buffer.h"
@@ -56,6 +61,13 @@ enum class EffectStage : uint8_t {
     after_substeps,     // once per step, after the last substep (sinks remove particles)
 };
 
+// What an effect adds to a step's CFL estimate (Simulation::substeps_for).
+struct CflBound {
+    float acceleration = 0.0f;  // m/s^2 it may add to the liquid's (summed with gravity's)
+    float speed = 0.0f;         // m/s the liquid may reach through it whatever was measured (a
+                                // wind's drag, an obstacle's surface pushing it)
+};
+
 // The bit of `stage` in Effect::stages().
 constexpr uint32_t stage_bit(EffectStage stage) { return 1u << uint32_t(stage); }
 
@@ -94,6 +106,19 @@ public:
     virtual bool changes_particles() const { return false; }
     // Fastest speed (m/s) it gives particles this step: the CFL estimate includes it.
     virtual float added_speed() const { return 0.0f; }
+    // Its part of the CFL estimate of a step whose liquid moves at most `speed` m/s (measured,
+    // and what effects add).
+    virtual CflBound cfl_bound(float speed) const {
+        (void)speed;
+        return {};
+    }
+    // pf_set_params changed the simulation's parameters (on or off, every effect hears it).
+    virtual void params_changed(const pf_sim_params& params) { (void)params; }
+    // Its feature was just turned on: what it measured in an earlier period is stale.
+    virtual void turned_on() {}
+    // Domain -> world transform of the liquid's frame (the renderer's model matrix) while it is
+    // on; effects that do not move the domain keep the identity.
+    virtual glm::mat4 domain_to_world() const { return glm::mat4(1.0f); }
     // Snapshots (pf_save_snapshot): appends the host state that determines later steps (its
     // object list, ids included), whether or not the effect is on. Its GPU state is uploaded
     // from that state, so it is not saved.

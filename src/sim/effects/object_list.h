@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "api/log.h"
+#include "pf/pf.h"
 #include "sim/snapshot_io.h"
 
 namespace pf {
@@ -73,6 +75,32 @@ public:
         return {};
     }
     uint32_t size() const { return uint32_t(items_.size()); }
+
+    // The object API's three edits (pf_add_obstacle, pf_set_sink, ...): refused with a logged
+    // message (`fn` first) when the list is full (PF_ERROR_CAPACITY; `what` names the objects)
+    // or the id names no object (PF_ERROR_INVALID_ARGUMENT), changing nothing then.
+    pf_result add_checked(const T& item, uint32_t* out_id, const Log& log, const char* fn, const char* what) {
+        if (full()) {
+            return log.error(PF_ERROR_CAPACITY, std::string(fn) + ": already " + std::to_string(Capacity) + " " + what +
+                                                    " (the most a simulation holds); remove one first");
+        }
+        const uint32_t id = add(item);
+        if (out_id) *out_id = id;
+        return PF_OK;
+    }
+    pf_result set_checked(uint32_t id, const T& item, const Log& log, const char* fn) {
+        T* slot = find(id);
+        if (!slot) return unknown_id(id, log, fn);
+        *slot = item;
+        return PF_OK;
+    }
+    pf_result remove_checked(uint32_t id, const Log& log, const char* fn) {
+        return remove(id) ? PF_OK : unknown_id(id, log, fn);
+    }
+    // PF_ERROR_INVALID_ARGUMENT for an id that names no object.
+    static pf_result unknown_id(uint32_t id, const Log& log, const char* fn) {
+        return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": no object has id " + std::to_string(id));
+    }
 
 private:
     std::vector<T> items_;

@@ -11,6 +11,13 @@ namespace pf {
 constexpr uint32_t kEffectCount = 5;
 static_assert(PF_FEATURE_ALL == (1u << kEffectCount) - 1u, "one effect per feature bit");
 
+// The slot of a feature bit's effect (the bit's position); kEffectCount for anything else.
+constexpr uint32_t effect_slot(uint32_t feature) {
+    uint32_t slot = 0;
+    while (slot < kEffectCount && feature != (1u << slot)) ++slot;
+    return slot;
+}
+
 // A new, uninitialised effect for one feature bit of a simulation made from `desc` (resolved
 // and validated), or nullptr for an unknown bit.
 std::unique_ptr<Effect> make_effect(uint32_t feature, const pf_sim_desc& desc);

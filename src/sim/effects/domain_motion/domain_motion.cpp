@@ -23,7 +23,7 @@ glm::dvec3 vec(const float v[3]) { return glm::dvec3(v[0], v[1], v[2]); }
 DomainMotionEffect::DomainMotionEffect(const pf_sim_desc& desc) {
     motion_ = pf_default_domain_motion();
     previous_ = motion_;
-    set_gravity(desc.params.gravity);
+    params_changed(desc.params);
     for (int corner = 0; corner < 8; ++corner) {
         glm::dvec3 c;
         for (int a = 0; a < 3; ++a) c[a] = desc.origin[a] + ((corner >> a) & 1 ? double(desc.cell_size) * desc.grid_size[a] : 0.0);

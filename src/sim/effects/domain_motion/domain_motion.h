@@ -21,7 +21,8 @@ pf_result validate_domain_motion(const pf_domain_motion& motion, const Log& log,
 class DomainMotionEffect final : public Effect {
 public:
     explicit DomainMotionEffect(const pf_sim_desc& desc);
-    uint32_t feature() const override { return PF_FEATURE_DOMAIN_MOTION; }
+    static constexpr uint32_t kFeature = PF_FEATURE_DOMAIN_MOTION;
+    uint32_t feature() const override { return kFeature; }
     const char* name() const override { return "domain_motion"; }
     uint32_t stages() const override {
         return stage_bit(EffectStage::after_grid_forces);
@@ -39,16 +40,21 @@ public:
     // pf_set_domain_motion (validated); the next step's accelerations follow from it.
     void set(const pf_domain_motion& motion) { motion_ = motion; }
     const pf_domain_motion& motion() const { return motion_; }
-    // The next step's accelerations start from zero (the feature was just turned on).
-    void restart() { has_previous_ = false; }
+    // The next step's accelerations start from zero.
+    void turned_on() override { has_previous_ = false; }
     // Domain -> world transform of the current pose (the renderer's model matrix).
-    glm::mat4 domain_to_world() const;
-    // params.gravity (world), which the frame turns (pf_set_params changes it).
-    void set_gravity(const float g[3]) { gravity_ = glm::dvec3(g[0], g[1], g[2]); }
-    // The largest apparent acceleration it may add, m/s^2, for liquid at most `speed` m/s (CFL).
-    float max_acceleration(float speed) const;
+    glm::mat4 domain_to_world() const override;
+    // params.gravity (world), which the frame turns.
+    void params_changed(const pf_sim_params& params) override {
+        gravity_ = glm::dvec3(params.gravity[0], params.gravity[1], params.gravity[2]);
+    }
+    // The largest apparent acceleration it may add for liquid at most `speed` m/s.
+    CflBound cfl_bound(float speed) const override { return {max_acceleration(speed), 0.0f}; }
 
 private:
+    // The largest apparent acceleration it may add, m/s^2, for liquid at most `speed` m/s.
+    float max_acceleration(float speed) const;
+
     glm::dvec3 gravity_;        // params.gravity of the step (world)
     double reach_ = 0.0;        // farthest domain point from the frame's origin, m
     pf_domain_motion motion_{};

@@ -5,6 +5,7 @@
 #include "api/entry.h"
 #include "api/field_checks.h"
 #include "api/validate.h"
+#include "sim/effects/domain_motion/domain_motion.h"
 
 namespace {
 
@@ -49,7 +50,7 @@ pf_result pf_init_domain_motion(pf_domain_motion* out, uint32_t struct_size) {
 pf_result pf_set_domain_motion(pf_sim* handle, const pf_domain_motion* motion) {
     return pf::effect_object_call(handle, motion, "pf_set_domain_motion", "motion", full_default_domain_motion(),
                                   validate_domain_motion_of, [](pf::Simulation& s, const pf_domain_motion& in) {
-                                      s.set_domain_motion(in);
+                                      s.effect<pf::DomainMotionEffect>().set(in);
                                       return PF_OK;
                                   });
 }
@@ -57,7 +58,8 @@ pf_result pf_set_domain_motion(pf_sim* handle, const pf_domain_motion* motion) {
 pf_result pf_get_domain_motion(const pf_sim* handle, pf_domain_motion* out) {
     PF_ENTRY(sim, handle, "pf_get_domain_motion");
     if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_domain_motion: out must not be NULL");
-    return pf::write_output(out, sim->impl->domain_motion_state(), sim->impl->log(), "pf_get_domain_motion");
+    const pf::Simulation& s = *sim->impl;
+    return pf::write_output(out, s.effect<pf::DomainMotionEffect>().motion(), s.log(), "pf_get_domain_motion");
 }
 
 }  // extern "C"

@@ -29,7 +29,8 @@ public:
 
     // `desc` resolved and validated: its capacity, seed and domain (snapshots validate against it).
     explicit EmittersEffect(const pf_sim_desc& desc) : desc_(desc), capacity_(desc.max_particles), seed_(desc.seed) {}
-    uint32_t feature() const override { return PF_FEATURE_EMITTERS; }
+    static constexpr uint32_t kFeature = PF_FEATURE_EMITTERS;
+    uint32_t feature() const override { return kFeature; }
     const char* name() const override { return "emitters"; }
     uint32_t stages() const override {
         return stage_bit(EffectStage::before_substeps);

@@ -5,6 +5,7 @@
 #include "api/entry.h"
 #include "api/field_checks.h"
 #include "api/validate.h"
+#include "sim/effects/emitters/emitters.h"
 
 namespace {
 
@@ -81,16 +82,26 @@ pf_result pf_init_emitter(pf_emitter* out, uint32_t struct_size) {
 
 pf_result pf_add_emitter(pf_sim* handle, const pf_emitter* emitter, uint32_t* out_id) {
     return pf::effect_object_call(handle, emitter, "pf_add_emitter", "emitter", full_default_emitter(), validate_emitter_of,
-                                  [&](pf::Simulation& s, const pf_emitter& in) { return s.add_emitter(in, out_id); });
+                                  [&](pf::Simulation& s, const pf_emitter& in) {
+                                      return s.effect<pf::EmittersEffect>().list().add_checked(
+                                          pf::EmittersEffect::Emitter{in, 0.0}, out_id, s.log(), "pf_add_emitter",
+                                          "emitters");
+                                  });
 }
 
 pf_result pf_set_emitter(pf_sim* handle, uint32_t id, const pf_emitter* emitter) {
     return pf::effect_object_call(handle, emitter, "pf_set_emitter", "emitter", full_default_emitter(), validate_emitter_of,
-                                  [&](pf::Simulation& s, const pf_emitter& in) { return s.set_emitter(id, in); });
+                                  [&](pf::Simulation& s, const pf_emitter& in) {
+                                      // Keeps the emitter's owed fraction of a particle (set, not set_checked).
+                                      if (s.effect<pf::EmittersEffect>().set(id, in)) return PF_OK;
+                                      return pf::EmittersEffect::List::unknown_id(id, s.log(), "pf_set_emitter");
+                                  });
 }
 
 pf_result pf_remove_emitter(pf_sim* handle, uint32_t id) {
-    return pf::effect_call(handle, "pf_remove_emitter", [&](pf::Simulation& s) { return s.remove_emitter(id); });
+    return pf::effect_call(handle, "pf_remove_emitter", [&](pf::Simulation& s) {
+        return s.effect<pf::EmittersEffect>().list().remove_checked(id, s.log(), "pf_remove_emitter");
+    });
 }
 
 }  // extern "C"

@@ -17,7 +17,8 @@ pf_result validate_force_field(const pf_force_field& field, const Log& log, cons
 class ForceFieldsEffect final : public Effect {
 public:
     using List = ObjectList<pf_force_field, PF_MAX_FORCE_FIELDS>;
-    uint32_t feature() const override { return PF_FEATURE_FORCE_FIELDS; }
+    static constexpr uint32_t kFeature = PF_FEATURE_FORCE_FIELDS;
+    uint32_t feature() const override { return kFeature; }
     const char* name() const override { return "force_fields"; }
     uint32_t stages() const override {
         return stage_bit(EffectStage::after_grid_forces);
@@ -32,12 +33,14 @@ public:
     // The host list; call changed() after editing it.
     List& list() { return list_; }
     void changed() { dirty_ = true; }
-    // For the CFL estimate (design.md §5): the largest acceleration the fields without drag can
-    // add (m/s^2), and the fastest wind a drag field pulls towards (m/s).
-    float max_acceleration() const;
-    float max_wind_speed() const;
+    // The CFL estimate (design.md §5): the largest acceleration the fields without drag can add,
+    // and the fastest wind a drag field pulls towards (drag never pulls beyond it).
+    CflBound cfl_bound(float) const override { return {max_acceleration(), max_wind_speed()}; }
 
 private:
+    float max_acceleration() const;  // m/s^2
+    float max_wind_speed() const;    // m/s
+
     List list_;
     bool dirty_ = true;
     gl::Buffer records_;  // PF_MAX_FORCE_FIELDS records (force_field_types.h)

@@ -5,6 +5,7 @@
 #include "api/entry.h"
 #include "api/field_checks.h"
 #include "api/validate.h"
+#include "sim/effects/force_fields/force_fields.h"
 
 namespace {
 
@@ -59,17 +60,30 @@ pf_result pf_init_force_field(pf_force_field* out, uint32_t struct_size) {
 pf_result pf_add_force_field(pf_sim* handle, const pf_force_field* field, uint32_t* out_id) {
     return pf::effect_object_call(handle, field, "pf_add_force_field", "field", full_default_force_field(),
                                   validate_force_field_of,
-                                  [&](pf::Simulation& s, const pf_force_field& in) { return s.add_force_field(in, out_id); });
+                                  [&](pf::Simulation& s, const pf_force_field& in) {
+                                      pf::ForceFieldsEffect& fields = s.effect<pf::ForceFieldsEffect>();
+                                      fields.changed();
+                                      return fields.list().add_checked(in, out_id, s.log(), "pf_add_force_field",
+                                                                       "force fields");
+                                  });
 }
 
 pf_result pf_set_force_field(pf_sim* handle, uint32_t id, const pf_force_field* field) {
     return pf::effect_object_call(handle, field, "pf_set_force_field", "field", full_default_force_field(),
                                   validate_force_field_of,
-                                  [&](pf::Simulation& s, const pf_force_field& in) { return s.set_force_field(id, in); });
+                                  [&](pf::Simulation& s, const pf_force_field& in) {
+                                      pf::ForceFieldsEffect& fields = s.effect<pf::ForceFieldsEffect>();
+                                      fields.changed();
+                                      return fields.list().set_checked(id, in, s.log(), "pf_set_force_field");
+                                  });
 }
 
 pf_result pf_remove_force_field(pf_sim* handle, uint32_t id) {
-    return pf::effect_call(handle, "pf_remove_force_field", [&](pf::Simulation& s) { return s.remove_force_field(id); });
+    return pf::effect_call(handle, "pf_remove_force_field", [&](pf::Simulation& s) {
+        pf::ForceFieldsEffect& fields = s.effect<pf::ForceFieldsEffect>();
+        fields.changed();
+        return fields.list().remove_checked(id, s.log(), "pf_remove_force_field");
+    });
 }
 
 }  // extern "C"

@@ -40,7 +40,8 @@ class ObstaclesEffect final : public Effect {
 public:
     using List = ObjectList<ObstacleEntry, PF_MAX_OBSTACLES>;
     ~ObstaclesEffect() override;
-    uint32_t feature() const override { return PF_FEATURE_OBSTACLES; }
+    static constexpr uint32_t kFeature = PF_FEATURE_OBSTACLES;
+    uint32_t feature() const override { return kFeature; }
     const char* name() const override { return "obstacles"; }
     uint32_t stages() const override {
         return stage_bit(EffectStage::after_classify) | stage_bit(EffectStage::after_velocity_update) |
@@ -58,8 +59,10 @@ public:
     // The host list; call changed() after editing it.
     List& list() { return list_; }
     void changed() { dirty_ = true; }
+    // The CFL estimate: the liquid they push reaches at most their fastest surface point.
+    CflBound cfl_bound(float) const override { return {0.0f, max_surface_speed()}; }
     // Fastest surface point of the obstacles on the list, m/s (|v| + |w| times the farthest
-    // point of the shape from its centre): the CFL estimate's bound for the liquid they push.
+    // point of the shape from its centre).
     float max_surface_speed() const;
     // The newest force readback of obstacle `id` (step 0 and zeros while none); polls the ring.
     // False if no obstacle has that id.

@@ -5,6 +5,8 @@
 #include "api/entry.h"
 #include "api/field_checks.h"
 #include "api/validate.h"
+#include "gl/state_guard.h"
+#include "sim/effects/obstacles/obstacles.h"
 
 namespace {
 
@@ -17,6 +19,20 @@ pf_obstacle full_default_obstacle() {
     o.radius = 0.1f;
     o.sdf_scale = 1.0f;
     return o;
+}
+
+// The list entry of `obstacle`: an SDF obstacle's texture is checked (through GL) unless it is
+// the one `current` (the entry it replaces, or nullptr) already had.
+pf_result obstacle_entry(const pf::Simulation& s, const pf_obstacle& obstacle, const pf::ObstacleEntry* current,
+                         const char* fn, pf::ObstacleEntry& out) {
+    out = pf::ObstacleEntry{obstacle, false};
+    if (obstacle.shape != PF_OBSTACLE_SDF) return PF_OK;
+    if (current && current->obstacle.shape == PF_OBSTACLE_SDF && current->obstacle.sdf_texture == obstacle.sdf_texture) {
+        out.sdf_normalized = current->sdf_normalized;
+        return PF_OK;
+    }
+    pf::gl::StateGuard guard(s.api(), s.gl_state_options());
+    return pf::check_sdf_texture(s.api(), s.log(), fn, obstacle.sdf_texture, out.sdf_normalized);
 }
 
 }  // namespace
@@ -68,24 +84,50 @@ pf_result pf_init_obstacle(pf_obstacle* out, uint32_t struct_size) {
 pf_result pf_add_obstacle(pf_sim* handle, const pf_obstacle* obstacle, uint32_t* out_id) {
     return pf::effect_object_call(handle, obstacle, "pf_add_obstacle", "obstacle", full_default_obstacle(),
                                   validate_obstacle_of,
-                                  [&](pf::Simulation& s, const pf_obstacle& in) { return s.add_obstacle(in, out_id); });
+                                  [&](pf::Simulation& s, const pf_obstacle& in) {
+                                      pf::ObstacleEntry entry;
+                                      if (pf_result r = obstacle_entry(s, in, nullptr, "pf_add_obstacle", entry); r != PF_OK)
+                                          return r;
+                                      pf::ObstaclesEffect& obstacles = s.effect<pf::ObstaclesEffect>();
+                                      obstacles.changed();
+                                      return obstacles.list().add_checked(entry, out_id, s.log(), "pf_add_obstacle",
+                                                                          "obstacles");
+                                  });
 }
 
 pf_result pf_set_obstacle(pf_sim* handle, uint32_t id, const pf_obstacle* obstacle) {
     return pf::effect_object_call(handle, obstacle, "pf_set_obstacle", "obstacle", full_default_obstacle(),
                                   validate_obstacle_of,
-                                  [&](pf::Simulation& s, const pf_obstacle& in) { return s.set_obstacle(id, in); });
+                                  [&](pf::Simulation& s, const pf_obstacle& in) {
+                                      pf::ObstaclesEffect& obstacles = s.effect<pf::ObstaclesEffect>();
+                                      pf::ObstacleEntry entry;
+                                      if (pf_result r = obstacle_entry(s, in, obstacles.list().find(id), "pf_set_obstacle",
+                                                                       entry);
+                                          r != PF_OK)
+                                          return r;
+                                      obstacles.changed();
+                                      return obstacles.list().set_checked(id, entry, s.log(), "pf_set_obstacle");
+                                  });
 }
 
 pf_result pf_remove_obstacle(pf_sim* handle, uint32_t id) {
-    return pf::effect_call(handle, "pf_remove_obstacle", [&](pf::Simulation& s) { return s.remove_obstacle(id); });
+    return pf::effect_call(handle, "pf_remove_obstacle", [&](pf::Simulation& s) {
+        pf::ObstaclesEffect& obstacles = s.effect<pf::ObstaclesEffect>();
+        obstacles.changed();
+        return obstacles.list().remove_checked(id, s.log(), "pf_remove_obstacle");
+    });
 }
 
 pf_result pf_get_obstacle_force(const pf_sim* handle, uint32_t id, pf_obstacle_force* out) {
     PF_ENTRY(sim, handle, "pf_get_obstacle_force");
     const pf::Simulation& s = *sim->impl;
     if (!out) return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_obstacle_force: out must not be NULL");
-    return pf::guarded(s.log(), "pf_get_obstacle_force", [&] { return s.obstacle_force(id, *out); });
+    return pf::guarded(s.log(), "pf_get_obstacle_force", [&] {
+        pf::gl::StateGuard guard(s.api(), s.gl_state_options());
+        if (!s.effect<pf::ObstaclesEffect>().force(id, *out))
+            return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_obstacle_force: no obstacle has id " + std::to_string(id));
+        return PF_OK;
+    });
 }
 
 }  // extern "C"

@@ -20,7 +20,8 @@ public:
     using List = ObjectList<pf_sink, PF_MAX_SINKS>;
     // `desc` resolved and validated: its capacity and domain (snapshots validate against it).
     explicit SinksEffect(const pf_sim_desc& desc) : desc_(desc), capacity_(desc.max_particles) {}
-    uint32_t feature() const override { return PF_FEATURE_SINKS; }
+    static constexpr uint32_t kFeature = PF_FEATURE_SINKS;
+    uint32_t feature() const override { return kFeature; }
     const char* name() const override { return "sinks"; }
     uint32_t stages() const override {
         return stage_bit(EffectStage::after_substeps);
