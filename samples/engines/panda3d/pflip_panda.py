@@ -28,10 +28,10 @@ from pflip.camera import make_camera
 
 GL_DRAW_FRAMEBUFFER_BINDING = 0x8CA6
 
-# Panda's camera space (x right, y forward, z up) -> OpenGL eye space (x right, y up, -z forward).
 # Weight of the newest force reading in the body's force (see _Body.integrate).
 FORCE_SMOOTHING = 0.35
 
+# Panda's camera space (x right, y forward, z up) -> OpenGL eye space (x right, y up, -z forward).
 PANDA_TO_GL_EYE = np.array([[1, 0, 0, 0], [0, 0, 1, 0], [0, -1, 0, 0], [0, 0, 0, 1]], dtype=np.float64)
 
 
@@ -106,7 +106,7 @@ class PandaLiquid:
     def _draw(self, cbdata):
         gsg = self.base.win.getGsg()
         if self.sim is None:
-            self._create(gsg)
+            self._create()
         if self.stepping:
             self._sync_bodies_before_step()
             self.sim.step(self.frame_dt)
@@ -116,7 +116,7 @@ class PandaLiquid:
         self.frames += 1
         cbdata.upcall()  # the node's own geometry: none, but Panda expects the call
 
-    def _create(self, gsg):
+    def _create(self):
         loader = gl_loader(self.base.pipe)
         self.sim = pflip.Simulation(get_proc_address=loader, **self._sim_fields)
         get = ctypes.cast(loader(b"glGetIntegerv"), ctypes.CFUNCTYPE(None, ctypes.c_uint32,
