@@ -139,12 +139,11 @@ typedef enum pf_free_surface {
     PF_FREE_SURFACE_MARKER_CELL = 0, /**< at the centre of the first air cell (the original's): the
                                           surface moves in whole cells, which damps waves strongly
                                           (about a third of a standing wave's amplitude per period) */
-    PF_FREE_SURFACE_GHOST_FLUID = 1, /**< at the liquid's sub-cell surface, estimated from the particles'
-                                          P2G weight on each face between a liquid and an air cell (ghost
-                                          fluid, Enright et al. 2003): waves keep their amplitude and
-                                          period far better, but a resting tank filled with jittered
-                                          particles does not stay still (docs/accuracy.md), so it is
-                                          not yet the default */
+    PF_FREE_SURFACE_GHOST_FLUID = 1, /**< the default: at the liquid's sub-cell surface, estimated from the
+                                          particles' P2G weight on each face between a liquid and an air cell
+                                          (ghost fluid, Enright et al. 2003): a standing wave loses about a
+                                          tenth of its amplitude per period and keeps its period
+                                          (docs/accuracy.md). Needs a converged (Krylov) solver */
     PF_FREE_SURFACE_COUNT = 2,
     PF_FREE_SURFACE_FORCE32 = 0x7fffffff
 } pf_free_surface;
@@ -235,9 +234,10 @@ typedef struct pf_sim_params {
     float energy_gain_limit;      /**< fraction by which kinetic + potential energy may rise above its reference
                                        (pf_stats.energy_drift; at least every particle lifted one cell) before
                                        PF_FLAG_ENERGY_GAINED is raised and logged, (0, 100]; 0 = default 0.1 */
-    pf_free_surface free_surface; /**< free-surface boundary of the pressure; default (0)
-                                       PF_FREE_SURFACE_MARKER_CELL. The ghost fluid with Jacobi or RBGS
-                                       logs a warning: stopped unconverged they add energy */
+    pf_free_surface free_surface; /**< free-surface boundary of the pressure; default PF_FREE_SURFACE_GHOST_FLUID
+                                       (0, which is PF_FREE_SURFACE_MARKER_CELL once struct_size is set, takes
+                                       the default only in a zero-initialised struct). The ghost fluid with
+                                       Jacobi or RBGS logs a warning: stopped unconverged they add energy */
 } pf_sim_params;
 
 /** Quality presets: measured points of the accuracy-versus-time trade-off (docs/accuracy.md
@@ -297,7 +297,9 @@ typedef struct pf_sim_desc {
                                        fixed-point P2G range); 0 = default 100 */
     float density;                /**< liquid density in kg/m^3 (pressure units); 0 = default 1000 */
     uint32_t fill_particles_per_cell; /**< pf_fill_box density: 1, 8, 27 or 64; 0 = default 8 */
-    float fill_jitter;            /**< pf_fill_box jitter, fraction of sub-cell spacing 0..1; default 0.8 */
+    float fill_jitter;            /**< pf_fill_box jitter, fraction of sub-cell spacing 0..1, inside the box's
+                                       outermost cell of samples (a regular lattice, so its faces are flat);
+                                       default 0.8 */
     uint32_t seed;                /**< seed of pf_fill_box jitter (deterministic); default 1 */
     pf_sim_params params;         /**< step parameters */
     pf_gl_get_proc_address_fn gl_get_proc_address; /**< required: the engine's GL loader */
@@ -524,7 +526,8 @@ PF_API pf_result pf_destroy(pf_sim* sim);
  *  PF_FEATURE_SINKS on (the GPU decides the live count) this and pf_fill_box wait for the GPU. */
 PF_API pf_result pf_add_particles(pf_sim* sim, const float* xyz, const float* vel, uint32_t n);
 /** Fill the box [lo, hi] (clipped to the domain) with jittered particles, fill_particles_per_cell per
- *  cell volume, all with velocity vel (NULL: zero). All or nothing. */
+ *  cell volume, all with velocity vel (NULL: zero); the box's outermost cell of samples is a regular
+ *  lattice, so a filled tank's surface is flat and at rest. All or nothing. */
 PF_API pf_result pf_fill_box(pf_sim* sim, const float lo[3], const float hi[3], const float vel[3]);
 /** Remove every particle and reset the grid state; parameters are kept. */
 PF_API pf_result pf_clear_particles(pf_sim* sim);

@@ -143,19 +143,19 @@ std::vector<Config> sweep_configs() {
     });
     // What each knob does to a standing wave's damping and energy (issue 17), from the default.
     combine("balanced_no_volume_correction", [](pf_sim_params& p) { p.volume_correction = 0.0f; });
-    combine("balanced_ghost_fluid", [](pf_sim_params& p) { p.free_surface = PF_FREE_SURFACE_GHOST_FLUID; });
-    combine("balanced_ghost_fluid_no_volume_correction", [](pf_sim_params& p) {
-        p.free_surface = PF_FREE_SURFACE_GHOST_FLUID, p.volume_correction = 0.0f;
+    combine("balanced_volume_correction_0.2", [](pf_sim_params& p) { p.volume_correction = 0.2f; });
+    // The marker-cell free surface (the default until 2026-11-26) with each preset.
+    combine("balanced_marker_cell", [](pf_sim_params& p) { p.free_surface = PF_FREE_SURFACE_MARKER_CELL; });
+    combine("balanced_marker_cell_no_volume_correction", [](pf_sim_params& p) {
+        p.free_surface = PF_FREE_SURFACE_MARKER_CELL, p.volume_correction = 0.0f;
     });
-    combine("balanced_ghost_fluid_volume_correction_0.2", [](pf_sim_params& p) {
-        p.free_surface = PF_FREE_SURFACE_GHOST_FLUID, p.volume_correction = 0.2f;
+    combine("fast_marker_cell", [](pf_sim_params& p) {
+        p = preset(PF_QUALITY_FAST);
+        p.free_surface = PF_FREE_SURFACE_MARKER_CELL;
     });
-    combine("fast_ghost_fluid", [](pf_sim_params& p) {
-        p.free_surface = PF_FREE_SURFACE_GHOST_FLUID, p.pressure_tolerance = 1e-2f;
-    });
-    combine("accurate_ghost_fluid", [](pf_sim_params& p) {
+    combine("accurate_marker_cell", [](pf_sim_params& p) {
         p = preset(PF_QUALITY_ACCURATE);
-        p.free_surface = PF_FREE_SURFACE_GHOST_FLUID;
+        p.free_surface = PF_FREE_SURFACE_MARKER_CELL;
     });
     combine("balanced_volume_correction_1", [](pf_sim_params& p) { p.volume_correction = 1.0f; });
     combine("balanced_flip_1", [](pf_sim_params& p) { p.flip_ratio = 1.0f; });

@@ -58,11 +58,17 @@ void FillLattice::generate(uint32_t seed, uint32_t call, std::vector<float>& xyz
             for (int64_t i = first_[0]; i < last_[0]; ++i) {
                 const int64_t s[3] = {i, j, k};
                 uint32_t h = hash32(stream ^ hash32(uint32_t(i) ^ hash32(uint32_t(j) ^ hash32(uint32_t(k)))));
+                // The box's outermost cell of samples keeps the regular lattice, so its faces are
+                // flat at the sub-cell scale: the ghost-fluid surface reads the particles' weights
+                // there, and a jittered face is a rough surface that starts waves (docs/design.md §4.6a).
+                bool shell = false;
+                for (int a = 0; a < 3; ++a) shell = shell || s[a] - first_[a] < m_ || last_[a] - 1 - s[a] < m_;
                 for (int a = 0; a < 3; ++a) {
                     h = hash32(h + uint32_t(a));
                     // Jitter stays within the sample's own sub-cell, so the sample never
                     // leaves [lo, hi] by more than half a sub-cell; clamp the rest.
-                    const double x = desc_.origin[a] + (double(s[a]) + 0.5 + jitter * (unit(h) - 0.5)) * spacing;
+                    const double offset = shell ? 0.0 : jitter * (unit(h) - 0.5);
+                    const double x = desc_.origin[a] + (double(s[a]) + 0.5 + offset) * spacing;
                     xyz.push_back(float(std::min(std::max(x, lo_[a]), hi_[a])));
                 }
             }

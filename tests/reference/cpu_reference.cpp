@@ -270,16 +270,22 @@ void hydrostatic_start(const Grid& grid, const std::vector<uint8_t>& type, glm::
 
 std::vector<double> volume_correction_rhs(const Grid& grid, const std::vector<uint8_t>& type,
                                           const std::vector<uint32_t>& count, double rest, double k,
-                                          bool separation, const std::vector<double>& pressure) {
+                                          bool separation, const std::vector<double>& pressure,
+                                          bool ghost_fluid) {
     std::vector<double> b(size_t(grid.cells()), 0.0);
     for_each_cell(grid, [&](int i, int j, int k_, int id) {
         if (type[id] != FLUID) return;
         // e = min(count/rest - 1, 1); a cell with an AIR neighbour (with separation and no
-        // pressure: also a wall or SOLID neighbour) only corrects compression.
+        // pressure: also a wall or SOLID neighbour) only corrects compression; with the ghost
+        // fluid, a cell with an AIR neighbour only a surplus beyond a quarter of the rest count.
         double excess = std::min(double(count[id]) / rest - 1.0, 1.0);
         const bool leaving = separation && pressure[id] <= 0.0;
-        bool surface = false;
-        for_each_neighbour(grid, i, j, k_, [&](int n) { surface = surface || type[n] == AIR || (leaving && type[n] == SOLID); });
+        bool surface = false, beside_air = false;
+        for_each_neighbour(grid, i, j, k_, [&](int n) {
+            beside_air = beside_air || type[n] == AIR;
+            surface = surface || type[n] == AIR || (leaving && type[n] == SOLID);
+        });
+        if (ghost_fluid && beside_air) excess -= 0.25;
         if (leaving && (i == 0 || j == 0 || k_ == 0 || i == grid.nx - 1 || j == grid.ny - 1 || k_ == grid.nz - 1))
             surface = true;
         if (surface) excess = std::max(excess, 0.0);

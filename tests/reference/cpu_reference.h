@@ -101,11 +101,13 @@ std::vector<double> divergence(const Grid& grid, const std::vector<uint8_t>& typ
 std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
                                  const std::vector<double>& vel, double density, double dt);
 // §4.5 volume correction, right-hand side (metres): b = k·e·dx for FLUID cells with
-// e = min(count/rest − 1, 1), and e = max(e, 0) in cells with an AIR neighbour and, with
-// `separation`, in cells whose `pressure` is <= 0 beside a domain wall or a SOLID cell; 0 elsewhere.
+// e = min(count/rest − 1, 1), and e = max(e, 0) in cells with an AIR neighbour (e = max(e − 1/4, 0)
+// there with the `ghost_fluid` surface) and, with `separation`, in cells whose `pressure` is <= 0 beside a
+// domain wall or a SOLID cell; 0 elsewhere.
 std::vector<double> volume_correction_rhs(const Grid& grid, const std::vector<uint8_t>& type,
                                           const std::vector<uint32_t>& count, double rest, double k,
-                                          bool separation, const std::vector<double>& pressure);
+                                          bool separation, const std::vector<double>& pressure,
+                                          bool ghost_fluid = false);
 
 // §4.5 volume correction, particle move: the face displacement d = q_lo − q_hi (q = 0 outside
 // FLUID cells, divided by theta between FLUID and AIR; 0 on walls and beside SOLID cells)
