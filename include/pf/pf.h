@@ -244,11 +244,12 @@ typedef struct pf_sim_params {
  *  has their cost and accuracy on an H100). Each is a complete pf_sim_params with the default
  *  gravity; change any field afterwards. */
 typedef enum pf_quality {
-    PF_QUALITY_FAST = 0,         /**< MGPCG to a relative residual of 1e-2, otherwise balanced (the
-                                      original's 40 Jacobi sweeps added energy to waves: docs/accuracy.md) */
+    PF_QUALITY_FAST = 0,         /**< MGPCG to a relative residual of 3e-3, otherwise balanced (the
+                                      original's 40 Jacobi sweeps, and 1e-2 with the ghost-fluid surface,
+                                      added energy to waves: docs/accuracy.md) */
     PF_QUALITY_BALANCED = 1,     /**< the defaults (pf_default_sim_params): MGPCG to a relative residual of
                                       1e-3, separation off, PIC/FLIP 0.95, explicit Euler, volume
-                                      correction 0.5 */
+                                      correction 0.5, ghost-fluid free surface */
     PF_QUALITY_ACCURATE = 2,     /**< MGPCG to 1e-5 with separation (active-set rounds), APIC; in violent
                                       flows the 4 active-set rounds end near a 2% residual, so its
                                       velocities are less divergence-free than balanced's (docs/accuracy.md) */

@@ -9,13 +9,14 @@
 // Measured on llvmpipe (3 periods, 2026-11-25): on the code before issue 17 the fast preset's
 // energy rose to 91 times the wave's energy (2 cells thick) and the balanced preset lost 45% of
 // its amplitude per period. With the position-only volume correction and the marker-cell
-// surface every preset loses 24-35% per period with the period 2.1-3.0% long: its guards are
-// the measured level (50%, 5%). With the ghost-fluid surface the loss is 7.0-10.1% per period
-// and the period within 0.4%: its bounds are the issue's fast-preset loss bound (15%) and
-// balanced/accurate period bound (2%), which the marker-cell surface fails. Over 10 periods on
-// the H100 the accurate preset (APIC) loses 17-19% and runs 4% short, so its long-mode guard is
-// 20% and 5%. Issue 17's 5% loss bound for balanced and accurate is not met (docs/accuracy.md,
-// "Standing waves"). The energy bound is the issue's.
+// surface every preset loses 23-35% per period with the period 2.1-3.0% long: its guards are
+// the measured level (50%, 5%). The presets as shipped (the ghost fluid, 2026-11-26) lose
+// 4.4-8.2% per period with the period within 0.6% and an energy rise of at most 0.061 of the
+// wave's energy; their bounds are the issue's fast-preset loss bound (15%) and balanced/accurate
+// period bound (2%), which the marker-cell surface fails. Over 10 periods on the H100 they lose
+// 4.5-9.5% (fast, balanced) and 11-14% (accurate, APIC), every period within 1.3%: the accurate
+// preset's long-mode guard is 20% and 5%. Issue 17's 5% loss bound for balanced and accurate is
+// not met (docs/accuracy.md, "The ghost fluid as the default"). The energy bound is the issue's.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
