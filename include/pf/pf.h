@@ -141,8 +141,8 @@ typedef enum pf_free_surface {
                                           (about a third of a standing wave's amplitude per period) */
     PF_FREE_SURFACE_GHOST_FLUID = 1, /**< the default: at the liquid's sub-cell surface, estimated from the
                                           particles' P2G weight on each face between a liquid and an air cell
-                                          (ghost fluid, Enright et al. 2003): a standing wave loses about a
-                                          tenth of its amplitude per period and keeps its period
+                                          (ghost fluid, Enright et al. 2003): a standing wave loses 5-9% of its
+                                          amplitude per period and keeps its period
                                           (docs/accuracy.md). Needs a converged (Krylov) solver */
     PF_FREE_SURFACE_COUNT = 2,
     PF_FREE_SURFACE_FORCE32 = 0x7fffffff

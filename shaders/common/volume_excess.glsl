@@ -11,7 +11,9 @@
 // corrected both ways (making every wall one-sided would inflate the liquid: docs/design.md).
 // Needs common/sim.glsl and the cell types, counts and pressures as `cell_type[]`,
 // `cell_count[]` and `pressure[]`.
-// Surplus a ghost-fluid surface cell keeps, in rest counts (measured: docs/design.md §4.5).
+
+// Surplus a ghost-fluid surface cell keeps, in rest counts (measured: docs/accuracy.md, "The ghost
+// fluid as the default").
 const float kGhostSurfaceDeadBand = 0.25;
 
 float volume_excess(ivec3 ijk) {

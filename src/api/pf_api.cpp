@@ -62,7 +62,7 @@ pf_sim_params full_default_params() {
     p.pressure_tolerance = 1e-3f;
     p.sor_omega = 1.6f;
     p.volume_correction = 0.5f;  // measured: docs/design.md §4.5
-    p.free_surface = PF_FREE_SURFACE_GHOST_FLUID;  // a third of the marker cell's wave damping (docs/accuracy.md)
+    p.free_surface = PF_FREE_SURFACE_GHOST_FLUID;  // waves keep their amplitude and period (docs/accuracy.md)
     // Fixed point's sums bit for bit, 2.6 times faster at 1.2M particles (docs/performance.md).
     p.p2g = PF_P2G_TILED;
     p.volume_loss_limit = 0.1f;  // docs/stability.md
