@@ -1,5 +1,5 @@
 // Small checks the argument validators share (src/api/validate.cpp and each effect's
-// <name>_api.cpp): finite vectors, numbers in messages, a turned shape's bounds.
+// <name>_api.cpp, src/api/pf_render_api.cpp): finite vectors, numbers in messages, a turned shape's bounds.
 #pragma once
 #include <cmath>
 #include <cstdio>
@@ -9,6 +9,11 @@ namespace pf {
 
 inline bool finite3(const float v[3]) { return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]); }
 inline bool finite4(const float v[4]) { return finite3(v) && std::isfinite(v[3]); }
+inline bool finite_n(const float* v, int n) {
+    for (int i = 0; i < n; ++i)
+        if (!std::isfinite(v[i])) return false;
+    return true;
+}
 
 // A number as a message shows it (%g).
 inline std::string number_string(double v) {

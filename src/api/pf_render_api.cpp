@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "api/abi.h"
+#include "api/field_checks.h"
 #include "api/handle.h"
 #include "api/validate.h"
 #include "pf/pf.h"
@@ -15,20 +16,10 @@
 namespace {
 using pf::enum_bits;
 
+using pf::finite_n;
 using pf::guarded;
 
-std::string str(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
-bool finite_n(const float* v, int n) {
-    for (int i = 0; i < n; ++i) {
-        if (!std::isfinite(v[i])) return false;
-    }
-    return true;
-}
+std::string str(double v) { return pf::number_string(v); }
 
 // Determinant of a column-major 4x4 matrix, in double.
 double determinant(const float m[16]) {

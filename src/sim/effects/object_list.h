@@ -5,6 +5,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "api/log.h"
@@ -25,7 +26,8 @@ public:
         return next_id_++;
     }
     // The object named `id`, or nullptr.
-    T* find(uint32_t id) {
+    T* find(uint32_t id) { return const_cast<T*>(std::as_const(*this).find(id)); }
+    const T* find(uint32_t id) const {
         for (size_t i = 0; i < ids_.size(); ++i)
             if (ids_[i] == id) return &items_[i];
         return nullptr;

@@ -30,9 +30,12 @@ public:
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;
     bool does_work() const override { return list_.size() > 0; }
 
-    // The host list; call changed() after editing it.
-    List& list() { return list_; }
-    void changed() { dirty_ = true; }
+    // The host list; edit() for a change, which the next step uploads.
+    const List& list() const { return list_; }
+    List& edit() {
+        dirty_ = true;
+        return list_;
+    }
     // The CFL estimate (design.md §5): the largest acceleration the fields without drag can add,
     // and the fastest wind a drag field pulls towards (drag never pulls beyond it).
     CflBound cfl_bound(float) const override { return {max_acceleration(), max_wind_speed()}; }

@@ -61,10 +61,8 @@ pf_result pf_add_force_field(pf_sim* handle, const pf_force_field* field, uint32
     return pf::effect_object_call(handle, field, "pf_add_force_field", "field", full_default_force_field(),
                                   validate_force_field_of,
                                   [&](pf::Simulation& s, const pf_force_field& in) {
-                                      pf::ForceFieldsEffect& fields = s.effect<pf::ForceFieldsEffect>();
-                                      fields.changed();
-                                      return fields.list().add_checked(in, out_id, s.log(), "pf_add_force_field",
-                                                                       "force fields");
+                                      return s.effect<pf::ForceFieldsEffect>().edit().add_checked(
+                                          in, out_id, s.log(), "pf_add_force_field", "force fields");
                                   });
 }
 
@@ -72,17 +70,14 @@ pf_result pf_set_force_field(pf_sim* handle, uint32_t id, const pf_force_field* 
     return pf::effect_object_call(handle, field, "pf_set_force_field", "field", full_default_force_field(),
                                   validate_force_field_of,
                                   [&](pf::Simulation& s, const pf_force_field& in) {
-                                      pf::ForceFieldsEffect& fields = s.effect<pf::ForceFieldsEffect>();
-                                      fields.changed();
-                                      return fields.list().set_checked(id, in, s.log(), "pf_set_force_field");
+                                      return s.effect<pf::ForceFieldsEffect>().edit().set_checked(id, in, s.log(),
+                                                                                                  "pf_set_force_field");
                                   });
 }
 
 pf_result pf_remove_force_field(pf_sim* handle, uint32_t id) {
     return pf::effect_call(handle, "pf_remove_force_field", [&](pf::Simulation& s) {
-        pf::ForceFieldsEffect& fields = s.effect<pf::ForceFieldsEffect>();
-        fields.changed();
-        return fields.list().remove_checked(id, s.log(), "pf_remove_force_field");
+        return s.effect<pf::ForceFieldsEffect>().edit().remove_checked(id, s.log(), "pf_remove_force_field");
     });
 }
 

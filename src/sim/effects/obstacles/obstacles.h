@@ -56,9 +56,12 @@ public:
     // Moving obstacles put energy into the liquid.
     bool does_work() const override { return moving_; }
 
-    // The host list; call changed() after editing it.
-    List& list() { return list_; }
-    void changed() { dirty_ = true; }
+    // The host list; edit() for a change, which the next step uploads.
+    const List& list() const { return list_; }
+    List& edit() {
+        dirty_ = true;
+        return list_;
+    }
     // The CFL estimate: the liquid they push reaches at most their fastest surface point.
     CflBound cfl_bound(float) const override { return {0.0f, max_surface_speed()}; }
     // Fastest surface point of the obstacles on the list, m/s (|v| + |w| times the farthest

@@ -88,10 +88,8 @@ pf_result pf_add_obstacle(pf_sim* handle, const pf_obstacle* obstacle, uint32_t*
                                       pf::ObstacleEntry entry;
                                       if (pf_result r = obstacle_entry(s, in, nullptr, "pf_add_obstacle", entry); r != PF_OK)
                                           return r;
-                                      pf::ObstaclesEffect& obstacles = s.effect<pf::ObstaclesEffect>();
-                                      obstacles.changed();
-                                      return obstacles.list().add_checked(entry, out_id, s.log(), "pf_add_obstacle",
-                                                                          "obstacles");
+                                      return s.effect<pf::ObstaclesEffect>().edit().add_checked(
+                                          entry, out_id, s.log(), "pf_add_obstacle", "obstacles");
                                   });
 }
 
@@ -105,16 +103,13 @@ pf_result pf_set_obstacle(pf_sim* handle, uint32_t id, const pf_obstacle* obstac
                                                                        entry);
                                           r != PF_OK)
                                           return r;
-                                      obstacles.changed();
-                                      return obstacles.list().set_checked(id, entry, s.log(), "pf_set_obstacle");
+                                      return obstacles.edit().set_checked(id, entry, s.log(), "pf_set_obstacle");
                                   });
 }
 
 pf_result pf_remove_obstacle(pf_sim* handle, uint32_t id) {
     return pf::effect_call(handle, "pf_remove_obstacle", [&](pf::Simulation& s) {
-        pf::ObstaclesEffect& obstacles = s.effect<pf::ObstaclesEffect>();
-        obstacles.changed();
-        return obstacles.list().remove_checked(id, s.log(), "pf_remove_obstacle");
+        return s.effect<pf::ObstaclesEffect>().edit().remove_checked(id, s.log(), "pf_remove_obstacle");
     });
 }
 

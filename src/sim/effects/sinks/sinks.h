@@ -33,9 +33,12 @@ public:
     void save_state(ByteWriter& out) const override { list_.save(out); }
     pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;
 
-    // The host list; call changed() after editing it.
-    List& list() { return list_; }
-    void changed() { dirty_ = true; }
+    // The host list; edit() for a change, which the next step uploads.
+    const List& list() const { return list_; }
+    List& edit() {
+        dirty_ = true;
+        return list_;
+    }
 
 private:
     pf_sim_desc desc_;

@@ -67,26 +67,21 @@ pf_result pf_init_sink(pf_sink* out, uint32_t struct_size) {
 pf_result pf_add_sink(pf_sim* handle, const pf_sink* sink, uint32_t* out_id) {
     return pf::effect_object_call(handle, sink, "pf_add_sink", "sink", full_default_sink(), validate_sink_of,
                                   [&](pf::Simulation& s, const pf_sink& in) {
-                                      pf::SinksEffect& sinks = s.effect<pf::SinksEffect>();
-                                      sinks.changed();
-                                      return sinks.list().add_checked(in, out_id, s.log(), "pf_add_sink", "sinks");
+                                      return s.effect<pf::SinksEffect>().edit().add_checked(in, out_id, s.log(),
+                                                                                            "pf_add_sink", "sinks");
                                   });
 }
 
 pf_result pf_set_sink(pf_sim* handle, uint32_t id, const pf_sink* sink) {
     return pf::effect_object_call(handle, sink, "pf_set_sink", "sink", full_default_sink(), validate_sink_of,
                                   [&](pf::Simulation& s, const pf_sink& in) {
-                                      pf::SinksEffect& sinks = s.effect<pf::SinksEffect>();
-                                      sinks.changed();
-                                      return sinks.list().set_checked(id, in, s.log(), "pf_set_sink");
+                                      return s.effect<pf::SinksEffect>().edit().set_checked(id, in, s.log(), "pf_set_sink");
                                   });
 }
 
 pf_result pf_remove_sink(pf_sim* handle, uint32_t id) {
     return pf::effect_call(handle, "pf_remove_sink", [&](pf::Simulation& s) {
-        pf::SinksEffect& sinks = s.effect<pf::SinksEffect>();
-        sinks.changed();
-        return sinks.list().remove_checked(id, s.log(), "pf_remove_sink");
+        return s.effect<pf::SinksEffect>().edit().remove_checked(id, s.log(), "pf_remove_sink");
     });
 }
 
