@@ -34,7 +34,8 @@ std::vector<uint32_t> floats_as_words(const std::vector<double>& values) {
 // Random particles filling the lower 60% of a 12 x 10 x 8 grid at about 10 per cell: cells
 // above and below the rest count of 8, a free surface above. With each surface: the marker
 // cell, and the ghost fluid with theta per face drawn from {1/4, 1/2, 1} (exact in the type
-// word's fixed point), where a cell beside AIR corrects nothing and FLUID-AIR faces divide by theta.
+// word's fixed point), where a cell beside AIR spreads only a surplus beyond a quarter of the rest
+// count and FLUID-AIR faces divide by theta.
 TEST_F(VolumeCorrectionPass, MovesPositionsByTheReferenceDisplacementAndLeavesVelocities) {
     for (const auto [surface, solver] : {std::pair{PF_FREE_SURFACE_MARKER_CELL, PF_PRESSURE_SOLVER_JACOBI},
                                          std::pair{PF_FREE_SURFACE_MARKER_CELL, PF_PRESSURE_SOLVER_MGPCG},
