@@ -3,7 +3,6 @@
 // by the reference's displacement of that potential, and velocities are not touched.
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -20,15 +19,6 @@ double norm(const std::vector<double>& v) {
     double s = 0;
     for (double x : v) s += x * x;
     return std::sqrt(s);
-}
-
-std::vector<uint32_t> floats_as_words(const std::vector<double>& values) {
-    std::vector<uint32_t> words(values.size());
-    for (size_t i = 0; i < values.size(); ++i) {
-        const float f = float(values[i]);
-        std::memcpy(&words[i], &f, 4);
-    }
-    return words;
 }
 
 // Random particles filling the lower 60% of a 12 x 10 x 8 grid at about 10 per cell: cells
@@ -85,16 +75,10 @@ TEST_F(VolumeCorrectionPass, MovesPositionsByTheReferenceDisplacementAndLeavesVe
         // The last solve's pressure: positive in the lower half (liquid pressed against the
         // walls), 0 above (with separation, liquid there may leave the walls).
         std::vector<double> pressure(size_t(g.cells()), 0.0);
-        std::vector<uint32_t> pressure_words(pressure.size(), 0u);
         for (int k = 0; k < g.nz; ++k)
             for (int j = 0; j < g.ny / 4; ++j)
-                for (int i = 0; i < g.nx; ++i) {
-                    const int c = g.cell_index(i, j, k);
-                    pressure[size_t(c)] = 100.0;
-                    const float p = 100.0f;
-                    std::memcpy(&pressure_words[size_t(c)], &p, 4);
-                }
-        sim.write_grid_for_test(GridBuffer::pressure, pressure_words);
+                for (int i = 0; i < g.nx; ++i) pressure[size_t(g.cell_index(i, j, k))] = 100.0;
+        sim.write_grid_for_test(GridBuffer::pressure, floats_as_words(pressure));
         ASSERT_EQ(sim.run_volume_correction_for_test(), PF_OK);
 
         // The potential: MGPCG solves A q = b to the correction's tolerance; Jacobi's sweeps from

@@ -152,6 +152,16 @@ inline std::vector<double> words_as_floats(const std::vector<uint32_t>& words) {
     return out;
 }
 
+// Values as the raw 32-bit words of a GPU float buffer (narrowed to float).
+inline std::vector<uint32_t> floats_as_words(const std::vector<double>& values) {
+    std::vector<uint32_t> words(values.size());
+    for (size_t i = 0; i < values.size(); ++i) {
+        const float f = float(values[i]);
+        std::memcpy(&words[i], &f, 4);
+    }
+    return words;
+}
+
 // Exact live count (waits for the GPU while emitters or sinks are on).
 inline uint32_t live_count(pf_sim* sim) {
     uint32_t n = 0;
