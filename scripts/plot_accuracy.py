@@ -15,16 +15,21 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.ticker import NullFormatter, ScalarFormatter  # noqa: E402
 
-# The accuracy metric of each case (absolute value: smaller is better).
-CASE_METRIC = {
-    "hydrostatic": ("spurious_speed", "spurious speed / sqrt(g dx)"),
-    "rotation": ("angular_momentum_loss_pct", "angular momentum lost, %"),
-    "closed_box": ("kinetic_energy_loss_pct", "kinetic energy lost, %"),
-    "standing_wave": ("period_error_pct", "|period error|, %"),
+# One panel per (case, metric); every metric's absolute value, smaller is better.
+PANELS = [
+    ("hydrostatic", "spurious_speed", "spurious speed / sqrt(g dx)"),
+    ("rotation", "angular_momentum_loss_pct", "angular momentum lost, %"),
+    ("closed_box", "kinetic_energy_loss_pct", "kinetic energy lost, %"),
+    ("standing_wave", "period_error_pct", "|period error|, %"),
+    # Issue 17: the wave's damping, 3D and thin, and the largest rise of its energy.
+    ("standing_wave", "amplitude_loss_per_period_pct", "amplitude lost per period, %"),
+    ("standing_wave_thin", "amplitude_loss_per_period_pct", "amplitude lost per period, %"),
+    ("standing_wave", "energy_gain_max_pct", "energy rise, max, % of the wave's"),
+    ("standing_wave_thin", "energy_gain_max_pct", "energy rise, max, % of the wave's"),
     # Mass over density (pf_stats.liquid_volume): the capped count sum (volume_drift_pct) also
     # reads the spread of particle counts as loss (docs/design.md §4.5).
-    "dam_break": ("liquid_volume_drift_pct", "|liquid volume drift|, %"),
-}
+    ("dam_break", "liquid_volume_drift_pct", "|liquid volume drift|, %"),
+]
 
 
 FLOOR = 1e-6
@@ -41,22 +46,22 @@ def load(paths):
     return rows
 
 
-def value(row):
-    metric = CASE_METRIC[row["case"]][0]
+def value(row, metric):
     v = row["metrics"].get(metric)
     # NaN: no period measured. Exact zeros (a tank that starts in equilibrium stays there) are
     # drawn at the floor of the log axis.
     return None if v is None or v != v else max(abs(v), FLOOR)
 
 
-def style(ax, case):
+def style(ax, panel):
+    case, _, label = panel
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.xaxis.set_major_formatter(ScalarFormatter())
     ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_title(case, fontsize=10)
     ax.set_xlabel("GPU ms per frame")
-    ax.set_ylabel(CASE_METRIC[case][1], fontsize=8)
+    ax.set_ylabel(label, fontsize=8)
     ax.grid(True, which="both", alpha=0.3)
 
 
@@ -86,35 +91,37 @@ def main():
     rows = load(sys.argv[1:-1])
     out = sys.argv[-1]
     os.makedirs(out, exist_ok=True)
-    cases = [c for c in CASE_METRIC if any(r["case"] == c for r in rows)]
+    panels = [pn for pn in PANELS if any(r["case"] == pn[0] and pn[1] in r["metrics"] for r in rows)]
     sizes = sorted({r["n"] for r in rows})
     markers = ["o", "s", "^", "D"]
     for knob in sorted({r["knob"] for r in rows}):
-        fig, axes = grid(len(cases))
-        for ax, case in zip(axes, cases):
+        fig, axes = grid(len(panels))
+        for ax, (case, metric, label) in zip(axes, panels):
             for si, n in enumerate(sizes):
-                pts = [r for r in rows if r["knob"] == knob and r["case"] == case and r["n"] == n and value(r) is not None]
+                pts = [r for r in rows if r["knob"] == knob and r["case"] == case and r["n"] == n
+                       and value(r, metric) is not None]
                 for r in pts:
-                    ax.scatter(r["gpu_ms_per_frame"], value(r), marker=markers[si % len(markers)])
+                    ax.scatter(r["gpu_ms_per_frame"], value(r, metric), marker=markers[si % len(markers)])
                     ax.annotate(f'{r["config"]} ({n}³)' if len(sizes) > 1 else r["config"],
-                                (r["gpu_ms_per_frame"], value(r)), fontsize=7, xytext=(3, 3), textcoords="offset points")
-            style(ax, case)
+                                (r["gpu_ms_per_frame"], value(r, metric)), fontsize=7, xytext=(3, 3),
+                                textcoords="offset points")
+            style(ax, (case, metric, label))
         fig.suptitle(f"knob: {knob}")
         fig.tight_layout()
         fig.savefig(os.path.join(out, f"knob_{knob}.png"), dpi=110)
         plt.close(fig)
-    fig, axes = grid(len(cases))
-    for ax, case in zip(axes, cases):
+    fig, axes = grid(len(panels))
+    for ax, (case, metric, label) in zip(axes, panels):
         for si, n in enumerate(sizes):
-            pts = [(r["gpu_ms_per_frame"], value(r), r["config"]) for r in rows
-                   if r["case"] == case and r["n"] == n and value(r) is not None]
+            pts = [(r["gpu_ms_per_frame"], value(r, metric), r["config"]) for r in rows
+                   if r["case"] == case and r["n"] == n and value(r, metric) is not None]
             ax.scatter([p[0] for p in pts], [p[1] for p in pts], alpha=0.35, marker=markers[si % len(markers)],
                        label=f"{n}³ cells" if len(sizes) > 1 else None)
             front = pareto(pts)
             ax.plot([p[0] for p in front], [p[1] for p in front], "-", lw=1.2)
             for ms, err, label in front:
                 ax.annotate(label, (ms, err), fontsize=7, xytext=(3, 3), textcoords="offset points")
-        style(ax, case)
+        style(ax, (case, metric, label))
         if len(sizes) > 1:
             ax.legend(fontsize=7)
     fig.suptitle("Pareto front over every configuration (lines): nothing is both faster and more accurate")

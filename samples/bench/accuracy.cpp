@@ -113,7 +113,8 @@ std::vector<Config> sweep_configs() {
     add("transfer", "pic", [](pf_sim_params& p) { p.flip_ratio = 0.0f; });
     add("transfer", "flip_0.95", [](pf_sim_params&) {});
     add("transfer", "apic", [](pf_sim_params& p) { p.transfer = PF_TRANSFER_APIC; });
-    add("p2g", "p2g_fixed", [](pf_sim_params&) {});
+    add("p2g", "p2g_tiled", [](pf_sim_params&) {});  // the default since issue 18
+    add("p2g", "p2g_fixed", [](pf_sim_params& p) { p.p2g = PF_P2G_FIXED_POINT; });
     add("p2g", "p2g_float", [](pf_sim_params& p) { p.p2g = PF_P2G_FLOAT_ATOMIC; });
     add("p2g", "p2g_gather", [](pf_sim_params& p) { p.p2g = PF_P2G_SORTED_GATHER; });
     add("advection", "euler", [](pf_sim_params&) {});
@@ -160,6 +161,7 @@ std::vector<Config> sweep_configs() {
     combine("balanced_volume_correction_1", [](pf_sim_params& p) { p.volume_correction = 1.0f; });
     combine("balanced_flip_1", [](pf_sim_params& p) { p.flip_ratio = 1.0f; });
     combine("balanced_flip_0.8", [](pf_sim_params& p) { p.flip_ratio = 0.8f; });
+    combine("balanced_mgpcg_1e-02", [](pf_sim_params& p) { p.pressure_tolerance = 1e-2f; });
     combine("balanced_mgpcg_1e-05", [](pf_sim_params& p) { p.pressure_tolerance = 1e-5f; });
     combine("balanced_separation", [](pf_sim_params& p) { p.separation = 1; });
     return out;
