@@ -133,7 +133,8 @@ struct Result {
     pfs::Summary wall, wall_per_substep, cpu, substeps;
     pfs::Summary gpu_total, gpu_per_substep;
     pfs::Summary gpu_pass[PF_PASS_COUNT];
-    uint32_t dispatches[PF_PASS_COUNT] = {};
+    uint32_t dispatches[PF_PASS_COUNT] = {};          // the most in one measured step
+    pfs::Summary dispatch_count[PF_PASS_COUNT];        // per measured step
     size_t gpu_samples = 0;
     bool gpu_valid = false;
     uint32_t flags = 0;
@@ -211,7 +212,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
         float total;
     };
     std::map<uint64_t, Gpu> gpu; // distinct gpu_step -> timings
-    std::vector<double> wall, cpu, iterations, residual;
+    std::vector<double> wall, cpu, iterations, residual, dispatch_count[PF_PASS_COUNT];
     std::map<std::string, std::vector<double>> pass_list;
     std::vector<std::string> pass_order;
     auto collect = [&]() {
@@ -246,7 +247,10 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
         substeps_of[st.steps] = st.substeps;
         iterations.push_back(st.solver_iterations);
         residual.push_back(st.solver_residual);
-        for (int p = 0; p < PF_PASS_COUNT; ++p) r.dispatches[p] = std::max(r.dispatches[p], st.dispatches[p]);
+        for (int p = 0; p < PF_PASS_COUNT; ++p) {
+            r.dispatches[p] = std::max(r.dispatches[p], st.dispatches[p]);
+            dispatch_count[p].push_back(st.dispatches[p]);
+        }
         collect();
         if ((i + 1) % progress_every == 0 && i + 1 < opt.steps) {
             std::printf("    %u/%u  %.2f ms/step (wall)  substeps %u\n", i + 1, opt.steps, s1 - s0, st.substeps);
@@ -287,7 +291,10 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     r.gpu_samples = gpu.size();
     r.gpu_total = pfs::summarize(tot);
     r.gpu_per_substep = pfs::summarize(tot_sub);
-    for (int p = 0; p < PF_PASS_COUNT; ++p) r.gpu_pass[p] = pfs::summarize(pass[p]);
+    for (int p = 0; p < PF_PASS_COUNT; ++p) {
+        r.gpu_pass[p] = pfs::summarize(pass[p]);
+        r.dispatch_count[p] = pfs::summarize(dispatch_count[p]);
+    }
     r.gpu_valid = r.gpu_samples > 0 && r.gpu_total.max > 0;
     r.solver_iterations = pfs::summarize(iterations);
     r.solver_residual = pfs::summarize(residual);
@@ -336,6 +343,30 @@ std::vector<RooflineRow> roofline_rows(const Result& r, const pfb::Ceilings& cei
         if (ceilings.atomics_gops > 0) row.atomics_pct = 100.0 * row.gops / ceilings.atomics_gops;
         rows.push_back(row);
     }
+    return rows;
+}
+
+// Each pass group against the dispatch floor: its median dispatches per step times the GPU time
+// of a dependent dispatch of one workgroup (the least a pass can cost) and of 4,096 idle
+// workgroups (a grid-sized pass that does nothing), over the group's median time. The last row
+// is the whole step.
+struct DispatchRow {
+    std::string name;
+    double ms = 0, dispatches = 0, floor_ms = 0, wide_floor_ms = 0;
+};
+std::vector<DispatchRow> dispatch_rows(const Result& r, const pfb::Ceilings& ceilings) {
+    std::vector<DispatchRow> rows;
+    DispatchRow total{"total", r.gpu_total.median};
+    for (int k = 0; k < PF_PASS_COUNT; ++k) {
+        const double n = r.dispatch_count[k].median;
+        if (n <= 0) continue;
+        rows.push_back({pf_pass_name(pf_pass(k)), r.gpu_pass[k].median, n, n * ceilings.dispatch_us * 1e-3,
+                        n * ceilings.wide_dispatch_us * 1e-3});
+        total.dispatches += n;
+    }
+    total.floor_ms = total.dispatches * ceilings.dispatch_us * 1e-3;
+    total.wide_floor_ms = total.dispatches * ceilings.wide_dispatch_us * 1e-3;
+    rows.push_back(total);
     return rows;
 }
 
@@ -394,7 +425,8 @@ ojson result_json(const Result& r, const pfb::Ceilings& ceilings) {
     ojson passes;
     for (int k = 0; k < PF_PASS_COUNT; ++k) {
         ojson pj = summary_json(r.gpu_pass[k]);
-        pj["dispatches_per_step"] = r.dispatches[k];
+        pj["dispatches_per_step"] = r.dispatches[k];  // the most in one measured step
+        pj["dispatches_per_step_median"] = r.dispatch_count[k].median;
         passes[pf_pass_name(pf_pass(k))] = pj;
     }
     g["passes_ms_per_step"] = passes;
@@ -415,6 +447,18 @@ ojson result_json(const Result& r, const pfb::Ceilings& ceilings) {
         roofline[pf_pass_name(row.pass)] = rj;
     }
     j["roofline"] = roofline;
+    if (ceilings.dispatch_us > 0) {
+        ojson floor;
+        for (const DispatchRow& row : dispatch_rows(r, ceilings)) {
+            ojson fj;
+            fj["ms_per_step"] = row.ms;
+            fj["dispatches_per_step"] = row.dispatches;
+            fj["floor_ms_one_workgroup"] = row.floor_ms;
+            fj["floor_ms_4096_idle_workgroups"] = row.wide_floor_ms;
+            floor[row.name] = fj;
+        }
+        j["dispatch_floor"] = floor;
+    }
     j["flags"] = flag_list(r.flags);
     j["max_speed"] = r.max_speed;
     return j;
@@ -495,6 +539,18 @@ void print_tables(const std::vector<Result>& results, const pfb::Ceilings& ceili
         }
         std::printf("(%s)\n", pfb::traffic_model_note());
     }
+    if (ceilings.dispatch_us > 0) {
+        std::printf("\nPass groups against the dispatch floor (a dependent dispatch: %.2f us of one workgroup, %.2f us "
+                    "of 4,096 idle ones; medians per step):\n",
+                    ceilings.dispatch_us, ceilings.wide_dispatch_us);
+        std::printf("%-16s %-16s %10s %11s %10s %8s %10s %8s\n", "scene", "pass", "ms/step", "dispatches", "floor ms",
+                    "% floor", "wide ms", "% wide");
+        for (const Result* r : ok)
+            for (const DispatchRow& row : dispatch_rows(*r, ceilings))
+                std::printf("%-16s %-16s %10.4f %11.0f %10.4f %8.1f %10.4f %8.1f\n", r->name.c_str(), row.name.c_str(),
+                            row.ms, row.dispatches, row.floor_ms, row.ms > 0 ? 100.0 * row.floor_ms / row.ms : 0.0,
+                            row.wide_floor_ms, row.ms > 0 ? 100.0 * row.wide_floor_ms / row.ms : 0.0);
+    }
     bool any_invalid = false;
     for (const Result* r : ok) any_invalid = any_invalid || !r->gpu_valid;
     if (any_invalid)
@@ -533,8 +589,9 @@ int run(int argc, char** argv) {
     const pfb::Ceilings ceilings = pfb::measure_ceilings();
     if (ceilings.measured()) {
         std::printf("ceilings measured now: compute copy %.0f GB/s (read + write), read %.0f GB/s, random 32-bit "
-                    "atomicAdd %.1f G/s\n",
-                    ceilings.copy_gbps, ceilings.read_gbps, ceilings.atomics_gops);
+                    "atomicAdd %.1f G/s; a dependent dispatch %.2f us (indirect %.2f, 4,096 idle workgroups %.2f)\n",
+                    ceilings.copy_gbps, ceilings.read_gbps, ceilings.atomics_gops, ceilings.dispatch_us,
+                    ceilings.indirect_dispatch_us, ceilings.wide_dispatch_us);
     } else {
         std::printf("ceilings: not measured (this GL's timer queries read 0)\n");
     }
@@ -583,6 +640,9 @@ int run(int argc, char** argv) {
         cj["copy_gb_per_s"] = ceilings.copy_gbps;
         cj["read_gb_per_s"] = ceilings.read_gbps;
         cj["atomics_g_per_s"] = ceilings.atomics_gops;
+        cj["dispatch_us"] = ceilings.dispatch_us;
+        cj["indirect_dispatch_us"] = ceilings.indirect_dispatch_us;
+        cj["wide_dispatch_us"] = ceilings.wide_dispatch_us;
         cj["traffic_model"] = pfb::traffic_model_note();
         j["ceilings"] = cj;
         ojson arr = ojson::array();

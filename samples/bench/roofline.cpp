@@ -53,6 +53,19 @@ void main() {
 }
 )";
 
+// A link in a chain of dependent dispatches: one workgroup adds to its words and writes the
+// indirect record (one workgroup) the next indirect dispatch reads; every other workgroup of a
+// wider dispatch does nothing (the cost of launching and draining a grid-sized dispatch).
+const char* kChain = R"(#version 430
+layout(local_size_x = 256) in;
+layout(std430, binding = 0) buffer Words { uint words[]; };
+void main() {
+    if (gl_WorkGroupID.x != 0u || gl_WorkGroupID.y != 0u) return;
+    words[4u + gl_LocalInvocationID.x] += 1u;
+    if (gl_LocalInvocationID.x == 0u) words[0] = 1u, words[1] = 1u, words[2] = 1u;
+}
+)";
+
 constexpr GLuint kGroupsX = 32768;  // dispatches of 2D grids of 256-invocation workgroups
 
 // GPU nanoseconds between timestamps around a (groups_x, groups_y) grid of workgroups of the bound
@@ -80,6 +93,34 @@ double time_dispatch(GLuint groups_x, GLuint groups_y, int runs) {
     }
     std::sort(ms.begin(), ms.end());
     return ms[ms.size() / 2];
+}
+
+// GPU microseconds per dispatch of `chain` dependent dispatches of (groups, 1) workgroups of the
+// bound program, each after a storage barrier (indirect: from the record at the bound dispatch
+// indirect buffer's start, after a command barrier too); the median of 5 chains after one untimed.
+double time_chain(GLuint groups, bool indirect, int chain) {
+    std::vector<double> us;
+    for (int r = 0; r <= 5; ++r) {
+        GLuint q[2] = {0, 0};
+        glGenQueries(2, q);
+        glQueryCounter(q[0], GL_TIMESTAMP);
+        for (int k = 0; k < chain; ++k) {
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (indirect ? GL_COMMAND_BARRIER_BIT : 0));
+            if (indirect)
+                glDispatchComputeIndirect(0);
+            else
+                glDispatchCompute(groups, 1, 1);
+        }
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        glQueryCounter(q[1], GL_TIMESTAMP);
+        GLuint64 t0 = 0, t1 = 0;
+        glGetQueryObjectui64v(q[0], GL_QUERY_RESULT, &t0);
+        glGetQueryObjectui64v(q[1], GL_QUERY_RESULT, &t1);
+        glDeleteQueries(2, q);
+        if (r > 0) us.push_back(t1 > t0 ? double(t1 - t0) * 1e-3 / chain : 0.0);
+    }
+    std::sort(us.begin(), us.end());
+    return us[us.size() / 2];
 }
 
 GLuint make_buffer(GLsizeiptr bytes) {
@@ -153,11 +194,29 @@ Ceilings measure_ceilings() {
         if (atomic_ms > 0) c.atomics_gops = double(kGroupsX) * 2 * 256 * 8 / (atomic_ms * 1e6);
         glDeleteBuffers(1, &counters);
     }
+    const GLuint chain = pfs::link_compute_program(kChain, "roofline_dispatch_chain");
+    if (timed) {
+        // Dependent dispatches: 1,000 in a chain, timed as one.
+        const GLuint words = make_buffer(GLsizeiptr(260) * 4);
+        const GLuint record[3] = {1, 1, 1};
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, words);
+        glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof record, record);
+        glUseProgram(chain);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, words);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, words);
+        constexpr int kChainLength = 1000;
+        c.dispatch_us = time_chain(1, false, kChainLength);
+        c.indirect_dispatch_us = time_chain(1, true, kChainLength);
+        c.wide_dispatch_us = time_chain(4096, false, kChainLength);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+        glDeleteBuffers(1, &words);
+    }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
     glUseProgram(0);
     glDeleteProgram(copy);
     glDeleteProgram(atomics);
+    glDeleteProgram(chain);
     pfs::check_gl("measure_ceilings");
     return c;
 }

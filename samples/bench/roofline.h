@@ -12,10 +12,16 @@ struct Ceilings {
     double copy_gbps = 0;     // a compute kernel copying vec4s (the best of three ways), bytes read + written per second / 1e9
     double read_gbps = 0;     // the same reading only (kernels that read more than they write can pass the copy's rate)
     double atomics_gops = 0;  // 32-bit atomicAdd to random addresses of a 64 MiB buffer, per second / 1e9
+    // GPU microseconds per dispatch in a chain of dependent dispatches, each after a storage
+    // barrier as pflip's passes are: of one workgroup (the least a pass can cost), of one
+    // workgroup through an indirect record the previous dispatch wrote (a command barrier too,
+    // as the solvers' stoppable passes), and of 4,096 workgroups of 256 doing nothing (a pass
+    // over a 128x64x64 grid's cells).
+    double dispatch_us = 0, indirect_dispatch_us = 0, wide_dispatch_us = 0;
     bool measured() const { return copy_gbps > 0; }  // false where timer queries read 0 (llvmpipe)
 };
 
-// Runs both microbenchmarks on the current context (a few hundred MiB of buffers, freed after).
+// Runs the microbenchmarks on the current context (a few hundred MiB of buffers, freed after).
 Ceilings measure_ceilings();
 
 // What one pass group moves per substep by the model: every particle attribute and grid field it
