@@ -18,8 +18,7 @@ using pf::enum_bits;
 
 using pf::finite_n;
 using pf::guarded;
-
-std::string str(double v) { return pf::number_string(v); }
+using pf::number_string;
 
 // Determinant of a column-major 4x4 matrix, in double.
 double determinant(const float m[16]) {
@@ -60,9 +59,9 @@ struct Validator {
                            std::to_string(c.viewport[i]));
         }
         if (!(std::isfinite(c.near_plane) && c.near_plane > 0.0f))
-            return bad("camera->near_plane must be finite and > 0, got " + str(c.near_plane));
+            return bad("camera->near_plane must be finite and > 0, got " + number_string(c.near_plane));
         if (!(std::isfinite(c.far_plane) && c.far_plane > c.near_plane))
-            return bad("camera->far_plane must be finite and > near_plane, got " + str(c.far_plane));
+            return bad("camera->far_plane must be finite and > near_plane, got " + number_string(c.far_plane));
         if (enum_bits(c.depth_convention) > PF_DEPTH_REVERSED_Z)
             return bad("camera->depth_convention is not a pf_depth_convention (" + std::to_string(int32_t(enum_bits(c.depth_convention))) + ")");
         return PF_OK;
@@ -70,7 +69,7 @@ struct Validator {
 
     pf_result ssf(const pf_ssf_params& p) const {
         if (!(std::isfinite(p.particle_radius) && p.particle_radius > 0.0f))
-            return bad("params->particle_radius must be finite and >= 0 (0 = default), got " + str(p.particle_radius));
+            return bad("params->particle_radius must be finite and >= 0 (0 = default), got " + number_string(p.particle_radius));
         if (enum_bits(p.filter) > PF_SSF_FILTER_NONE)
             return bad("params->filter is not a pf_ssf_filter (" + std::to_string(int32_t(enum_bits(p.filter))) + ")");
         if (p.filter_radius < 1 || p.filter_radius > 64)
@@ -79,18 +78,18 @@ struct Validator {
             return bad("params->filter_iterations must be in [1, 16] (0 = default), got " +
                        std::to_string(p.filter_iterations));
         if (!(std::isfinite(p.filter_depth_range) && p.filter_depth_range > 0.0f))
-            return bad("params->filter_depth_range must be finite and >= 0 (0 = default), got " + str(p.filter_depth_range));
+            return bad("params->filter_depth_range must be finite and >= 0 (0 = default), got " + number_string(p.filter_depth_range));
         for (int c = 0; c < 3; ++c) {
             if (!(std::isfinite(p.absorption[c]) && p.absorption[c] >= 0.0f))
-                return bad("params->absorption[" + std::to_string(c) + "] must be finite and >= 0, got " + str(p.absorption[c]));
+                return bad("params->absorption[" + std::to_string(c) + "] must be finite and >= 0, got " + number_string(p.absorption[c]));
         }
         if (!(std::isfinite(p.refraction) && std::fabs(p.refraction) <= 1.0f))
-            return bad("params->refraction must be in [-1, 1], got " + str(p.refraction));
-        if (!(p.fresnel_f0 >= 0.0f && p.fresnel_f0 <= 1.0f)) return bad("params->fresnel_f0 must be in [0, 1], got " + str(p.fresnel_f0));
+            return bad("params->refraction must be in [-1, 1], got " + number_string(p.refraction));
+        if (!(p.fresnel_f0 >= 0.0f && p.fresnel_f0 <= 1.0f)) return bad("params->fresnel_f0 must be in [0, 1], got " + number_string(p.fresnel_f0));
         if (!(std::isfinite(p.specular) && p.specular >= 0.0f))
-            return bad("params->specular must be finite and >= 0, got " + str(p.specular));
+            return bad("params->specular must be finite and >= 0, got " + number_string(p.specular));
         if (!(p.shininess >= 1.0f && p.shininess <= 10000.0f))
-            return bad("params->shininess must be in [1, 10000], got " + str(p.shininess));
+            return bad("params->shininess must be in [1, 10000], got " + number_string(p.shininess));
         const float* l = p.light_direction;
         if (!finite_n(l, 3) || double(l[0]) * l[0] + double(l[1]) * l[1] + double(l[2]) * l[2] < 1e-12)
             return bad("params->light_direction must be finite and non-zero");
@@ -101,12 +100,12 @@ struct Validator {
 
     pf_result particles(const pf_particle_params& p) const {
         if (!(std::isfinite(p.particle_radius) && p.particle_radius > 0.0f))
-            return bad("params->particle_radius must be finite and >= 0 (0 = default), got " + str(p.particle_radius));
+            return bad("params->particle_radius must be finite and >= 0 (0 = default), got " + number_string(p.particle_radius));
         if (enum_bits(p.color_by) > PF_PARTICLE_COLOR_UNIFORM)
             return bad("params->color_by is not a pf_particle_color (" + std::to_string(int32_t(enum_bits(p.color_by))) + ")");
         if (!finite_n(p.range, 2) || p.range[0] == p.range[1])
-            return bad("params->range must be finite with range[0] != range[1], got [" + str(p.range[0]) + ", " +
-                       str(p.range[1]) + "]");
+            return bad("params->range must be finite with range[0] != range[1], got [" + number_string(p.range[0]) + ", " +
+                       number_string(p.range[1]) + "]");
         if (!finite_n(p.color_low, 3) || !finite_n(p.color_high, 3))
             return bad("params->color_low and color_high must be finite");
         return PF_OK;

@@ -11,8 +11,6 @@ namespace pf {
 namespace {
 constexpr float kMinCellSize = 1e-5f, kMaxCellSize = 1e5f;
 constexpr double kMaxCellsFromWorldOrigin = 65536.0;
-
-std::string str(double v) { return number_string(v); }
 }  // namespace
 
 // The solver's stopping rule, pressure_iterations and pressure_tolerance, is not resolved: with
@@ -47,19 +45,19 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
         return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": " + what);
     };
     if (!finite3(p.gravity)) return bad("params.gravity must be finite");
-    if (!(p.flip_ratio >= 0.0f && p.flip_ratio <= 1.0f)) return bad("params.flip_ratio must be in [0, 1], got " + str(p.flip_ratio));
+    if (!(p.flip_ratio >= 0.0f && p.flip_ratio <= 1.0f)) return bad("params.flip_ratio must be in [0, 1], got " + number_string(p.flip_ratio));
     if (p.pressure_iterations < 1 || p.pressure_iterations > 10000)
         return bad("params.pressure_iterations must be in [1, 10000], got " + std::to_string(p.pressure_iterations));
-    if (!(p.jacobi_omega > 0.0f && p.jacobi_omega <= 1.0f)) return bad("params.jacobi_omega must be in (0, 1], got " + str(p.jacobi_omega));
-    if (!(p.cfl > 0.0f && p.cfl <= 16.0f)) return bad("params.cfl must be in (0, 16], got " + str(p.cfl));
+    if (!(p.jacobi_omega > 0.0f && p.jacobi_omega <= 1.0f)) return bad("params.jacobi_omega must be in (0, 1], got " + number_string(p.jacobi_omega));
+    if (!(p.cfl > 0.0f && p.cfl <= 16.0f)) return bad("params.cfl must be in (0, 16], got " + number_string(p.cfl));
     if (p.max_substeps < 1 || p.max_substeps > 64)
         return bad("params.max_substeps must be in [1, 64], got " + std::to_string(p.max_substeps));
     if (p.separation > 1) return bad("params.separation must be 0 or 1, got " + std::to_string(p.separation));
     if (enum_bits(p.pressure_solver) >= PF_PRESSURE_SOLVER_COUNT)
         return bad("params.pressure_solver is not a pf_pressure_solver value, got " + std::to_string(int32_t(enum_bits(p.pressure_solver))));
     if (!(p.pressure_tolerance > 0.0f && p.pressure_tolerance < 1.0f))
-        return bad("params.pressure_tolerance must be in (0, 1), got " + str(p.pressure_tolerance));
-    if (!(p.sor_omega > 0.0f && p.sor_omega < 2.0f)) return bad("params.sor_omega must be in (0, 2), got " + str(p.sor_omega));
+        return bad("params.pressure_tolerance must be in (0, 1), got " + number_string(p.pressure_tolerance));
+    if (!(p.sor_omega > 0.0f && p.sor_omega < 2.0f)) return bad("params.sor_omega must be in (0, 2), got " + number_string(p.sor_omega));
     if (enum_bits(p.p2g) >= PF_P2G_COUNT) return bad("params.p2g is not a pf_p2g value, got " + std::to_string(int32_t(enum_bits(p.p2g))));
     if (enum_bits(p.free_surface) >= PF_FREE_SURFACE_COUNT)
         return bad("params.free_surface is not a pf_free_surface value, got " + std::to_string(int32_t(enum_bits(p.free_surface))));
@@ -68,11 +66,11 @@ pf_result validate_params(const pf_sim_params& p, const Log& log, const char* fn
     if (enum_bits(p.advection) >= PF_ADVECTION_COUNT)
         return bad("params.advection is not a pf_advection value, got " + std::to_string(int32_t(enum_bits(p.advection))));
     if (!(p.volume_correction >= 0.0f && p.volume_correction <= 1.0f))
-        return bad("params.volume_correction must be in [0, 1], got " + str(p.volume_correction));
+        return bad("params.volume_correction must be in [0, 1], got " + number_string(p.volume_correction));
     if (!(p.energy_gain_limit > 0.0f && p.energy_gain_limit <= 100.0f))
-        return bad("params.energy_gain_limit must be in (0, 100], got " + str(p.energy_gain_limit));
+        return bad("params.energy_gain_limit must be in (0, 100], got " + number_string(p.energy_gain_limit));
     if (!(p.volume_loss_limit > 0.0f && p.volume_loss_limit <= 1.0f))
-        return bad("params.volume_loss_limit must be in (0, 1], got " + str(p.volume_loss_limit));
+        return bad("params.volume_loss_limit must be in (0, 1], got " + number_string(p.volume_loss_limit));
     if (p.extrapolation_layers < 1 || p.extrapolation_layers > 16)
         return bad("params.extrapolation_layers must be in [1, 16], got " + std::to_string(p.extrapolation_layers));
     return PF_OK;
@@ -88,10 +86,10 @@ pf_result validate_desc(const pf_sim_desc& d, const Log& log) {
         cells *= d.grid_size[a];
     }
     if (cells > (uint64_t(1) << 26)) return bad("desc.grid_size has " + std::to_string(cells) + " cells; at most 2^26 are supported");
-    if (!(std::isfinite(d.cell_size) && d.cell_size > 0.0f)) return bad("desc.cell_size must be finite and > 0, got " + str(d.cell_size));
+    if (!(std::isfinite(d.cell_size) && d.cell_size > 0.0f)) return bad("desc.cell_size must be finite and > 0, got " + number_string(d.cell_size));
     if (!finite3(d.origin)) return bad("desc.origin must be finite");
     if (d.cell_size < kMinCellSize || d.cell_size > kMaxCellSize)
-        return bad("desc.cell_size must be in [" + str(kMinCellSize) + ", " + str(kMaxCellSize) + "] m, got " + str(d.cell_size));
+        return bad("desc.cell_size must be in [" + number_string(kMinCellSize) + ", " + number_string(kMaxCellSize) + "] m, got " + number_string(d.cell_size));
     for (int a = 0; a < 3; ++a) {
         // Positions are floats: the far corner must exist as one, and a particle anywhere in the
         // domain must still resolve a fraction of a cell (float keeps 24 bits: at 2^16 cells from
@@ -99,7 +97,7 @@ pf_result validate_desc(const pf_sim_desc& d, const Log& log) {
         const double lo = d.origin[a], hi = lo + double(d.cell_size) * d.grid_size[a];
         const double reach = std::max(std::abs(lo), std::abs(hi)) / d.cell_size;
         if (!(reach <= kMaxCellsFromWorldOrigin)) {
-            return bad("desc.origin[" + std::to_string(a) + "] puts the domain " + str(reach) +
+            return bad("desc.origin[" + std::to_string(a) + "] puts the domain " + number_string(reach) +
                        " cells from the world origin; at most 2^16 are resolvable in float (move the origin closer)");
         }
     }
@@ -107,12 +105,12 @@ pf_result validate_desc(const pf_sim_desc& d, const Log& log) {
         return bad("desc.max_particles must be in [1, 2^28], got " + std::to_string(d.max_particles));
     // The fixed-point P2G resolves max_speed / 2^20 per full-weight particle: above 1e4 m/s a
     // particle's velocity would be rounded by more than 1 cm/s.
-    if (!(d.max_speed > 0.0f && d.max_speed <= 1e4f)) return bad("desc.max_speed must be in (0, 1e4] m/s, got " + str(d.max_speed));
-    if (!(std::isfinite(d.density) && d.density > 0.0f)) return bad("desc.density must be finite and > 0, got " + str(d.density));
+    if (!(d.max_speed > 0.0f && d.max_speed <= 1e4f)) return bad("desc.max_speed must be in (0, 1e4] m/s, got " + number_string(d.max_speed));
+    if (!(std::isfinite(d.density) && d.density > 0.0f)) return bad("desc.density must be finite and > 0, got " + number_string(d.density));
     const uint32_t ppc = d.fill_particles_per_cell;
     if (ppc != 1 && ppc != 8 && ppc != 27 && ppc != 64)
         return bad("desc.fill_particles_per_cell must be 1, 8, 27 or 64, got " + std::to_string(ppc));
-    if (!(d.fill_jitter >= 0.0f && d.fill_jitter <= 1.0f)) return bad("desc.fill_jitter must be in [0, 1], got " + str(d.fill_jitter));
+    if (!(d.fill_jitter >= 0.0f && d.fill_jitter <= 1.0f)) return bad("desc.fill_jitter must be in [0, 1], got " + number_string(d.fill_jitter));
     if (pf_result r = validate_features(d.features, log, "pf_create"); r != PF_OK) return r;
     return validate_params(d.params, log, "pf_create");
 }
@@ -136,7 +134,7 @@ pf_result validate_particles(const pf_sim_desc& d, const float* xyz, const float
             if (!(p[a] >= lo && p[a] <= hi)) {
                 return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_add_particles: particle " + std::to_string(i) +
                                                                 " lies outside the domain on axis " + std::to_string(a) +
-                                                                " (" + str(p[a]) + " not in [" + str(lo) + ", " + str(hi) + "])");
+                                                                " (" + number_string(p[a]) + " not in [" + number_string(lo) + ", " + number_string(hi) + "])");
             }
         }
         if (!vel) continue;
@@ -144,7 +142,7 @@ pf_result validate_particles(const pf_sim_desc& d, const float* xyz, const float
         if (!finite3(v)) return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_add_particles: velocity " + std::to_string(i) + " is not finite");
         if (double(v[0]) * v[0] + double(v[1]) * v[1] + double(v[2]) * v[2] > max_speed2) {
             return log.error(PF_ERROR_INVALID_ARGUMENT, "pf_add_particles: velocity " + std::to_string(i) +
-                                                            " exceeds desc.max_speed (" + str(d.max_speed) + " m/s)");
+                                                            " exceeds desc.max_speed (" + number_string(d.max_speed) + " m/s)");
         }
     }
     return PF_OK;

@@ -110,4 +110,21 @@ private:
     uint32_t next_id_ = 1;
 };
 
+// What an effect that uploads its object list inherits: the host list, read with list() and
+// changed through edit(), which marks the GPU copy stale (dirty_) for the next step's upload.
+template <typename T, uint32_t Capacity>
+class UploadedObjects {
+public:
+    using List = ObjectList<T, Capacity>;
+    const List& list() const { return list_; }
+    List& edit() {
+        dirty_ = true;
+        return list_;
+    }
+
+protected:
+    List list_;
+    bool dirty_ = true;  // the GPU copy differs from list_
+};
+
 }  // namespace pf

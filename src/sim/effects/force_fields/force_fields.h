@@ -14,9 +14,8 @@ namespace pf {
 // Also checks a snapshot's fields on restore. (force_fields_api.cpp, with the entry points)
 pf_result validate_force_field(const pf_force_field& field, const Log& log, const char* fn);
 
-class ForceFieldsEffect final : public Effect {
+class ForceFieldsEffect final : public Effect, public UploadedObjects<pf_force_field, PF_MAX_FORCE_FIELDS> {
 public:
-    using List = ObjectList<pf_force_field, PF_MAX_FORCE_FIELDS>;
     static constexpr uint32_t kFeature = PF_FEATURE_FORCE_FIELDS;
     uint32_t feature() const override { return kFeature; }
     const char* name() const override { return "force_fields"; }
@@ -30,12 +29,6 @@ public:
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;
     bool does_work() const override { return list_.size() > 0; }
 
-    // The host list; edit() for a change, which the next step uploads.
-    const List& list() const { return list_; }
-    List& edit() {
-        dirty_ = true;
-        return list_;
-    }
     // The CFL estimate (design.md §5): the largest acceleration the fields without drag can add,
     // and the fastest wind a drag field pulls towards (drag never pulls beyond it).
     CflBound cfl_bound(float) const override { return {max_acceleration(), max_wind_speed()}; }
@@ -44,8 +37,6 @@ private:
     float max_acceleration() const;  // m/s^2
     float max_wind_speed() const;    // m/s
 
-    List list_;
-    bool dirty_ = true;
     gl::Buffer records_;  // PF_MAX_FORCE_FIELDS records (force_field_types.h)
     StatId stat_ = 0;
     uint32_t uploaded_ = 0;  // records live on the GPU

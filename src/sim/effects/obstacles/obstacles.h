@@ -36,9 +36,8 @@ struct ObstacleEntry {
 // logged, otherwise. Puts back the active unit's 3D binding.
 pf_result check_sdf_texture(const gl::Api& gl, const Log& log, const char* fn, GLuint name, bool& normalized);
 
-class ObstaclesEffect final : public Effect {
+class ObstaclesEffect final : public Effect, public UploadedObjects<ObstacleEntry, PF_MAX_OBSTACLES> {
 public:
-    using List = ObjectList<ObstacleEntry, PF_MAX_OBSTACLES>;
     ~ObstaclesEffect() override;
     static constexpr uint32_t kFeature = PF_FEATURE_OBSTACLES;
     uint32_t feature() const override { return kFeature; }
@@ -56,12 +55,6 @@ public:
     // Moving obstacles put energy into the liquid.
     bool does_work() const override { return moving_; }
 
-    // The host list; edit() for a change, which the next step uploads.
-    const List& list() const { return list_; }
-    List& edit() {
-        dirty_ = true;
-        return list_;
-    }
     // The CFL estimate: the liquid they push reaches at most their fastest surface point.
     CflBound cfl_bound(float) const override { return {0.0f, max_surface_speed()}; }
     // Fastest surface point of the obstacles on the list, m/s (|v| + |w| times the farthest
@@ -77,8 +70,6 @@ private:
 
     static constexpr int kReadbackSlots = 3;
     const gl::Api* gl_ = nullptr;
-    List list_;
-    bool dirty_ = true;
     bool moving_ = false;      // an uploaded obstacle has a non-zero velocity
     gl::Buffer records_;       // PF_MAX_OBSTACLES records (obstacle_shapes.h)
     gl::Object sdf_sampler_;   // linear, clamped: how the engine's SDF textures are sampled

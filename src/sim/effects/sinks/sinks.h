@@ -15,9 +15,8 @@ namespace pf {
 // snapshot's sinks on restore. (sinks_api.cpp, with the entry points)
 pf_result validate_sink(const pf_sink& sink, const pf_sim_desc& desc, const Log& log, const char* fn);
 
-class SinksEffect final : public Effect {
+class SinksEffect final : public Effect, public UploadedObjects<pf_sink, PF_MAX_SINKS> {
 public:
-    using List = ObjectList<pf_sink, PF_MAX_SINKS>;
     // `desc` resolved and validated: its capacity and domain (snapshots validate against it).
     explicit SinksEffect(const pf_sim_desc& desc) : desc_(desc), capacity_(desc.max_particles) {}
     static constexpr uint32_t kFeature = PF_FEATURE_SINKS;
@@ -33,18 +32,10 @@ public:
     void save_state(ByteWriter& out) const override { list_.save(out); }
     pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;
 
-    // The host list; edit() for a change, which the next step uploads.
-    const List& list() const { return list_; }
-    List& edit() {
-        dirty_ = true;
-        return list_;
-    }
 
 private:
     pf_sim_desc desc_;
     uint32_t capacity_;
-    List list_;
-    bool dirty_ = true;
     gl::Buffer records_;          // PF_MAX_SINKS records (effects/sinks/sink_records.h)
     gl::Buffer state_;            // the compaction counters (PF_SINK_* words)
     gl::Buffer holes_, movers_;   // slot lists, one uint per particle slot
