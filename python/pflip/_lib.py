@@ -109,6 +109,9 @@ _PROTOTYPES = {
     "pf_init_domain_motion": (t.c_enum, [_P(t.DomainMotion), ctypes.c_uint32]),
     "pf_set_domain_motion": (t.c_enum, [_sim, _P(t.DomainMotion)]),
     "pf_get_domain_motion": (t.c_enum, [_sim, _P(t.DomainMotion)]),
+    "pf_init_vorticity_confinement": (t.c_enum, [_P(t.VorticityConfinement), ctypes.c_uint32]),
+    "pf_set_vorticity_confinement": (t.c_enum, [_sim, _P(t.VorticityConfinement)]),
+    "pf_get_vorticity_confinement": (t.c_enum, [_sim, _P(t.VorticityConfinement)]),
     "pf_get_obstacle_force": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.ObstacleForce)]),
 }
 

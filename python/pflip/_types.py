@@ -111,7 +111,8 @@ class Feature(enum.IntFlag):
     EMITTERS = 1 << 2
     SINKS = 1 << 3
     DOMAIN_MOTION = 1 << 4
-    ALL = FORCE_FIELDS | OBSTACLES | EMITTERS | SINKS | DOMAIN_MOTION
+    VORTICITY_CONFINEMENT = 1 << 5
+    ALL = FORCE_FIELDS | OBSTACLES | EMITTERS | SINKS | DOMAIN_MOTION | VORTICITY_CONFINEMENT
 
 
 class ForceFieldType(enum.IntEnum):
@@ -534,6 +535,24 @@ class DomainMotion(_Struct):
     ]
 
 
+class VorticityConfinement(_Struct):
+    """pf_vorticity_confinement (PF_FEATURE_VORTICITY_CONFINEMENT): puts back the swirls the grid
+    smooths away; strength is epsilon, dimensionless, 0..1. Start from
+    VorticityConfinement.default(): strength 0.2."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_vorticity_confinement()."""
+        out = cls()
+        _lib().pf_init_vorticity_confinement(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
+
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("strength", ctypes.c_float),
+    ]
+
+
 # C name of each mirrored struct, for the layout test.
 C_NAMES = {
     Logger: "pf_logger",
@@ -551,6 +570,7 @@ C_NAMES = {
     Emitter: "pf_emitter",
     Sink: "pf_sink",
     DomainMotion: "pf_domain_motion",
+    VorticityConfinement: "pf_vorticity_confinement",
     ObstacleForce: "pf_obstacle_force",
 }
 

@@ -57,6 +57,7 @@ _ENUM_FIELDS = {
     t.Emitter: {"shape": t.EmitterShape, "rate_unit": t.RateUnit},
     t.Sink: {"shape": t.SinkShape},
     t.DomainMotion: {},
+    t.VorticityConfinement: {},
 }
 
 
@@ -488,6 +489,22 @@ class Simulation:
         m = _effect_struct(t.DomainMotion, self.domain_motion if motion is None else motion, fields,
                            "pf_set_domain_motion")
         self._call("pf_set_domain_motion", ctypes.byref(m))
+
+    @property
+    def vorticity_confinement(self):
+        """pf_get_vorticity_confinement: the vorticity confinement last set (a VorticityConfinement)."""
+        out = t.VorticityConfinement()
+        self._call("pf_get_vorticity_confinement", ctypes.byref(out))
+        return out
+
+    def set_vorticity_confinement(self, confinement=None, **fields):
+        """pf_set_vorticity_confinement: confinement (a VorticityConfinement; default: as it is now)
+        with the keyword fields set, e.g. set_vorticity_confinement(strength=0.5). Acts while
+        Feature.VORTICITY_CONFINEMENT is on. A non-finite strength or one outside 0..1 raises
+        PflipError(ERROR_INVALID_ARGUMENT) and changes nothing."""
+        c = _effect_struct(t.VorticityConfinement, self.vorticity_confinement if confinement is None else confinement,
+                           fields, "pf_set_vorticity_confinement")
+        self._call("pf_set_vorticity_confinement", ctypes.byref(c))
 
     def obstacle_force(self, obstacle_id):
         """pf_get_obstacle_force: the newest ObstacleForce of obstacle obstacle_id (force in N, torque

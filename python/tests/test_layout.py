@@ -2,8 +2,9 @@
 
 A C program generated from the ctypes definitions prints sizeof and offsetof of every struct and
 field and the value of every enumerator; a struct that grew in pf.h (a field appended) changes its
-sizeof, a retyped field its size, and an enumerator pf.h gained but Python lacks is found by
-scanning the header. Needs a C compiler ($CC, else cc) and PFLIP_INCLUDE_DIRS.
+sizeof, a retyped field its size, and an enumerator, struct or entry point pf.h gained but
+Python lacks is found by scanning the header. Needs a C compiler ($CC, else cc) and
+PFLIP_INCLUDE_DIRS.
 """
 import ctypes
 import os
@@ -113,3 +114,14 @@ def test_every_struct_of_the_header_is_mirrored():
     structs = set(re.findall(r"^typedef struct (pf_[a-z0-9_]+) \{", header_text(), re.M))
     assert structs, "the struct pattern no longer matches pf.h"
     assert structs == set(t.C_NAMES.values())
+
+
+def test_every_entry_point_of_the_header_has_a_prototype():
+    # A pf_* function pf.h declares (PF_API) that pflip._lib does not declare would be called with
+    # ctypes' default int arguments and return; and a prototype of a name pf.h lacks is stale.
+    from pflip import _lib
+
+    functions = set(re.findall(r"^PF_API\s[^;]*?\b(pf_[a-z0-9_]+)\s*\(", header_text(), re.M))
+    assert {"pf_create", "pf_step", "pf_get_domain_motion"} <= functions, "the PF_API pattern no longer matches pf.h"
+    assert sorted(functions - set(_lib._PROTOTYPES)) == [], "pf.h entry points without a prototype in pflip/_lib.py"
+    assert sorted(set(_lib._PROTOTYPES) - functions) == [], "prototypes in pflip/_lib.py of no pf.h entry point"

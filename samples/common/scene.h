@@ -40,6 +40,7 @@
 //                "radius": 0.1 } ],                                 pf_sink
 //   "domain_motion": { "position": [..], "rotation": [..], "velocity": [..],
 //                      "angular_velocity": [..] }                  pf_domain_motion, set once
+//   "vorticity_confinement": { "strength": 0.2 }                   pf_vorticity_confinement, set once
 // }
 // Effect objects start from pf_default_*() and take the keys given; the library validates them
 // when the scene is created, and an error names the object's JSON Pointer ("/emitters/1").
@@ -101,6 +102,8 @@ struct Scene {
     std::vector<pf_sink> sinks;
     bool has_domain_motion = false;
     pf_domain_motion domain_motion{};
+    bool has_vorticity_confinement = false;
+    pf_vorticity_confinement vorticity_confinement{};
 
     /// World-space bounds of the grid.
     vec3f domain_min() const { return origin; }

@@ -76,7 +76,8 @@ const Names<uint32_t> kFeatures = {{"force_fields", PF_FEATURE_FORCE_FIELDS},
                                    {"obstacles", PF_FEATURE_OBSTACLES},
                                    {"emitters", PF_FEATURE_EMITTERS},
                                    {"sinks", PF_FEATURE_SINKS},
-                                   {"domain_motion", PF_FEATURE_DOMAIN_MOTION}};
+                                   {"domain_motion", PF_FEATURE_DOMAIN_MOTION},
+                                   {"vorticity_confinement", PF_FEATURE_VORTICITY_CONFINEMENT}};
 
 pf_force_field read_field(const ObjectReader& r) {
     r.p.check_keys(r.obj, r.path, {"type", "position", "vector", "strength", "radius", "drag"});
@@ -181,6 +182,13 @@ pf_domain_motion read_motion(const ObjectReader& r) {
     return m;
 }
 
+pf_vorticity_confinement read_confinement(const ObjectReader& r) {
+    r.p.check_keys(r.obj, r.path, {"strength"});
+    pf_vorticity_confinement c = pf_default_vorticity_confinement();
+    r.real("strength", c.strength);
+    return c;
+}
+
 } // namespace
 
 void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
@@ -214,6 +222,13 @@ void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
         s.domain_motion = read_motion(ObjectReader{p, p.object(*it, "/domain_motion"), "/domain_motion"});
         s.has_domain_motion = true;
     }
+    if (auto it = root.find("vorticity_confinement"); it != root.end()) {
+        if (!(s.features & PF_FEATURE_VORTICITY_CONFINEMENT))
+            p.fail("/vorticity_confinement", "is given but \"vorticity_confinement\" is not listed in /features");
+        s.vorticity_confinement =
+            read_confinement(ObjectReader{p, p.object(*it, "/vorticity_confinement"), "/vorticity_confinement"});
+        s.has_vorticity_confinement = true;
+    }
 }
 
 uint32_t parse_feature_list(const std::string& list, const char* what) {
@@ -234,7 +249,7 @@ uint32_t parse_feature_list(const std::string& list, const char* what) {
         }
         if (!known) {
             throw Error(std::string(what) + ": unknown feature '" + name +
-                        "' (force_fields, obstacles, emitters, sinks, domain_motion, all, none)");
+                        "' (force_fields, obstacles, emitters, sinks, domain_motion, vorticity_confinement, all, none)");
         }
     }
     return bits;

@@ -48,6 +48,8 @@ SceneEffectIds add_scene_effects(pf_sim* sim, const Scene& s) {
     add_list(sim, s, "sinks", s.sinks, pf_add_sink, ids.sinks);
     if (s.has_domain_motion && pf_set_domain_motion(sim, &s.domain_motion) != PF_OK)
         throw Error(s.path + ": /domain_motion: refused by the library (the log says why)");
+    if (s.has_vorticity_confinement && pf_set_vorticity_confinement(sim, &s.vorticity_confinement) != PF_OK)
+        throw Error(s.path + ": /vorticity_confinement: refused by the library (the log says why)");
     return ids;
 }
 

@@ -1029,6 +1029,22 @@ void Viewer::ui_effects() {
             report("pf_set_features", pf_set_features(sim_.get(), on ? (features | t.bit) : (features & ~t.bit)));
         }
     }
+    {
+        // Vorticity confinement: a switch and its strength (no objects).
+        bool on = (features & PF_FEATURE_VORTICITY_CONFINEMENT) != 0;
+        if (ImGui::Checkbox("vorticity confinement", &on)) {
+            log_.clear();
+            report("pf_set_features",
+                   pf_set_features(sim_.get(), on ? (features | PF_FEATURE_VORTICITY_CONFINEMENT)
+                                                  : (features & ~uint32_t(PF_FEATURE_VORTICITY_CONFINEMENT))));
+        }
+        pf_vorticity_confinement c = pf_default_vorticity_confinement();
+        pfs::check(pf_get_vorticity_confinement(sim_.get(), &c), "pf_get_vorticity_confinement");
+        if (ImGui::SliderFloat("confinement strength", &c.strength, 0.0f, 1.0f, "%.3f")) {
+            log_.clear();
+            report("pf_set_vorticity_confinement", pf_set_vorticity_confinement(sim_.get(), &c));
+        }
+    }
     for (size_t i = 0; i < scene_.obstacles.size() && i < effect_ids_.obstacles.size(); ++i) {
         pf_obstacle o = obstacle_pose(i); // a floating one where it floats now
         const std::string label = "obstacle " + std::to_string(i) + " position";

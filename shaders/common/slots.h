@@ -101,6 +101,9 @@
  * types 6) */
 #define PF_SLOT_VOLUME_POTENTIAL_OUT 1
 #define PF_SLOT_VOLUME_POTENTIAL 3
+/* the vorticity confinement's per-cell vorticity (vec4: w, |w|), on the effects' slot 3: written
+ * by vorticity.comp (face velocities 2, cell types 6), read by confinement_force.comp */
+#define PF_SLOT_VORTICITY 3
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
@@ -136,6 +139,8 @@
                                     linear acceleration, less the gravity the core already added */
 #define PF_LOC_DOMAIN_OMEGA 1    /* angular velocity (xyz) */
 #define PF_LOC_DOMAIN_ALPHA 2    /* angular acceleration (xyz) */
+/* explicit uniform location of the vorticity confinement's force kernel: epsilon */
+#define PF_LOC_VORTICITY_STRENGTH 0
 
 /* The live-count record (8 words), kept on the GPU: two DrawArraysIndirectCommand records, so
  * engines and the renderer draw exactly the live particles without reading the count back.

@@ -16,6 +16,7 @@ const gl::ProgramId kObstaclePrograms[] = {gl::ProgramId::obstacle_cells, gl::Pr
                                            gl::ProgramId::obstacle_push, gl::ProgramId::obstacle_forces};
 const gl::ProgramId kEmitterPrograms[] = {gl::ProgramId::emit, gl::ProgramId::emit_apic, gl::ProgramId::emit_commit};
 const gl::ProgramId kDomainPrograms[] = {gl::ProgramId::domain_forces};
+const gl::ProgramId kVorticityPrograms[] = {gl::ProgramId::vorticity, gl::ProgramId::confinement_force};
 const gl::ProgramId kSinkPrograms[] = {gl::ProgramId::sink_mark, gl::ProgramId::sink_lists, gl::ProgramId::sink_move,
                                        gl::ProgramId::sink_move_apic};
 
@@ -40,6 +41,7 @@ TEST_F(EffectsPipeline, OffEffectsBuildNothingAndTurningOneOnBuildsOnlyItsProgra
     EXPECT_EQ(built(r, kEmitterPrograms), 0u);
     EXPECT_EQ(built(r, kSinkPrograms), 0u);
     EXPECT_EQ(built(r, kDomainPrograms), 0u);
+    EXPECT_EQ(built(r, kVorticityPrograms), 0u);
     // Objects of an effect that is off are kept on the host only.
     pf_obstacle o = pf_default_obstacle();
     o.position[0] = o.position[1] = o.position[2] = 0.4f;
@@ -63,8 +65,12 @@ TEST_F(EffectsPipeline, OffEffectsBuildNothingAndTurningOneOnBuildsOnlyItsProgra
     EXPECT_EQ(built(r, kDomainPrograms), 0u);
     ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_DOMAIN_MOTION), PF_OK);
     EXPECT_EQ(built(r, kDomainPrograms), std::size(kDomainPrograms));
+    EXPECT_EQ(built(r, kVorticityPrograms), 0u);
+    ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_VORTICITY_CONFINEMENT), PF_OK);
+    EXPECT_EQ(built(r, kVorticityPrograms), std::size(kVorticityPrograms));
     const size_t all = core + std::size(kForceFieldPrograms) + std::size(kObstaclePrograms) +
-                       std::size(kEmitterPrograms) + std::size(kSinkPrograms) + std::size(kDomainPrograms);
+                       std::size(kEmitterPrograms) + std::size(kSinkPrograms) + std::size(kDomainPrograms) +
+                       std::size(kVorticityPrograms);
     EXPECT_EQ(r.programs_built(), all);
     // Off and on again: nothing is rebuilt.
     ASSERT_EQ(pf_set_features(handle.get(), 0), PF_OK);
@@ -126,6 +132,7 @@ TEST_F(EffectsPipeline, EveryEffectPassBindsEverySlotItsProgramUses) {
     EXPECT_NE(std::find(ran.begin(), ran.end(), "emit"), ran.end());
     EXPECT_NE(std::find(ran.begin(), ran.end(), "sinks"), ran.end());
     EXPECT_NE(std::find(ran.begin(), ran.end(), "domain_motion"), ran.end());
+    EXPECT_NE(std::find(ran.begin(), ran.end(), "vorticity_confinement"), ran.end());
 }
 
 }  // namespace
