@@ -420,8 +420,10 @@ void Simulation::run_advect() {
 
 uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     if (clamped) *clamped = false;
-    // Nothing moves: one substep keeps the grid state current (emitters add particles first).
-    if (particle_count_ == 0 && !(desc_.features & PF_FEATURE_EMITTERS)) return 1;
+    // Nothing moves: one substep keeps the grid state current (unless an effect adds particles).
+    bool adding = false;
+    for (uint32_t i = 0; i < kEffectCount; ++i) adding = adding || ((desc_.features & (1u << i)) && effects_[i]->adds_particles());
+    if (particle_count_ == 0 && !adding) return 1;
     float v_max = cfl_speed_;
     if (added_at_step_ > cfl_step_) v_max = std::max(v_max, added_speed_);
     const float* g = desc_.params.gravity;

@@ -104,6 +104,9 @@ public:
     virtual uint32_t particles_added() const { return 0; }
     // True while its passes may change which particles exist (the volume reference restarts).
     virtual bool changes_particles() const { return false; }
+    // True if its passes may add particles in a step (known before the step's begin_frame): a
+    // simulation with no particles then still takes its CFL substeps instead of one.
+    virtual bool adds_particles() const { return false; }
     // Fastest speed (m/s) it gives particles this step: the CFL estimate includes it.
     virtual float added_speed() const { return 0.0f; }
     // Its part of the CFL estimate of a step whose liquid moves at most `speed` m/s (measured,

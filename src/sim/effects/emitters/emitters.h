@@ -42,6 +42,7 @@ public:
     bool does_work() const override { return total_ > 0; }
     uint32_t particles_added() const override { return total_; }
     bool changes_particles() const override { return total_ > 0; }
+    bool adds_particles() const override { return true; }
     float added_speed() const override;
     void save_state(ByteWriter& out) const override { list_.save(out); }
     pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;
