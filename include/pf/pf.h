@@ -389,7 +389,7 @@ typedef struct pf_stats {
     uint64_t gpu_step;                /**< which step gpu_ms belongs to (0: none measured yet) */
     uint32_t gpu_substeps;            /**< substeps of that step */
     float gpu_ms[PF_PASS_COUNT];      /**< GPU ms per pass in that step, summed over substeps */
-    float gpu_total_ms;               /**< sum of gpu_ms */
+    float gpu_total_ms;               /**< sum of gpu_ms; with PF_GPU_TIMING_STEP the whole step's time */
     uint32_t dispatches[PF_PASS_COUNT]; /**< compute dispatches per pass in the last pf_step
                                              (0 for a pass that did not run) */
     uint64_t render_frame;            /**< which render call render_gpu_ms belongs to (0: none yet) */
@@ -569,6 +569,24 @@ PF_API pf_result pf_clear_flags(pf_sim* sim);
 PF_API pf_result pf_get_pass_count(const pf_sim* sim, uint32_t* out);
 /** Entry `index` (< pf_get_pass_count) of the per-pass statistics list; no stall. */
 PF_API pf_result pf_get_pass_stats(const pf_sim* sim, uint32_t index, pf_pass_stats* out);
+
+/** What pf_step's GPU timer queries measure. Each timed pass group is a pair of GL_TIMESTAMP
+ *  queries that the GPU executes in line with the passes: on an H100 the per-pass timing of the
+ *  default costs about 1 ms of dam_break_1m's 16 ms frame (docs/performance.md), so a shipped game
+ *  may time the step as a whole or not at all. Rendering is always timed per pass (a few passes). */
+typedef enum pf_gpu_timing {
+    PF_GPU_TIMING_PASSES = 0,  /**< the default: every pass group (pf_stats.gpu_ms, pf_get_pass_stats' gpu_ms) */
+    PF_GPU_TIMING_STEP = 1,    /**< one pair around the whole step: pf_stats.gpu_total_ms only, every
+                                    per-pass time 0 */
+    PF_GPU_TIMING_OFF = 2,     /**< none: every simulation GPU time reads 0 (dispatch counts still kept) */
+    PF_GPU_TIMING_COUNT = 3,
+    PF_GPU_TIMING_FORCE32 = 0x7fffffff
+} pf_gpu_timing;
+/** Chooses what the next steps time; times measured before read 0 from now on (pf_stats.gpu_step
+ *  0 until a step of the new kind is measured). PF_ERROR_INVALID_ARGUMENT for an unknown value. */
+PF_API pf_result pf_set_gpu_timing(pf_sim* sim, pf_gpu_timing timing);
+/** What pf_step times now (PF_GPU_TIMING_PASSES unless changed). */
+PF_API pf_result pf_get_gpu_timing(const pf_sim* sim, pf_gpu_timing* out);
 
 
 /** @} */

@@ -14,7 +14,7 @@ through $PFLIP_LIBRARY, next to this package, the source tree's build/ or the sy
 from . import camera, frame
 from ._lib import ABI_VERSION, lib, version
 from ._types import (MAX_EMITTERS, MAX_FORCE_FIELDS, MAX_OBSTACLES, MAX_SINKS, Advection, Camera, DepthConvention,
-                     DomainMotion, Emitter, EmitterShape, Feature, Flag, ForceField, FreeSurface, ForceFieldType, GlBuffers, LogLevel, Obstacle, ObstacleForce,
+                     DomainMotion, Emitter, EmitterShape, Feature, Flag, ForceField, FreeSurface, ForceFieldType, GlBuffers, GpuTiming, LogLevel, Obstacle, ObstacleForce,
                      ObstacleShape, P2G, ParticleColor, ParticleParams, Pass, PressureSolver, Quality, RateUnit,
                      RenderPass, RenderTarget, Result, SimDesc, SimParams, Sink, SinkShape, SsfFilter, SsfParams,
                      SsfPath, Stats, Transfer, VorticityConfinement)
@@ -41,7 +41,7 @@ def render_pass_name(p):
 
 __all__ = [
     "ABI_VERSION", "Advection", "Camera", "DepthConvention", "Feature", "Flag", "ForceField", "ForceFieldType", "FreeSurface",
-    "GlBuffers", "LogLevel", "MAX_FORCE_FIELDS", "MAX_OBSTACLES", "Obstacle", "ObstacleForce", "ObstacleShape", "P2G",
+    "GlBuffers", "GpuTiming", "LogLevel", "MAX_FORCE_FIELDS", "MAX_OBSTACLES", "Obstacle", "ObstacleForce", "ObstacleShape", "P2G",
     "ParticleColor", "ParticleParams", "Pass", "PassStats", "PflipError", "PressureSolver", "Quality",
     "RenderPass", "RenderTarget", "Result", "SimDesc", "SimParams", "Simulation", "SsfFilter", "SsfParams",
     "SsfPath", "Stats", "Transfer", "VorticityConfinement", "camera", "frame", "pass_name", "render_pass_name",

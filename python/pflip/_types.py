@@ -40,6 +40,12 @@ class FreeSurface(enum.IntEnum):
     GHOST_FLUID = 1
 
 
+class GpuTiming(enum.IntEnum):
+    PASSES = 0
+    STEP = 1
+    OFF = 2
+
+
 class PressureSolver(enum.IntEnum):
     JACOBI = 0
     RBGS = 1
@@ -581,7 +587,7 @@ C_ENUMS = {
     RenderPass: "PF_RENDER_PASS_", Flag: "PF_FLAG_", DepthConvention: "PF_DEPTH_",
     SsfFilter: "PF_SSF_FILTER_", SsfPath: "PF_SSF_PATH_", ParticleColor: "PF_PARTICLE_COLOR_",
     Feature: "PF_FEATURE_", ForceFieldType: "PF_FORCE_FIELD_", ObstacleShape: "PF_OBSTACLE_",
-    EmitterShape: "PF_EMITTER_", RateUnit: "PF_RATE_", SinkShape: "PF_SINK_",
+    EmitterShape: "PF_EMITTER_", RateUnit: "PF_RATE_", SinkShape: "PF_SINK_", GpuTiming: "PF_GPU_TIMING_",
 }
 C_CONSTANTS = {"PF_PASS_COUNT": PASS_COUNT, "PF_RENDER_PASS_COUNT": RENDER_PASS_COUNT,
                "PF_MAX_FORCE_FIELDS": MAX_FORCE_FIELDS, "PF_MAX_OBSTACLES": MAX_OBSTACLES,

@@ -304,6 +304,22 @@ class Simulation:
         self.params = p
 
     # ---- measurements ---------------------------------------------------------------------------
+    @property
+    def gpu_timing(self):
+        """pf_get_gpu_timing: what pf_step's GPU timer queries measure (a GpuTiming)."""
+        out = t.c_enum()
+        self._call("pf_get_gpu_timing", ctypes.byref(out))
+        return t.GpuTiming(out.value)
+
+    @gpu_timing.setter
+    def gpu_timing(self, value):
+        """pf_set_gpu_timing: GpuTiming.PASSES (every pass group), STEP (the step as a whole:
+        stats().gpu_total_ms only) or OFF; an unknown value raises PflipError(ERROR_INVALID_ARGUMENT)."""
+        v = int(value)
+        if not 0 <= v <= 0x7FFFFFFF:  # a C enum's range: the library sees the rest
+            raise PflipError("pf_set_gpu_timing", t.Result.ERROR_INVALID_ARGUMENT, f"timing {value!r} is not a pf_gpu_timing")
+        self._call("pf_set_gpu_timing", t.c_enum(v))
+
     def stats(self):
         """pf_get_stats (no stall: GPU figures lag a few steps)."""
         out = t.Stats()

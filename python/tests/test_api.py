@@ -156,3 +156,36 @@ def test_requested_particles_equal_the_blocking_read(sim):
         assert all(np.array_equal(a, b) for a, b in zip(got, expected))
     with pytest.raises(PflipError):
         sim.poll_particles(tickets[0])  # collected
+
+
+def test_gpu_timing_modes(sim):
+    """pf_set_gpu_timing: STEP times the step as a whole (total only), OFF nothing, PASSES every
+    pass group (the default); unknown values raise and change nothing."""
+    assert sim.gpu_timing == pflip.GpuTiming.PASSES
+    sim.fill_box((0.0, 0.0, 0.0), (0.4, 0.4, 0.4))
+
+    def measured():
+        for _ in range(40):
+            sim.step(1.0 / 60.0)
+            sim.pass_stats()  # polls the timers
+            st = sim.stats()
+            if st.gpu_step > 0:
+                return st
+        return sim.stats()
+
+    st = measured()
+    if st.gpu_step == 0:
+        pytest.skip("this GL reports no GL_TIMESTAMP bits")
+    assert st.gpu_total_ms > 0 and sum(st.gpu_ms) == pytest.approx(st.gpu_total_ms, rel=1e-3)
+    sim.gpu_timing = pflip.GpuTiming.STEP
+    assert sim.gpu_timing == pflip.GpuTiming.STEP
+    st = measured()
+    assert st.gpu_total_ms > 0 and sum(st.gpu_ms) == 0
+    sim.gpu_timing = pflip.GpuTiming.OFF
+    st = measured()
+    assert st.gpu_step == 0 and st.gpu_total_ms == 0 and st.dispatches[int(pflip.Pass.PRESSURE_SOLVE)] > 0
+    for bad in (3, -1, 1 << 40):
+        with pytest.raises(pflip.PflipError) as e:
+            sim.gpu_timing = bad
+        assert e.value.code == pflip.Result.ERROR_INVALID_ARGUMENT and e.value.function == "pf_set_gpu_timing"
+        assert sim.gpu_timing == pflip.GpuTiming.OFF

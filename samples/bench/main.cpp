@@ -44,6 +44,7 @@ struct Options {
     float cfl = 0;             // 0: the scene's (or the preset's)
     float frame_dt = 0;        // 0: the scene's
     int64_t features = -1;     // -1: the scene's PF_FEATURE_* bits
+    pf_gpu_timing gpu_timing = PF_GPU_TIMING_PASSES;  // --gpu-timing
     std::string json_path, csv_path;
     bool verbose = false;
     std::string command_line;
@@ -93,6 +94,12 @@ void add_options(CLI::App& app, Options& o) {
                    "sinks, domain_motion; or all, none); the scenes' objects are added either way")
         ->transform(FeatureList())
         ->type_name("LIST");
+    static const pfs::Choices<pf_gpu_timing> kTimings = {
+        {"passes", PF_GPU_TIMING_PASSES}, {"step", PF_GPU_TIMING_STEP}, {"off", PF_GPU_TIMING_OFF}};
+    app.add_option("--gpu-timing", o.gpu_timing,
+                   "what the library's timer queries measure (pf_set_gpu_timing): every pass group (the "
+                   "default, the per-pass tables), the step as a whole (the total only) or nothing (wall times only)")
+        ->transform(pfs::NameMap(kTimings, "timing"));
     app.add_option("--json", o.json_path, "write results as JSON")->type_name("PATH");
     app.add_option("--csv", o.csv_path, "write results as CSV (one row per scene and metric)")->type_name("PATH");
     app.add_flag("--verbose", o.verbose, "pflip's info messages and EGL details");
@@ -184,6 +191,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
         pfs::check(pf_create(&desc, &raw), "pf_create");
         sim.reset(raw);
     }
+    pfs::check(pf_set_gpu_timing(sim.get(), opt.gpu_timing), "pf_set_gpu_timing");
     glFinish();
     r.create_ms = pfs::now_ms() - t0;
     t0 = pfs::now_ms();
@@ -633,6 +641,8 @@ int run(int argc, char** argv) {
         settings["pressure_iterations"] = opt.pressure_iterations;
         settings["max_substeps_override"] = opt.max_substeps;
         settings["frame_dt_override"] = opt.frame_dt;
+        settings["gpu_timing"] = opt.gpu_timing == PF_GPU_TIMING_PASSES ? "passes"
+                                 : opt.gpu_timing == PF_GPU_TIMING_STEP ? "step" : "off";
         settings["wall_time"] = "glFinish; t0; pf_step; glFinish; t1";
         settings["gpu_time"] = "pf_get_stats per-pass timer queries, each distinct gpu_step once, summed over substeps";
         j["settings"] = settings;

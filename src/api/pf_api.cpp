@@ -339,6 +339,23 @@ pf_result pf_get_pass_count(const pf_sim* handle, uint32_t* out) {
     return PF_OK;
 }
 
+pf_result pf_set_gpu_timing(pf_sim* handle, pf_gpu_timing timing) {
+    PF_ENTRY(sim, handle, "pf_set_gpu_timing");
+    pf::Simulation& s = *sim->impl;
+    if (pf::enum_bits(timing) >= uint32_t(PF_GPU_TIMING_COUNT))
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_gpu_timing: timing " + std::to_string(pf::enum_bits(timing)) +
+                                                            " is not a pf_gpu_timing (0..2)");
+    s.set_gpu_timing(timing);
+    return PF_OK;
+}
+
+pf_result pf_get_gpu_timing(const pf_sim* handle, pf_gpu_timing* out) {
+    PF_ENTRY(sim, handle, "pf_get_gpu_timing");
+    if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_gpu_timing: out must not be NULL");
+    *out = sim->impl->gpu_timing();
+    return PF_OK;
+}
+
 pf_result pf_get_pass_stats(const pf_sim* handle, uint32_t index, pf_pass_stats* out) {
     PF_ENTRY(sim, handle, "pf_get_pass_stats");
     const pf::Simulation& s = *sim->impl;

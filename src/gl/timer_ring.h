@@ -20,8 +20,12 @@ public:
         uint64_t step = 0;  // 0: nothing measured yet
         uint32_t substeps = 0;
         std::vector<float> ms;  // indexed by pass id; shorter when high ids did not run
+        float step_ms = 0.0f;   // the whole step (Mode::step only)
         float at(size_t pass) const { return pass < ms.size() ? ms[pass] : 0.0f; }
     };
+    // What is timed: every pass (begin_pass / end_pass pairs), the step as a whole (one pair
+    // from begin_step to end_step), or nothing.
+    enum class Mode { passes, step, off };
 
     explicit TimerRing(const Api& gl) : gl_(gl) {
         GLint bits = 0;
@@ -36,28 +40,44 @@ public:
     TimerRing(const TimerRing&) = delete;
     TimerRing& operator=(const TimerRing&) = delete;
 
+    // From the next step on; what was measured before is forgotten (latest() reads nothing
+    // until a step of the new mode is read), and steps still in flight are dropped.
+    void set_mode(Mode mode) {
+        if (mode == mode_) return;
+        mode_ = mode;
+        latest_ = Result{};
+        for (Slot& s : slots_) s.pending = false;
+    }
+    Mode mode() const { return mode_; }
     // Starts recording step `step`. If the slot's previous step is still in flight, that
     // step's timing is dropped rather than waited for.
     void begin_step(uint64_t step, uint32_t substeps) {
         poll();
         current_ = nullptr;
-        if (!supported_) return;
+        if (!supported_ || mode_ == Mode::off) return;
         Slot& s = slots_[step % kSlots];
         s.step = step;
         s.substeps = substeps;
         s.used = 0;
         s.passes.clear();
         s.pending = true;
+        s.whole_step = mode_ == Mode::step;
         current_ = &s;
+        if (s.whole_step) stamp();
+    }
+    // The step's last pass was recorded.
+    void end_step() {
+        if (current_ && current_->whole_step) stamp();
+        current_ = nullptr;
     }
     // Brackets one pass; begin/end pairs may repeat (substeps): they are summed.
     void begin_pass(int pass) {
-        if (!current_) return;
+        if (!current_ || current_->whole_step) return;
         current_->passes.push_back(pass);
         stamp();
     }
     void end_pass() {
-        if (current_) stamp();
+        if (current_ && !current_->whole_step) stamp();
     }
     // Reads every finished slot without blocking; the newest finished step wins.
     void poll() {
@@ -71,6 +91,12 @@ public:
             Result r;
             r.step = s.step;
             r.substeps = s.substeps;
+            if (s.whole_step && s.used == 2) {
+                GLuint64 t0 = 0, t1 = 0;
+                gl_.GetQueryObjectui64v(s.queries[0], GL_QUERY_RESULT, &t0);
+                gl_.GetQueryObjectui64v(s.queries[1], GL_QUERY_RESULT, &t1);
+                r.step_ms = static_cast<float>(static_cast<double>(t1 - t0) * 1e-6);
+            }
             for (size_t p = 0; p < s.passes.size(); ++p) {
                 GLuint64 t0 = 0, t1 = 0;
                 gl_.GetQueryObjectui64v(s.queries[2 * p], GL_QUERY_RESULT, &t0);
@@ -90,6 +116,7 @@ private:
         uint64_t step = 0;
         uint32_t substeps = 0;
         bool pending = false;
+        bool whole_step = false;  // Mode::step: queries 0 and 1 bracket the step
         size_t used = 0;
         std::vector<GLuint> queries;
         std::vector<int> passes;
@@ -106,6 +133,7 @@ private:
 
     const Api& gl_;
     bool supported_ = false;
+    Mode mode_ = Mode::passes;
     std::array<Slot, kSlots> slots_{};
     Slot* current_ = nullptr;
     Result latest_{};

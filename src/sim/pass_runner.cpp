@@ -64,6 +64,7 @@ void PassRunner::begin_step(uint64_t step, uint32_t substeps) {
 
 void PassRunner::end_step() {
     if (pair_open_) timers_.end_pass();
+    timers_.end_step();
     pair_open_ = false;
     step_open_ = false;
 }

@@ -45,6 +45,9 @@ public:
     float gpu_ms(StatId id) const { return timers_.latest().at(id); }
     const gl::TimerRing::Result& latest_timing() const { return timers_.latest(); }
     void poll_timers() { timers_.poll(); }
+    // What the next steps time (pf_set_gpu_timing).
+    void set_timing(gl::TimerRing::Mode mode) { timers_.set_mode(mode); }
+    gl::TimerRing::Mode timing() const { return timers_.mode(); }
 
     // Builds `id` (once) and learns which storage slots it uses. Empty string on success.
     std::string prepare(gl::ProgramId id);

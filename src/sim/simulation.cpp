@@ -1001,6 +1001,21 @@ void Simulation::stats(pf_stats& out) const {
         out.gpu_total_ms += r.at(i);
         out.dispatches[group] += list[i].dispatches;
     }
+    out.gpu_total_ms += r.step_ms;
+}
+
+void Simulation::set_gpu_timing(pf_gpu_timing timing) {
+    runner_->set_timing(timing == PF_GPU_TIMING_OFF    ? gl::TimerRing::Mode::off
+                        : timing == PF_GPU_TIMING_STEP ? gl::TimerRing::Mode::step
+                                                       : gl::TimerRing::Mode::passes);
+}
+
+pf_gpu_timing Simulation::gpu_timing() const {
+    switch (runner_->timing()) {
+        case gl::TimerRing::Mode::off: return PF_GPU_TIMING_OFF;
+        case gl::TimerRing::Mode::step: return PF_GPU_TIMING_STEP;
+        default: return PF_GPU_TIMING_PASSES;
+    }
 }
 
 void Simulation::pass_stats(uint32_t index, pf_pass_stats& out) const {

@@ -122,6 +122,9 @@ public:
     std::vector<float> read_affine() const;
     void write_affine_for_test(const std::vector<float>& values);
     const PassRunner& runner() const { return *runner_; }
+    // pf_set_gpu_timing / pf_get_gpu_timing (validated).
+    void set_gpu_timing(pf_gpu_timing timing);
+    pf_gpu_timing gpu_timing() const;
     // Whether the P2G scheme in use sums floats (else fixed point at the range's scale).
     bool p2g_float_sums() const { return p2g_.float_sums(desc_.params); }
     // The substep table's entries, in the order a substep runs them (as the next step would).
