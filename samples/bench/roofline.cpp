@@ -68,13 +68,15 @@ void main() {
 
 constexpr GLuint kGroupsX = 32768;  // dispatches of 2D grids of 256-invocation workgroups
 
-// GPU nanoseconds between timestamps around a (groups_x, groups_y) grid of workgroups of the bound
-// program (GL_TIMESTAMP pairs: Mesa's llvmpipe reads ~1 ns for GL_TIME_ELAPSED around a lone dispatch).
-double time_once(GLuint groups_x, GLuint groups_y) {
+// GPU nanoseconds between GL_TIMESTAMP queries around what `work` records, which ends with a
+// storage barrier (timestamp pairs: Mesa's llvmpipe reads ~1 ns for GL_TIME_ELAPSED around a lone
+// dispatch).
+template <typename Work>
+double timestamped_ns(Work&& work) {
     GLuint q[2] = {0, 0};
     glGenQueries(2, q);
     glQueryCounter(q[0], GL_TIMESTAMP);
-    glDispatchCompute(groups_x, groups_y, 1);
+    work();
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glQueryCounter(q[1], GL_TIMESTAMP);
     GLuint64 t0 = 0, t1 = 0;
@@ -84,26 +86,33 @@ double time_once(GLuint groups_x, GLuint groups_y) {
     return t1 > t0 ? double(t1 - t0) : 0.0;
 }
 
+// The median of `runs` timings after one untimed (timestamped_ns of `work`), in ns.
+template <typename Work>
+double median_ns(int runs, Work&& work) {
+    std::vector<double> ns;
+    for (int r = 0; r <= runs; ++r) {
+        const double t = timestamped_ns(work);
+        if (r > 0) ns.push_back(t);
+    }
+    std::sort(ns.begin(), ns.end());
+    return ns[ns.size() / 2];
+}
+
+// GPU nanoseconds of one (groups_x, groups_y) grid of workgroups of the bound program.
+double time_once(GLuint groups_x, GLuint groups_y) {
+    return timestamped_ns([&] { glDispatchCompute(groups_x, groups_y, 1); });
+}
+
 // Median GPU milliseconds of `runs` timed dispatches of (groups_x, groups_y) after one untimed.
 double time_dispatch(GLuint groups_x, GLuint groups_y, int runs) {
-    std::vector<double> ms;
-    for (int r = 0; r <= runs; ++r) {
-        const double ns = time_once(groups_x, groups_y);
-        if (r > 0) ms.push_back(ns * 1e-6);
-    }
-    std::sort(ms.begin(), ms.end());
-    return ms[ms.size() / 2];
+    return median_ns(runs, [&] { glDispatchCompute(groups_x, groups_y, 1); }) * 1e-6;
 }
 
 // GPU microseconds per dispatch of `chain` dependent dispatches of (groups, 1) workgroups of the
 // bound program, each after a storage barrier (indirect: from the record at the bound dispatch
 // indirect buffer's start, after a command barrier too); the median of 5 chains after one untimed.
 double time_chain(GLuint groups, bool indirect, int chain) {
-    std::vector<double> us;
-    for (int r = 0; r <= 5; ++r) {
-        GLuint q[2] = {0, 0};
-        glGenQueries(2, q);
-        glQueryCounter(q[0], GL_TIMESTAMP);
+    const double ns = median_ns(5, [&] {
         for (int k = 0; k < chain; ++k) {
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (indirect ? GL_COMMAND_BARRIER_BIT : 0));
             if (indirect)
@@ -111,16 +120,8 @@ double time_chain(GLuint groups, bool indirect, int chain) {
             else
                 glDispatchCompute(groups, 1, 1);
         }
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        glQueryCounter(q[1], GL_TIMESTAMP);
-        GLuint64 t0 = 0, t1 = 0;
-        glGetQueryObjectui64v(q[0], GL_QUERY_RESULT, &t0);
-        glGetQueryObjectui64v(q[1], GL_QUERY_RESULT, &t1);
-        glDeleteQueries(2, q);
-        if (r > 0) us.push_back(t1 > t0 ? double(t1 - t0) * 1e-3 / chain : 0.0);
-    }
-    std::sort(us.begin(), us.end());
-    return us[us.size() / 2];
+    });
+    return ns * 1e-3 / chain;
 }
 
 GLuint make_buffer(GLsizeiptr bytes) {

@@ -13,26 +13,9 @@ namespace {
 
 class Effects : public GpuTest {};
 
-struct Entry {
-    std::string name;
-    uint32_t dispatches;
-};
-
-std::vector<Entry> pass_list(pf_sim* sim) {
-    uint32_t n = 0;
-    EXPECT_EQ(pf_get_pass_count(sim, &n), PF_OK);
-    std::vector<Entry> out;
-    for (uint32_t i = 0; i < n; ++i) {
-        pf_pass_stats s{};
-        EXPECT_EQ(pf_get_pass_stats(sim, i, &s), PF_OK);
-        out.push_back({s.name, s.dispatches});
-    }
-    return out;
-}
-
-std::vector<std::string> names(const std::vector<Entry>& list) {
+std::vector<std::string> names(const std::vector<pf_pass_stats>& list) {
     std::vector<std::string> out;
-    for (const Entry& e : list) out.push_back(e.name);
+    for (const pf_pass_stats& e : list) out.push_back(e.name);
     return out;
 }
 
@@ -95,7 +78,7 @@ TEST_F(Effects, EachEffectAddsOnlyItsOwnPasses) {
     const SimPtr off = make_scene(*this, 0);
     ASSERT_TRUE(off);
     ASSERT_EQ(pf_step(off.get(), 1.0f / 60.0f), PF_OK);
-    const std::vector<Entry> core = pass_list(off.get());
+    const std::vector<pf_pass_stats> core = pass_list(off.get());
     for (const Case& c : {Case{PF_FEATURE_FORCE_FIELDS, {"force_fields"}},
                           Case{PF_FEATURE_OBSTACLES, {"obstacles", "obstacle_push", "obstacle_forces"}},
                           Case{PF_FEATURE_EMITTERS, {"emit"}}, Case{PF_FEATURE_SINKS, {"sinks"}},
@@ -105,7 +88,7 @@ TEST_F(Effects, EachEffectAddsOnlyItsOwnPasses) {
         ASSERT_TRUE(sim);
         ASSERT_EQ(pf_set_features(sim.get(), c.feature), PF_OK) << last_log();
         ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
-        const std::vector<Entry> list = pass_list(sim.get());
+        const std::vector<pf_pass_stats> list = pass_list(sim.get());
         std::vector<std::string> expected = kCoreList;
         expected.insert(expected.end(), c.added.begin(), c.added.end());
         EXPECT_EQ(names(list), expected) << c.feature;
@@ -117,7 +100,7 @@ TEST_F(Effects, EachEffectAddsOnlyItsOwnPasses) {
         // Off again: its entries stay listed but dispatch nothing.
         ASSERT_EQ(pf_set_features(sim.get(), 0), PF_OK);
         ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
-        const std::vector<Entry> after = pass_list(sim.get());
+        const std::vector<pf_pass_stats> after = pass_list(sim.get());
         ASSERT_EQ(after.size(), list.size());
         for (size_t i = core.size(); i < after.size(); ++i) EXPECT_EQ(after[i].dispatches, 0u) << after[i].name;
     }

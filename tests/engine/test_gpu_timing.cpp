@@ -33,13 +33,9 @@ protected:
     }
     // Sum of the pass list's gpu_ms, and whether any entry dispatched.
     std::pair<double, bool> pass_times() {
-        uint32_t n = 0;
-        EXPECT_EQ(pf_get_pass_count(sim_.get(), &n), PF_OK);
         double sum = 0;
         bool dispatched = false;
-        for (uint32_t i = 0; i < n; ++i) {
-            pf_pass_stats s{};
-            EXPECT_EQ(pf_get_pass_stats(sim_.get(), i, &s), PF_OK);
+        for (const pf_pass_stats& s : pass_list(sim_.get())) {
             sum += s.gpu_ms;
             dispatched = dispatched || s.dispatches > 0;
         }

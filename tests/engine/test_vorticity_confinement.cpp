@@ -27,6 +27,17 @@ double kinetic_energy(const ParticleState& p) {
 class VorticityConfinement : public GpuTest {
 protected:
     std::vector<double> vortex_energy(bool confined, float strength, int frames);
+    static pf_result set_strength(pf_sim* sim, float strength) {
+        pf_vorticity_confinement c = pf_default_vorticity_confinement();
+        c.strength = strength;
+        return pf_set_vorticity_confinement(sim, &c);
+    }
+    static float strength_of(const pf_sim* sim) {
+        pf_vorticity_confinement c{};
+        c.struct_size = sizeof c;
+        EXPECT_EQ(pf_get_vorticity_confinement(sim, &c), PF_OK);
+        return c.strength;
+    }
 };
 
 std::vector<double> VorticityConfinement::vortex_energy(bool confined, float strength, int frames) {
@@ -35,9 +46,7 @@ std::vector<double> VorticityConfinement::vortex_energy(bool confined, float str
     d.features = confined ? PF_FEATURE_VORTICITY_CONFINEMENT : 0u;
     SimPtr sim = create(d);
     if (!sim) return {};
-    pf_vorticity_confinement c = pf_default_vorticity_confinement();
-    c.strength = strength;
-    EXPECT_EQ(pf_set_vorticity_confinement(sim.get(), &c), PF_OK) << last_log();
+    EXPECT_EQ(set_strength(sim.get(), strength), PF_OK) << last_log();
     std::vector<float> pos, vel;
     const double s = d.cell_size / 2.0;
     for (int k = 0; k < 32; ++k)
@@ -91,23 +100,16 @@ TEST_F(VorticityConfinement, LiquidAtRestStaysAtRest) {
         d.features = on ? PF_FEATURE_VORTICITY_CONFINEMENT : 0u;
         SimPtr sim = create(d);
         ASSERT_TRUE(sim);
-        pf_vorticity_confinement c = pf_default_vorticity_confinement();
-        c.strength = 1.0f;
-        ASSERT_EQ(pf_set_vorticity_confinement(sim.get(), &c), PF_OK);
+        ASSERT_EQ(set_strength(sim.get(), 1.0f), PF_OK);
         const float lo[3] = {0, 0, 0}, hi[3] = {1.2f, 0.6f, 1.2f};
         ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
         for (int f = 1; f <= 300; ++f) {
             ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
             if (f % 60 == 0) speed[on] = std::max(speed[on], max_speed_of(read_all(sim.get())));
         }
-        uint32_t n = 0;
-        ASSERT_EQ(pf_get_pass_count(sim.get(), &n), PF_OK);
         bool ran = false;
-        for (uint32_t i = 0; i < n; ++i) {
-            pf_pass_stats s{};
-            ASSERT_EQ(pf_get_pass_stats(sim.get(), i, &s), PF_OK);
+        for (const pf_pass_stats& s : pass_list(sim.get()))
             ran = ran || (std::string(s.name) == "vorticity_confinement" && s.dispatches > 0);
-        }
         EXPECT_EQ(ran, on == 1) << "its passes run exactly when it is on";
     }
     EXPECT_LE(speed[1], 1.5 * speed[0]) << "without " << speed[0] << " m/s";
@@ -122,9 +124,7 @@ TEST_F(VorticityConfinement, StrengthOneStaysStableInADamBreakAtThirtyFramesASec
     d.features = PF_FEATURE_VORTICITY_CONFINEMENT;
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
-    pf_vorticity_confinement c = pf_default_vorticity_confinement();
-    c.strength = 1.0f;
-    ASSERT_EQ(pf_set_vorticity_confinement(sim.get(), &c), PF_OK);
+    ASSERT_EQ(set_strength(sim.get(), 1.0f), PF_OK);
     const float lo[3] = {0, 0, 0}, hi[3] = {0.4f, 0.5f, 0.4f};
     ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
     const size_t n = read_all(sim.get()).count();
@@ -151,20 +151,14 @@ TEST_F(VorticityConfinement, SnapshotKeepsTheStrength) {
     d.features = PF_FEATURE_VORTICITY_CONFINEMENT;
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
-    pf_vorticity_confinement c = pf_default_vorticity_confinement();
-    c.strength = 0.35f;
-    ASSERT_EQ(pf_set_vorticity_confinement(sim.get(), &c), PF_OK);
+    ASSERT_EQ(set_strength(sim.get(), 0.35f), PF_OK);
     size_t size = 0;
     ASSERT_EQ(pf_snapshot_size(sim.get(), &size), PF_OK);
     std::vector<uint8_t> snapshot(size);
     ASSERT_EQ(pf_save_snapshot(sim.get(), snapshot.data(), size), PF_OK);
-    c.strength = 0.9f;
-    ASSERT_EQ(pf_set_vorticity_confinement(sim.get(), &c), PF_OK);
+    ASSERT_EQ(set_strength(sim.get(), 0.9f), PF_OK);
     ASSERT_EQ(pf_restore_snapshot(sim.get(), snapshot.data(), size), PF_OK) << last_log();
-    pf_vorticity_confinement got{};
-    got.struct_size = sizeof got;
-    ASSERT_EQ(pf_get_vorticity_confinement(sim.get(), &got), PF_OK);
-    EXPECT_EQ(got.strength, 0.35f);
+    EXPECT_EQ(strength_of(sim.get()), 0.35f);
 }
 
 // Bad strengths: refused with a logged reason; the strength stays what it was.
@@ -181,10 +175,7 @@ TEST_F(VorticityConfinement, BadStrengthsAreRefusedAndChangeNothing) {
         clear_log();
         EXPECT_EQ(pf_set_vorticity_confinement(sim.get(), &bad), PF_ERROR_INVALID_ARGUMENT) << bad_strength;
         EXPECT_NE(std::string(last_log()).find("within 0..1"), std::string::npos) << last_log();
-        pf_vorticity_confinement now{};
-        now.struct_size = sizeof now;
-        ASSERT_EQ(pf_get_vorticity_confinement(sim.get(), &now), PF_OK);
-        EXPECT_EQ(now.strength, 0.5f) << bad_strength;
+        EXPECT_EQ(strength_of(sim.get()), 0.5f) << bad_strength;
     }
     EXPECT_EQ(pf_set_vorticity_confinement(sim.get(), nullptr), PF_ERROR_INVALID_ARGUMENT);
     EXPECT_EQ(pf_get_vorticity_confinement(sim.get(), nullptr), PF_ERROR_INVALID_ARGUMENT);
@@ -192,10 +183,7 @@ TEST_F(VorticityConfinement, BadStrengthsAreRefusedAndChangeNothing) {
     // A zero-initialised struct takes the default strength.
     pf_vorticity_confinement zero{};
     ASSERT_EQ(pf_set_vorticity_confinement(sim.get(), &zero), PF_OK) << last_log();
-    pf_vorticity_confinement now{};
-    now.struct_size = sizeof now;
-    ASSERT_EQ(pf_get_vorticity_confinement(sim.get(), &now), PF_OK);
-    EXPECT_EQ(now.strength, 0.2f);
+    EXPECT_EQ(strength_of(sim.get()), 0.2f);
 }
 
 }  // namespace

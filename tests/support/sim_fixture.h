@@ -169,6 +169,15 @@ inline uint32_t live_count(pf_sim* sim) {
     return n;
 }
 
+// The per-pass statistics list, in its order (names valid until the simulation is destroyed).
+inline std::vector<pf_pass_stats> pass_list(const pf_sim* sim) {
+    uint32_t n = 0;
+    EXPECT_EQ(pf_get_pass_count(sim, &n), PF_OK);
+    std::vector<pf_pass_stats> out(n);
+    for (uint32_t i = 0; i < n; ++i) EXPECT_EQ(pf_get_pass_stats(sim, i, &out[i]), PF_OK);
+    return out;
+}
+
 inline ParticleState read_all(pf_sim* sim) {
     const uint32_t n = live_count(sim);
     ParticleState p;
