@@ -1,5 +1,5 @@
 // One particle's sphere as the screen-space passes see it, shared by the raster sprites
-// (render/sphere.vert + fragment shaders) and the compute splats (render/ssf_splat.comp), so
+// (render/sphere.vert + fragment shaders) and the compute splats (render/liquid_surface/ssf_splat.comp), so
 // both paths cover the same pixels with the same depths: the camera ray through a pixel
 // centre, intersected with the sphere.
 #include "common/render.glsl"

@@ -1,5 +1,5 @@
 // Small checks the argument validators share (src/api/validate.cpp and each effect's
-// <name>_api.cpp, src/api/pf_render_api.cpp): finite vectors, numbers in messages, a turned shape's bounds.
+// <name>_api.cpp): finite vectors, numbers in messages, a turned shape's bounds.
 #pragma once
 #include <cmath>
 #include <cstdio>

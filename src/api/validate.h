@@ -1,5 +1,6 @@
 // Argument checks of the C API, each failure a logged message: the simulation's own (its
-// descriptor, parameters, features, particles). Each effect validates its objects in its folder
+// descriptor, parameters, features, particles) and the render calls' (camera, parameters; the
+// engine's GL objects are checked by the renderer, src/render/target_check.h). Each effect validates its objects in its folder
 // (src/sim/effects/<name>/<name>_api.cpp).
 #pragma once
 #include <cstdint>
@@ -33,5 +34,14 @@ pf_result validate_features(uint32_t features, const Log& log, const char* fn);
 // Positions finite and inside the domain, velocities finite and at most max_speed.
 pf_result validate_particles(const pf_sim_desc& desc, const float* xyz, const float* vel, uint32_t n,
                              const Log& log);
+
+// Render calls: the camera (finite, invertible matrices, a viewport, planes, a depth convention).
+pf_result validate_camera(const pf_camera& camera, const Log& log, const char* fn);
+// The look of pf_render_ssf and of pf_render_particles, after resolve_render_params.
+pf_result validate_render_params(const pf_ssf_params& params, const Log& log, const char* fn);
+pf_result validate_render_params(const pf_particle_params& params, const Log& log, const char* fn);
+// Zero fields take their defaults (pf.h); a particle radius of 0 is half of `cell_size`.
+pf_ssf_params resolve_render_params(const pf_ssf_params& params, float cell_size);
+pf_particle_params resolve_render_params(const pf_particle_params& params, float cell_size);
 
 }  // namespace pf

@@ -1,4 +1,4 @@
-#include "render/ssf_targets.h"
+#include "render/layers/liquid_surface/ssf_targets.h"
 
 #include "gl/debug.h"
 

@@ -4,7 +4,7 @@
 // and a Blinn-Phong sun highlight. Produces the liquid colour (alpha 1 where there is liquid,
 // 0 elsewhere) and the liquid's window depth in the engine's convention.
 #include "common/render.glsl"
-#include "common/ssf_depth.glsl"
+#include "render/liquid_surface/ssf_depth.glsl"
 
 layout(binding = PF_TEX_SCENE_COLOR) uniform sampler2D u_scene_color;
 layout(binding = PF_TEX_THICKNESS) uniform sampler2D u_thickness;

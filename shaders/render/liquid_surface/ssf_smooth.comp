@@ -1,7 +1,7 @@
-// SMOOTH pass, compute path: one 1D filter pass (common/ssf_filter.glsl) over the liquid
+// SMOOTH pass, compute path: one 1D filter pass (render/liquid_surface/ssf_filter.glsl) over the liquid
 // depth, one invocation per pixel, written to an r32f image.
 #include "common/render.glsl"
-#include "common/ssf_filter.glsl"
+#include "render/liquid_surface/ssf_filter.glsl"
 
 layout(local_size_x = PF_RENDER_TILE, local_size_y = PF_RENDER_TILE) in;
 layout(binding = PF_IMG_SMOOTH_OUT, r32f) writeonly uniform image2D o_depth;

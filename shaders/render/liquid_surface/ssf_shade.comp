@@ -1,7 +1,7 @@
-// SHADE pass, compute path: common/ssf_shade.glsl per pixel into the liquid colour (rgba16f)
+// SHADE pass, compute path: render/liquid_surface/ssf_shade.glsl per pixel into the liquid colour (rgba16f)
 // and liquid window depth (r32f) images.
 #include "common/render.glsl"
-#include "common/ssf_shade.glsl"
+#include "render/liquid_surface/ssf_shade.glsl"
 
 layout(local_size_x = PF_RENDER_TILE, local_size_y = PF_RENDER_TILE) in;
 layout(binding = PF_IMG_SHADE_COLOR, rgba16f) writeonly uniform image2D o_color;

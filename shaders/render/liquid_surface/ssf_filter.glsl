@@ -3,7 +3,7 @@
 // repeats them filter_iterations times. PF_SSF_FILTER picks the filter at compile time.
 // Pixels without liquid stay without liquid; liquid never spreads into them.
 #include "common/render.glsl"
-#include "common/ssf_depth.glsl"
+#include "render/liquid_surface/ssf_depth.glsl"
 
 #ifndef PF_SSF_FILTER
 #error "PF_SSF_FILTER must be defined (permutations.inc)"

@@ -1,0 +1,209 @@
+#include "render/layers/liquid_surface/liquid_surface_layer.h"
+
+#include <string>
+#include <utility>
+
+#include "common/render_slots.h"
+#include "gl/allocation_check.h"
+#include "render/render_context.h"
+#include "sim/simulation.h"
+
+namespace pf {
+
+static_assert(PF_SSF_FILTER_BILATERAL == PF_SSF_FILTER_BILATERAL_ID, "filter ids shared with GLSL");
+static_assert(PF_SSF_FILTER_NARROW_RANGE == PF_SSF_FILTER_NARROW_RANGE_ID, "filter ids shared with GLSL");
+
+using gl::ProgramId;
+
+pf_result LiquidSurfaceLayer::prepare(RenderContext& c, const RenderFrame& f) {
+    const pf_ssf_params& params = *f.ssf;
+    const bool compute = params.path == PF_SSF_PATH_COMPUTE;
+    const bool narrow = params.filter == PF_SSF_FILTER_NARROW_RANGE;
+    // Raster path: sphere sprites for THICKNESS / DEPTH. Compute path: splat clear, the two
+    // splats and the splat resolve.
+    splat_clear_ = splat_resolve_ = smooth_ = 0;
+    for (auto [id, out] : {std::pair{compute ? ProgramId::ssf_splat_thickness_cs : ProgramId::ssf_thickness, &thickness_},
+                           std::pair{compute ? ProgramId::ssf_splat_depth_cs : ProgramId::ssf_depth, &depth_},
+                           std::pair{compute ? ProgramId::ssf_shade_cs : ProgramId::ssf_shade_fs, &shade_},
+                           std::pair{ProgramId::ssf_resolve, &resolve_}}) {
+        if (pf_result r = c.program(id, f.fn, *out); r != PF_OK) return r;
+    }
+    if (compute) {
+        if (pf_result r = c.program(ProgramId::ssf_splat_clear_cs, f.fn, splat_clear_); r != PF_OK) return r;
+        if (pf_result r = c.program(ProgramId::ssf_splat_resolve_cs, f.fn, splat_resolve_); r != PF_OK) return r;
+    }
+    if (params.filter != PF_SSF_FILTER_NONE) {
+        const ProgramId id = compute ? (narrow ? ProgramId::ssf_smooth_narrow_cs : ProgramId::ssf_smooth_bilateral_cs)
+                                     : (narrow ? ProgramId::ssf_smooth_narrow_fs : ProgramId::ssf_smooth_bilateral_fs);
+        if (pf_result r = c.program(id, f.fn, smooth_); r != PF_OK) return r;
+    }
+    const gl::Api& gl = c.gl();
+    const int w = f.width(), h = f.height();
+    if (!targets_) targets_ = std::make_unique<SsfTargets>(gl);
+    gl.ActiveTexture(GL_TEXTURE0 + PF_TEX_SCENE_COLOR);  // ensure() binds on the active unit
+    targets_->ensure(w, h, f.info.scene_depth_format);
+    return gl::check_allocated(gl, c.log(),
+                               std::string(f.fn) + ": allocating " + std::to_string(w) + "x" + std::to_string(h) +
+                                   " render targets");
+}
+
+void LiquidSurfaceLayer::fill(const RenderFrame& f, RenderUniforms& u) const {
+    fill_ssf(*f.ssf, f.target->scene_depth != 0, f.target->environment_cubemap != 0, u);
+}
+
+std::vector<RenderPass> LiquidSurfaceLayer::passes(const RenderFrame& f) {
+    const bool compute = f.ssf->path == PF_SSF_PATH_COMPUTE;
+    auto pass = [this](pf_render_pass timer, void (LiquidSurfaceLayer::*run)(RenderContext&, const RenderFrame&)) {
+        return RenderPass{timer, [this, run](RenderContext& c, const RenderFrame& f) { (this->*run)(c, f); }};
+    };
+    return {pass(PF_RENDER_PASS_SCENE_COPY, &LiquidSurfaceLayer::scene_copy),
+            pass(PF_RENDER_PASS_THICKNESS, compute ? &LiquidSurfaceLayer::splat_thickness : &LiquidSurfaceLayer::thickness),
+            pass(PF_RENDER_PASS_DEPTH, compute ? &LiquidSurfaceLayer::splat_depth : &LiquidSurfaceLayer::depth),
+            pass(PF_RENDER_PASS_SMOOTH, &LiquidSurfaceLayer::smooth),
+            pass(PF_RENDER_PASS_SHADE, &LiquidSurfaceLayer::shade),
+            pass(PF_RENDER_PASS_RESOLVE, &LiquidSurfaceLayer::resolve)};
+}
+
+// Blits rather than glCopyImageSubData: a blit needs only a complete framebuffer, not a
+// complete texture (an engine attachment often has a mipmapping filter and one level), and it
+// converts any colour format into the RGBA16F copy. With GL_FRAMEBUFFER_SRGB on, an sRGB scene
+// is decoded to linear on the way, as sampling it would be.
+void LiquidSurfaceLayer::scene_copy(RenderContext& c, const RenderFrame& f) {
+    const gl::Api& gl = c.gl();
+    const bool depth = f.target->scene_depth != 0;
+    const GLuint read = targets_->framebuffer(SsfTargets::copy_read);
+    gl.BindFramebuffer(GL_READ_FRAMEBUFFER, read);
+    gl.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, f.target->scene_color, 0);
+    gl.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth ? f.target->scene_depth : 0,
+                            0);
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets_->framebuffer(SsfTargets::copy_draw));
+    gl.Enable(GL_FRAMEBUFFER_SRGB);
+    const int32_t* v = f.camera->viewport;
+    gl.BlitFramebuffer(v[0], v[1], v[0] + v[2], v[1] + v[3], 0, 0, v[2], v[3],
+                       GL_COLOR_BUFFER_BIT | (depth ? GL_DEPTH_BUFFER_BIT : 0), GL_NEAREST);
+    gl.Disable(GL_FRAMEBUFFER_SRGB);
+    // Detach at once: an attachment keeps the engine's texture alive after the engine deletes it.
+    gl.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
+    gl.FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+}
+
+void LiquidSurfaceLayer::thickness(RenderContext& c, const RenderFrame& f) {
+    const gl::Api& gl = c.gl();
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets_->framebuffer(SsfTargets::thickness_fb));
+    gl.Viewport(0, 0, f.width(), f.height());
+    const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    gl.ClearBufferfv(GL_COLOR, 0, zero);
+    gl.Enable(GL_BLEND);
+    gl.BlendEquation(GL_FUNC_ADD);
+    gl.BlendFunc(GL_ONE, GL_ONE);
+    c.bind_texture(PF_TEX_SCENE_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_depth), false);
+    gl.UseProgram(thickness_);
+    c.draw_spheres();
+    gl.Disable(GL_BLEND);
+}
+
+void LiquidSurfaceLayer::depth(RenderContext& c, const RenderFrame& f) {
+    const gl::Api& gl = c.gl();
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets_->framebuffer(SsfTargets::depth_fb));
+    gl.Viewport(0, 0, f.width(), f.height());
+    const GLfloat no_liquid[4] = {float(PF_NO_LIQUID), 0.0f, 0.0f, 0.0f}, far_depth = 1.0f;
+    gl.ClearBufferfv(GL_COLOR, 0, no_liquid);
+    gl.ClearBufferfv(GL_DEPTH, 0, &far_depth);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_LESS);
+    gl.UseProgram(depth_);
+    c.draw_spheres();
+    gl.Disable(GL_DEPTH_TEST);
+}
+
+void LiquidSurfaceLayer::splat_thickness(RenderContext& c, const RenderFrame& f) {
+    const gl::Api& gl = c.gl();
+    const GLuint depth_bits = targets_->texture(SsfTargets::splat_depth_bits);
+    const GLuint thickness_bits = targets_->texture(SsfTargets::splat_thickness_bits);
+    gl.BindImageTexture(PF_IMG_SPLAT_DEPTH, depth_bits, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    gl.BindImageTexture(PF_IMG_SPLAT_THICKNESS, thickness_bits, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    gl.UseProgram(splat_clear_);
+    c.dispatch_screen(f.width(), f.height());
+    pf_gl_buffers b{};
+    c.sim().gl_buffers(b);
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_POS, b.positions);
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_COUNT, b.draw_indirect);
+    c.bind_texture(PF_TEX_SCENE_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_depth), false);
+    c.dispatch_particles(thickness_);
+}
+
+void LiquidSurfaceLayer::splat_depth(RenderContext& c, const RenderFrame& f) {
+    const gl::Api& gl = c.gl();
+    c.dispatch_particles(depth_);
+    gl.BindImageTexture(PF_IMG_RAW_DEPTH, targets_->texture(SsfTargets::raw_depth), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                        GL_R32F);
+    gl.BindImageTexture(PF_IMG_THICKNESS, targets_->texture(SsfTargets::thickness), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                        GL_R32F);
+    gl.UseProgram(splat_resolve_);
+    c.dispatch_screen(f.width(), f.height());
+}
+
+// Alternating horizontal and vertical 1D passes, filter_iterations times, ping-ponging
+// between smooth_a and smooth_b; surface_ is the texture holding the surface to shade.
+void LiquidSurfaceLayer::smooth(RenderContext& c, const RenderFrame& f) {
+    const pf_ssf_params& params = *f.ssf;
+    surface_ = SsfTargets::raw_depth;
+    if (params.filter == PF_SSF_FILTER_NONE) return;
+    const gl::Api& gl = c.gl();
+    const bool compute = params.path == PF_SSF_PATH_COMPUTE;
+    gl.UseProgram(smooth_);
+    if (!compute) gl.Viewport(0, 0, f.width(), f.height());
+    for (uint32_t pass = 0; pass < 2 * params.filter_iterations; ++pass) {
+        const SsfTargets::Texture dst = (pass % 2 == 0) ? SsfTargets::smooth_a : SsfTargets::smooth_b;
+        gl.ProgramUniform2i(smooth_, PF_LOC_SMOOTH_DIRECTION, pass % 2 == 0 ? 1 : 0, pass % 2 == 0 ? 0 : 1);
+        c.bind_texture(PF_TEX_LIQUID_DEPTH, GL_TEXTURE_2D, targets_->texture(surface_), false);
+        if (compute) {
+            gl.BindImageTexture(PF_IMG_SMOOTH_OUT, targets_->texture(dst), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+            c.dispatch_screen(f.width(), f.height());
+        } else {
+            gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER,
+                               targets_->framebuffer(dst == SsfTargets::smooth_a ? SsfTargets::smooth_a_fb
+                                                                                 : SsfTargets::smooth_b_fb));
+            c.draw_fullscreen();
+        }
+        surface_ = dst;
+    }
+}
+
+void LiquidSurfaceLayer::shade(RenderContext& c, const RenderFrame& f) {
+    const gl::Api& gl = c.gl();
+    c.bind_texture(PF_TEX_SCENE_COLOR, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_color), true);
+    c.bind_texture(PF_TEX_LIQUID_DEPTH, GL_TEXTURE_2D, targets_->texture(surface_), false);
+    c.bind_texture(PF_TEX_THICKNESS, GL_TEXTURE_2D, targets_->texture(SsfTargets::thickness), false);
+    c.bind_texture(PF_TEX_ENVIRONMENT, GL_TEXTURE_CUBE_MAP, f.target->environment_cubemap, true);
+    gl.UseProgram(shade_);
+    if (f.ssf->path == PF_SSF_PATH_COMPUTE) {
+        gl.BindImageTexture(PF_IMG_SHADE_COLOR, targets_->texture(SsfTargets::shaded_color), 0, GL_FALSE, 0,
+                            GL_WRITE_ONLY, GL_RGBA16F);
+        gl.BindImageTexture(PF_IMG_SHADE_DEPTH, targets_->texture(SsfTargets::shaded_depth), 0, GL_FALSE, 0,
+                            GL_WRITE_ONLY, GL_R32F);
+        c.dispatch_screen(f.width(), f.height());
+    } else {
+        gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets_->framebuffer(SsfTargets::shade_fb));
+        gl.Viewport(0, 0, f.width(), f.height());
+        c.draw_fullscreen();
+    }
+}
+
+void LiquidSurfaceLayer::resolve(RenderContext& c, const RenderFrame& f) {
+    const gl::Api& gl = c.gl();
+    const int32_t* v = f.camera->viewport;
+    gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, f.target->framebuffer);
+    gl.Viewport(v[0], v[1], v[2], v[3]);
+    // ALWAYS with writes on: the liquid already passed the scene-depth test; this only stores
+    // its depth (a target without depth attachment simply has none to write).
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_ALWAYS);
+    gl.Enable(GL_FRAMEBUFFER_SRGB);  // encode into an sRGB target, matching the decoded copy
+    c.bind_texture(PF_TEX_SHADED_COLOR, GL_TEXTURE_2D, targets_->texture(SsfTargets::shaded_color), false);
+    c.bind_texture(PF_TEX_SHADED_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::shaded_depth), false);
+    gl.UseProgram(resolve_);
+    c.draw_fullscreen();
+}
+
+}  // namespace pf

@@ -1,0 +1,38 @@
+// The liquid surface of pf_render_ssf: screen-space fluid rendering over the engine's scene,
+// SCENE_COPY -> THICKNESS -> DEPTH -> SMOOTH -> SHADE -> RESOLVE, with THICKNESS and DEPTH as
+// compute splats or sphere sprites and SMOOTH and SHADE as compute kernels or full-screen
+// fragment shaders (pf_ssf_path). Its shaders are in shaders/render/liquid_surface/.
+#pragma once
+#include <memory>
+
+#include "render/layers/liquid_surface/ssf_targets.h"
+#include "render/render_layer.h"
+
+namespace pf {
+
+class LiquidSurfaceLayer final : public RenderLayer {
+public:
+    bool reads_scene() const override { return true; }
+    pf_result prepare(RenderContext& context, const RenderFrame& frame) override;
+    void fill(const RenderFrame& frame, RenderUniforms& u) const override;
+    std::vector<RenderPass> passes(const RenderFrame& frame) override;
+    uint64_t bytes() const override { return targets_ ? targets_->bytes() : 0; }
+
+private:
+    void scene_copy(RenderContext& c, const RenderFrame& f);
+    void thickness(RenderContext& c, const RenderFrame& f);
+    void depth(RenderContext& c, const RenderFrame& f);
+    // Compute path of THICKNESS and DEPTH: clear + thickness splat, depth splat + resolve.
+    void splat_thickness(RenderContext& c, const RenderFrame& f);
+    void splat_depth(RenderContext& c, const RenderFrame& f);
+    void smooth(RenderContext& c, const RenderFrame& f);
+    void shade(RenderContext& c, const RenderFrame& f);
+    void resolve(RenderContext& c, const RenderFrame& f);
+
+    std::unique_ptr<SsfTargets> targets_;
+    // This frame's programs (raster or compute, by pf_ssf_path; smooth_ 0 without a filter).
+    GLuint thickness_ = 0, depth_ = 0, splat_clear_ = 0, splat_resolve_ = 0, smooth_ = 0, shade_ = 0, resolve_ = 0;
+    SsfTargets::Texture surface_ = SsfTargets::raw_depth;  // what SMOOTH left for SHADE
+};
+
+}  // namespace pf
