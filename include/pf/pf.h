@@ -1030,7 +1030,8 @@ typedef struct pf_ssf_params {
                                       sets it); 0: every zero field takes its default */
     float particle_radius;       /**< sphere radius in metres, > 0; 0 = default (0.5 cell size) */
     pf_ssf_filter filter;        /**< depth smoothing filter */
-    uint32_t filter_radius;      /**< filter half-width in pixels, 1..64; 0 = default 8 */
+    uint32_t filter_radius;      /**< largest filter half-width in pixels, 1..64 (filter_world_radius sets it
+                                      per pixel); 0 = default 32 */
     uint32_t filter_iterations;  /**< filter applications, 1..16; 0 = default 1 (bilateral) / 2 (narrow range) */
     float filter_depth_range;    /**< depth difference in metres treated as the same surface, > 0;
                                       0 = default (2 particle radii) */
@@ -1041,6 +1042,10 @@ typedef struct pf_ssf_params {
     float shininess;             /**< Blinn-Phong exponent of the highlight, 1..10000 */
     float light_direction[3];    /**< world direction towards the sun (normalised internally), non-zero */
     pf_ssf_path path;            /**< compute or raster path (same image) */
+    float filter_world_radius;   /**< filter half-width in metres on the liquid: each pixel's half-width in
+                                      pixels follows its distance, 1..filter_radius, so the surface is as
+                                      smooth at every resolution and distance; > 0; 0 = default (one cell
+                                      size) */
 } pf_ssf_params;
 
 /** What colours the debug sprites of pf_render_particles. */
@@ -1071,7 +1076,7 @@ typedef struct pf_particle_params {
 PF_API pf_result pf_init_ssf_params(pf_ssf_params* out, uint32_t struct_size);
 /** Writes the default debug view for a caller whose pf_particle_params is struct_size bytes. Any thread. */
 PF_API pf_result pf_init_particle_params(pf_particle_params* out, uint32_t struct_size);
-/** Default liquid look: clear water, bilateral filter, compute path. Any thread. */
+/** Default liquid look: clear water, narrow-range filter one cell wide, compute path. Any thread. */
 static inline pf_ssf_params pf_default_ssf_params(void) {
     pf_ssf_params p;
     pf_init_ssf_params(&p, (uint32_t)sizeof p);

@@ -391,6 +391,7 @@ class SsfParams(_Struct):
         ("shininess", ctypes.c_float),
         ("light_direction", ctypes.c_float * 3),
         ("path", c_enum),
+        ("filter_world_radius", ctypes.c_float),
     ]
 
 

@@ -61,7 +61,9 @@ struct Options {
     pfs::Size size{960, 540};
     uint32_t every = 4;
     bool ssf = true;
-    pf_ssf_filter filter = PF_SSF_FILTER_BILATERAL;
+    pf_ssf_filter filter = pf_default_ssf_params().filter;
+    uint32_t filter_radius = 0;       // 0: pflip's default
+    float filter_world_radius = 0;    // 0: pflip's default
     pf_ssf_path path = PF_SSF_PATH_COMPUTE;
     pf_depth_convention depth = PF_DEPTH_STANDARD;
     bool builtin_sky = false;
@@ -106,7 +108,12 @@ void add_options(CLI::App& app, Options& o) {
                                                              {"none", PF_SSF_FILTER_NONE}},
                                  "filter"))
         ->type_name("NAME")
-        ->default_str("bilateral");
+        ->default_str("narrow");
+    app.add_option("--filter-radius", o.filter_radius, "SSF filter's largest half-width in pixels (0 = pflip's default)")
+        ->check(CLI::Range(0u, 64u));
+    app.add_option("--filter-world-radius", o.filter_world_radius,
+                   "SSF filter's half-width in metres on the liquid (0 = pflip's default: one cell)")
+        ->check(CLI::Range(0.0f, 1e6f));
     app.add_option("--path", o.path, "SSF passes as compute or fragment shaders")
         ->transform(pfs::NameMap(
             pfs::Choices<pf_ssf_path>{{"compute", PF_SSF_PATH_COMPUTE}, {"raster", PF_SSF_PATH_RASTER}}, "path"))
@@ -403,6 +410,8 @@ int run(int argc, char** argv) {
         look.ssf = opt.ssf;
         look.sky_cubemap = !opt.builtin_sky;
         look.ssf_params.filter = opt.filter;
+        look.ssf_params.filter_radius = opt.filter_radius;
+        look.ssf_params.filter_world_radius = opt.filter_world_radius;
         look.ssf_params.path = opt.path;
         look.ssf_params.particle_radius = opt.radius;
         look.particle_params.particle_radius = opt.radius;

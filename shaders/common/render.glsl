@@ -21,6 +21,8 @@ layout(std140, binding = PF_UBO_RENDER) uniform RenderUniforms {
     ivec4 modes;      // debug view colour source (pf_particle_color), -, -, -
     ivec4 target;     // viewport x, y in the engine's target (own texel = target pixel - this), -, -
     mat4 domain_view; // simulation (domain) coordinates -> eye: view * the domain's pose
+    vec4 filter_size; // filter half-width in metres, pixels per metre at eye depth 1 (perspective) or at
+                      // any depth (orthographic), -, -
 } rnd;
 
 // Larger than any eye depth: "no scene surface here".

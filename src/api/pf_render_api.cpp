@@ -41,7 +41,7 @@ pf_result render_call(pf_sim* handle, const char* fn, const pf_camera* camera, c
 pf_ssf_params full_default_ssf_params() {
     pf_ssf_params p{};
     p.struct_size = uint32_t(sizeof p);
-    p.filter = PF_SSF_FILTER_BILATERAL;
+    p.filter = PF_SSF_FILTER_NARROW_RANGE;
     // Per metre: about a metre of liquid keeps 55% red, 82% green, 90% blue (clear water, tinted).
     p.absorption[0] = 0.6f;
     p.absorption[1] = 0.2f;

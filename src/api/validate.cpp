@@ -225,6 +225,9 @@ pf_result validate_render_params(const pf_ssf_params& p, const Log& log, const c
         return bad("params->light_direction must be finite and non-zero");
     if (enum_bits(p.path) != PF_SSF_PATH_COMPUTE && enum_bits(p.path) != PF_SSF_PATH_RASTER)
         return bad("params->path is not a pf_ssf_path (" + std::to_string(int32_t(enum_bits(p.path))) + ")");
+    if (!(std::isfinite(p.filter_world_radius) && p.filter_world_radius > 0.0f))
+        return bad("params->filter_world_radius must be finite and >= 0 (0 = default), got " +
+                   number_string(p.filter_world_radius));
     return PF_OK;
 }
 
@@ -248,7 +251,8 @@ pf_result validate_render_params(const pf_particle_params& p, const Log& log, co
 pf_ssf_params resolve_render_params(const pf_ssf_params& in, float cell_size) {
     pf_ssf_params p = in;
     if (p.particle_radius == 0.0f) p.particle_radius = 0.5f * cell_size;
-    if (p.filter_radius == 0) p.filter_radius = 8;
+    if (p.filter_radius == 0) p.filter_radius = 32;
+    if (p.filter_world_radius == 0.0f) p.filter_world_radius = cell_size;
     if (p.filter_iterations == 0) p.filter_iterations = p.filter == PF_SSF_FILTER_NARROW_RANGE ? 2 : 1;
     if (p.filter_depth_range == 0.0f) p.filter_depth_range = 2.0f * p.particle_radius;
     return p;

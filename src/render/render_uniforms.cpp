@@ -40,6 +40,8 @@ void fill_camera(const pf_camera& camera, float y_sign, const glm::mat4& domain_
     const bool ortho = camera.proj[3] == 0.0f && camera.proj[7] == 0.0f && camera.proj[11] == 0.0f &&
                        camera.proj[15] != 0.0f;
     u.planes[3] = ortho ? 1.0f : 0.0f;
+    // proj[1][1] maps eye y over depth (or eye y, orthographic) to NDC y: half the height in pixels.
+    u.filter[1] = std::fabs(camera.proj[5]) * 0.5f * h;
     u.surface[3] = y_sign;
     u.target[0] = camera.viewport[0];
     u.target[1] = camera.viewport[1];
@@ -49,6 +51,7 @@ void fill_ssf(const pf_ssf_params& p, bool has_scene_depth, bool has_environment
     u.sphere[0] = p.particle_radius;
     u.sphere[1] = float(p.filter_radius);
     u.sphere[2] = p.filter_depth_range;
+    u.filter[0] = p.filter_world_radius;
     u.sphere[3] = has_scene_depth ? 1.0f : 0.0f;
     for (int c = 0; c < 3; ++c) u.absorption[c] = p.absorption[c];
     u.absorption[3] = p.refraction;

@@ -26,8 +26,10 @@ struct RenderUniforms {
     int32_t modes[4];      // colour_by, -, -, -
     int32_t target[4];     // viewport x, y, -, -
     float domain_view[16]; // simulation (domain) coordinates -> eye: view * the domain's pose
+    float filter[4];       // filter half-width in metres, pixels per metre at eye depth 1 (perspective) or
+                           // at any depth (orthographic), -, -
 };
-static_assert(sizeof(RenderUniforms) == 5 * 64 + 10 * 16, "RenderUniforms must match the std140 block");
+static_assert(sizeof(RenderUniforms) == 5 * 64 + 11 * 16, "RenderUniforms must match the std140 block");
 
 // Camera part: matrices (inverses in double precision), viewport, planes. `y_sign` is -1 when
 // the engine's clip origin is GL_UPPER_LEFT. The camera must have passed validation (the

@@ -161,6 +161,10 @@ TEST_F(RenderState, BadArgumentsAreRefusedAndDrawNothing) {
     with_params("shininess 0.5", "params->shininess", [](pf_ssf_params& p) { p.shininess = 0.5f; });
     with_params("zero light", "params->light_direction", [](pf_ssf_params& p) { std::memset(p.light_direction, 0, 12); });
     with_params("unknown path", "params->path", [](pf_ssf_params& p) { p.path = pf_ssf_path(3); });
+    with_params("negative world filter radius", "params->filter_world_radius",
+                [](pf_ssf_params& p) { p.filter_world_radius = -0.1f; });
+    with_params("NaN world filter radius", "params->filter_world_radius",
+                [](pf_ssf_params& p) { p.filter_world_radius = NAN; });
     with_target("framebuffer not an FBO", "target->framebuffer", {12345, t.color, t.depth, 0});
     with_target("incomplete framebuffer", "target->framebuffer", {empty_fbo, t.color, t.depth, 0});
     with_target("no scene colour", "target->scene_color", {t.fbo, 0, t.depth, 0});

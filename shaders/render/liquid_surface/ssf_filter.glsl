@@ -9,11 +9,16 @@
 #error "PF_SSF_FILTER must be defined (permutations.inc)"
 #endif
 
-int filter_radius() { return int(rnd.sphere.y); }
+// Half-width in pixels of the filter at eye depth `depth`: filter_world_radius projected, between
+// one pixel and filter_radius.
+int filter_radius(float depth) {
+    float pixels = rnd.filter_size.x * rnd.filter_size.y / (render_orthographic() ? 1.0 : depth);
+    return int(clamp(pixels, 1.0, rnd.sphere.y) + 0.5);
+}
 
 // Spatial Gaussian with sigma = radius / 2: the outermost taps still weigh exp(-2).
-float spatial_weight(int i) {
-    float sigma = 0.5 * float(filter_radius());
+float spatial_weight(int i, int radius) {
+    float sigma = 0.5 * float(radius);
     return exp(-float(i * i) / (2.0 * sigma * sigma));
 }
 
@@ -27,9 +32,10 @@ float ssf_filter(ivec2 p, ivec2 dir) {
     float center = liquid_depth(p);
     if (!is_liquid(center)) return center;
     float range_sigma = 0.5 * rnd.sphere.z;
+    int radius = filter_radius(center);
     float sum = center, weights = 1.0;
-    for (int i = 1; i <= filter_radius(); ++i) {
-        float ws = spatial_weight(i);
+    for (int i = 1; i <= radius; ++i) {
+        float ws = spatial_weight(i, radius);
         for (int side = -1; side <= 1; side += 2) {
             float z = liquid_depth(p + side * i * dir);
             if (!is_liquid(z)) continue;
@@ -61,8 +67,9 @@ float ssf_filter(ivec2 p, ivec2 dir) {
     float range = rnd.sphere.z;
     float clamped = center - rnd.sphere.x;
     vec2 lower = vec2(center - range), upper = vec2(center + range);  // x: -dir side, y: +dir side
+    int radius = filter_radius(center);
     float sum = center, weights = 1.0;
-    for (int i = 1; i <= filter_radius(); ++i) {
+    for (int i = 1; i <= radius; ++i) {
         vec2 z = vec2(liquid_depth(p - i * dir), liquid_depth(p + i * dir));
         bvec2 behind = bvec2(!is_liquid(z.x) || z.x > upper.x, !is_liquid(z.y) || z.y > upper.y);
         for (int s = 0; s < 2; ++s) {
@@ -75,7 +82,7 @@ float ssf_filter(ivec2 p, ivec2 dir) {
             }
         }
         if (behind.x || behind.y) continue;
-        float ws = spatial_weight(i);
+        float ws = spatial_weight(i, radius);
         sum += ws * (z.x + z.y);
         weights += 2.0 * ws;
     }
