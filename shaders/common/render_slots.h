@@ -10,8 +10,9 @@
 #define PF_UBO_RENDER 1
 
 /* texture units (sampler bindings) */
-#define PF_TEX_SCENE_COLOR 0   /* copy of the engine's scene colour */
-#define PF_TEX_SCENE_DEPTH 1   /* copy of the engine's scene depth (window depth, engine convention) */
+#define PF_TEX_SCENE_COLOR 0   /* copy of the engine's scene colour (the engine's own during the copy) */
+#define PF_TEX_SCENE_DEPTH 1   /* copy of the engine's scene depth (window depth, engine convention; the
+                                  engine's own during the copy) */
 #define PF_TEX_LIQUID_DEPTH 2  /* linear eye depth of the liquid surface (filter input / shading) */
 #define PF_TEX_THICKNESS 3     /* liquid thickness along the view ray, metres */
 #define PF_TEX_ENVIRONMENT 4   /* the engine's environment cube map */
@@ -27,6 +28,8 @@
 #define PF_IMG_SPLAT_THICKNESS 1  /* r32ui: thickness in fixed point */
 #define PF_IMG_RAW_DEPTH 2        /* r32f outputs of the splat resolve */
 #define PF_IMG_THICKNESS 3
+#define PF_IMG_SCENE_COLOR 0      /* the scene copy's outputs: rgba16f colour, r32f window depth */
+#define PF_IMG_SCENE_DEPTH 1
 #define PF_RENDER_IMAGE_UNITS 4
 
 /* storage block of the compute splats: the simulation's particle positions */

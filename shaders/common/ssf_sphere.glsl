@@ -34,26 +34,43 @@ void pixel_ray(vec2 frag, out vec3 origin, out vec3 dir) {
     camera_ray(eye_point(pixel_ndc(frag), 1.0), origin, dir);
 }
 
-// Eye depth of the sphere's front surface seen through pixel `frag`, if the ray hits it in
-// [near, far] and in front of the engine's scene.
-bool sphere_depth_at(vec2 frag, vec3 center, out float depth) {
+// Where the ray through pixel `frag` enters and leaves the sphere, as eye depths, and the eye
+// depth it gains per unit of its length (-dir.z); false when it misses.
+bool sphere_span(vec2 frag, vec3 center, out float front, out float back, out float per_length) {
     vec3 origin, dir;
     pixel_ray(frag, origin, dir);
     float t_front, t_back;
     if (!sphere_hit(origin, dir, center, rnd.sphere.x, t_front, t_back)) return false;
-    depth = -(origin.z + t_front * dir.z);
-    return depth >= rnd.planes.x && depth <= rnd.planes.y && depth < scene_eye_depth(ivec2(frag));
+    front = -(origin.z + t_front * dir.z);
+    back = -(origin.z + t_back * dir.z);
+    per_length = -dir.z;
+    return true;
+}
+
+// Whether the sphere's front surface at eye depth `front` is drawn: in [near, far] and in
+// front of the engine's scene at eye depth `scene`.
+bool span_front_visible(float front, float scene) {
+    return front >= rnd.planes.x && front <= rnd.planes.y && front < scene;
+}
+
+// Length of a span inside [near, min(far, scene)] along its ray (0 when none).
+float span_chord(float front, float back, float per_length, float scene) {
+    float lo = max(front, rnd.planes.x);
+    float hi = min(min(back, rnd.planes.y), scene);
+    return hi > lo ? (hi - lo) / per_length : 0.0;
+}
+
+// Eye depth of the sphere's front surface seen through pixel `frag`, if the ray hits it in
+// [near, far] and in front of the engine's scene.
+bool sphere_depth_at(vec2 frag, vec3 center, out float depth) {
+    float back, per_length;
+    return sphere_span(frag, center, depth, back, per_length) && span_front_visible(depth, scene_eye_depth(ivec2(frag)));
 }
 
 // Length of the ray through pixel `frag` inside the sphere, between the near plane and the
 // nearer of the far plane and the engine's scene surface (0 when none).
 float sphere_chord_at(vec2 frag, vec3 center) {
-    vec3 origin, dir;
-    pixel_ray(frag, origin, dir);
-    float t_front, t_back;
-    if (!sphere_hit(origin, dir, center, rnd.sphere.x, t_front, t_back)) return 0.0;
-    float front = -(origin.z + t_front * dir.z), back = -(origin.z + t_back * dir.z);
-    float lo = max(front, rnd.planes.x);
-    float hi = min(min(back, rnd.planes.y), scene_eye_depth(ivec2(frag)));
-    return hi > lo ? (hi - lo) / -dir.z : 0.0;  // eye depth runs along -z: length along the ray
+    float front, back, per_length;
+    if (!sphere_span(frag, center, front, back, per_length)) return 0.0;
+    return span_chord(front, back, per_length, scene_eye_depth(ivec2(frag)));
 }

@@ -8,9 +8,9 @@
 #include <functional>
 #include <vector>
 
+#include "gl/gl.h"
 #include "pf/pf.h"
 #include "render/render_uniforms.h"
-#include "render/target_check.h"
 
 namespace pf {
 
@@ -24,7 +24,6 @@ struct RenderFrame {
     const char* fn = nullptr;  // the entry point, for messages
     const pf_camera* camera = nullptr;
     const pf_render_target* target = nullptr;
-    TargetInfo info{};
     float y_sign = 1.0f;  // -1 when the engine's clip origin is GL_UPPER_LEFT
     const pf_ssf_params* ssf = nullptr;
     const pf_particle_params* particles = nullptr;

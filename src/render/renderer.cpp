@@ -45,7 +45,7 @@ pf_result Renderer::begin(RenderFrame& frame, bool scene) {
         sim_.log().warning(std::string(frame.fn) + ": a GL error (" + gl::hex(pending) +
                            ") was pending before the call; it was consumed");
     }
-    if (pf_result r = check_render_target(gl, sim_.log(), frame.fn, *frame.target, *frame.camera, scene, frame.info);
+    if (pf_result r = check_render_target(gl, sim_.log(), frame.fn, *frame.target, *frame.camera, scene);
         r != PF_OK)
         return r;
     frame.y_sign = 1.0f;

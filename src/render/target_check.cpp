@@ -47,8 +47,15 @@ struct Check {
         const GLint depth_bits = level0(GL_TEXTURE_2D, GL_TEXTURE_DEPTH_SIZE);
         const GLint red_type = level0(GL_TEXTURE_2D, GL_TEXTURE_RED_TYPE);
         format = GLenum(level0(GL_TEXTURE_2D, GL_TEXTURE_INTERNAL_FORMAT));
+        // The scene copy fetches level 0 of what a shader samples: the depth, not the stencil.
+        GLint base_level = 0, stencil_mode = GL_DEPTH_COMPONENT;
+        gl.GetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, &base_level);
+        if (depth) gl.GetTexParameteriv(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, &stencil_mode);
         gl.BindTexture(GL_TEXTURE_2D, 0);
         if (w <= 0 || h <= 0) return bad(f + " has no level-0 image");
+        if (base_level != 0) return bad(f + " has GL_TEXTURE_BASE_LEVEL " + std::to_string(base_level) + " (0 is read)");
+        if (stencil_mode != GL_DEPTH_COMPONENT)
+            return bad(f + " samples its stencil (GL_DEPTH_STENCIL_TEXTURE_MODE); the depth is read");
         if (depth && depth_bits <= 0) return bad(f + " is not a depth texture (internal format " + hex(format) + ")");
         if (!depth && depth_bits > 0) return bad(f + " is a depth texture; the scene colour must be a colour texture");
         if (!depth && (red_type == GL_INT || red_type == GL_UNSIGNED_INT))
@@ -64,9 +71,8 @@ struct Check {
 }  // namespace
 
 pf_result check_render_target(const gl::Api& gl, const Log& log, const char* fn, const pf_render_target& target,
-                              const pf_camera& camera, bool ssf, TargetInfo& info) {
+                              const pf_camera& camera, bool ssf) {
     const Check c{gl, log, fn};
-    info = TargetInfo{};
     const std::string fb = "target->framebuffer (" + std::to_string(target.framebuffer) + ")";
     if (target.framebuffer != 0 && !gl.IsFramebuffer(target.framebuffer)) return c.bad(fb + " is not a framebuffer object");
     gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, target.framebuffer);
@@ -80,8 +86,8 @@ pf_result check_render_target(const gl::Api& gl, const Log& log, const char* fn,
         r != PF_OK)
         return r;
     if (target.scene_depth != 0) {
-        if (pf_result r = c.texture_2d("scene_depth", target.scene_depth, PF_TEX_SCENE_DEPTH, true, camera,
-                                       info.scene_depth_format);
+        GLenum depth_format = 0;
+        if (pf_result r = c.texture_2d("scene_depth", target.scene_depth, PF_TEX_SCENE_DEPTH, true, camera, depth_format);
             r != PF_OK)
             return r;
     }

@@ -10,13 +10,9 @@
 
 namespace pf {
 
-struct TargetInfo {
-    GLenum scene_depth_format = 0;  // internal format of target->scene_depth, 0 if none
-};
-
 // `ssf`: pf_render_ssf (checks the scene textures) rather than pf_render_particles (only the
 // framebuffer). `fn` prefixes messages. PF_OK or PF_ERROR_INVALID_ARGUMENT naming the field.
 pf_result check_render_target(const gl::Api& gl, const Log& log, const char* fn, const pf_render_target& target,
-                              const pf_camera& camera, bool ssf, TargetInfo& info);
+                              const pf_camera& camera, bool ssf);
 
 }  // namespace pf

@@ -1,19 +1,16 @@
-// THICKNESS / DEPTH passes, compute path: one invocation per particle walks the pixels of
-// its sphere's projected quad and, for each pixel whose centre ray hits the sphere (the
-// same test the raster sprites make per fragment), adds the chord length to the thickness
-// image in fixed point (PF_SPLAT_DEPTH 0) or keeps the nearest eye depth with an atomic
-// minimum on its float bits (PF_SPLAT_DEPTH 1; positive floats order like their bits).
-// Compute instead of raster because fragment work is slow on compute-heavy GPUs (H100).
+// THICKNESS pass, compute path: one invocation per particle walks the pixels of its sphere's
+// projected quad and, for each pixel whose centre ray hits the sphere (the same test the
+// raster sprites make per fragment), adds the chord length to the thickness image in fixed
+// point and keeps the nearest eye depth with an atomic minimum on its float bits (positive
+// floats order like their bits): one walk for both, where the raster path draws the spheres
+// twice. Compute instead of raster because fragment work is slow on compute-heavy GPUs (H100).
 #include "common/slots.h"
 #include "common/ssf_sphere.glsl"
 
 layout(local_size_x = PF_SPLAT_WORKGROUP) in;
 layout(std430, binding = PF_SSBO_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
-#if PF_SPLAT_DEPTH
-layout(binding = PF_IMG_SPLAT_DEPTH, r32ui) uniform coherent uimage2D io_bits;
-#else
-layout(binding = PF_IMG_SPLAT_THICKNESS, r32ui) uniform coherent uimage2D io_bits;
-#endif
+layout(binding = PF_IMG_SPLAT_DEPTH, r32ui) uniform coherent uimage2D io_depth_bits;
+layout(binding = PF_IMG_SPLAT_THICKNESS, r32ui) uniform coherent uimage2D io_thickness_bits;
 layout(std430, binding = PF_SSBO_PARTICLE_COUNT) readonly buffer Count { uint count_record[]; };
 layout(location = PF_LOC_SPLAT_COUNT) uniform uint u_count;  // slots covered by the dispatch
 
@@ -48,13 +45,16 @@ void main() {
     for (int y = first.y; y <= last.y; ++y) {
         for (int x = first.x; x <= last.x; ++x) {
             vec2 frag = vec2(x, y) + 0.5;
-#if PF_SPLAT_DEPTH
-            float depth;
-            if (sphere_depth_at(frag, center, depth)) imageAtomicMin(io_bits, ivec2(x, y), floatBitsToUint(depth));
-#else
-            float chord = sphere_chord_at(frag, center);
-            if (chord > 0.0) imageAtomicAdd(io_bits, ivec2(x, y), uint(chord * PF_THICKNESS_FIXED_SCALE + 0.5));
-#endif
+            float front, back, per_length;
+            if (!sphere_span(frag, center, front, back, per_length)) continue;
+            float scene = scene_eye_depth(ivec2(x, y));
+            // Most spheres lie behind the surface already splatted: a plain load skips their
+            // atomic (the stored depth only ever falls, so skipping on a stale value is safe).
+            uint bits = floatBitsToUint(front);
+            if (span_front_visible(front, scene) && bits < imageLoad(io_depth_bits, ivec2(x, y)).r)
+                imageAtomicMin(io_depth_bits, ivec2(x, y), bits);
+            float chord = span_chord(front, back, per_length, scene);
+            if (chord > 0.0) imageAtomicAdd(io_thickness_bits, ivec2(x, y), uint(chord * PF_THICKNESS_FIXED_SCALE + 0.5));
         }
     }
 }

@@ -22,16 +22,16 @@ private:
     void scene_copy(RenderContext& c, const RenderFrame& f);
     void thickness(RenderContext& c, const RenderFrame& f);
     void depth(RenderContext& c, const RenderFrame& f);
-    // Compute path of THICKNESS and DEPTH: clear + thickness splat, depth splat + resolve.
+    // Compute path of THICKNESS and DEPTH: clear + the splat of both, then their resolve.
     void splat_thickness(RenderContext& c, const RenderFrame& f);
-    void splat_depth(RenderContext& c, const RenderFrame& f);
+    void splat_resolve(RenderContext& c, const RenderFrame& f);
     void smooth(RenderContext& c, const RenderFrame& f);
     void shade(RenderContext& c, const RenderFrame& f);
     void resolve(RenderContext& c, const RenderFrame& f);
 
     std::unique_ptr<SsfTargets> targets_;
     // This frame's programs (raster or compute, by pf_ssf_path; smooth_ 0 without a filter).
-    GLuint thickness_ = 0, depth_ = 0, splat_clear_ = 0, splat_resolve_ = 0, smooth_ = 0, shade_ = 0, resolve_ = 0;
+    GLuint scene_copy_ = 0, thickness_ = 0, depth_ = 0, splat_clear_ = 0, splat_resolve_ = 0, smooth_ = 0, shade_ = 0, resolve_ = 0;
     SsfTargets::Texture surface_ = SsfTargets::raw_depth;  // what SMOOTH left for SHADE
 };
 

@@ -9,27 +9,19 @@ constexpr const char* kTextureLabels[SsfTargets::texture_count] = {
     "ssf_scene_color", "ssf_scene_depth", "ssf_thickness", "ssf_raw_depth", "ssf_depth_buffer", "ssf_smooth_a",
     "ssf_smooth_b", "ssf_shaded_color", "ssf_shaded_depth", "ssf_splat_depth_bits", "ssf_splat_thickness_bits"};
 constexpr const char* kFramebufferLabels[SsfTargets::framebuffer_count] = {
-    "ssf_copy_read", "ssf_copy_draw", "ssf_thickness_fb", "ssf_depth_fb", "ssf_smooth_a_fb", "ssf_smooth_b_fb",
-    "ssf_shade_fb"};
-constexpr GLenum kFormats[SsfTargets::texture_count] = {
-    GL_RGBA16F, 0 /* engine's depth format */, GL_R32F, GL_R32F, GL_DEPTH_COMPONENT32F,
-    GL_R32F,    GL_R32F, GL_RGBA16F, GL_R32F, GL_R32UI, GL_R32UI};
-// Bytes per texel of the formats the targets use (an engine's depth format for the copy).
-uint64_t texel_bytes(GLenum format) {
-    switch (format) {
-        case GL_RGBA16F:
-        case GL_DEPTH32F_STENCIL8: return 8;
-        case GL_DEPTH_COMPONENT16: return 2;
-        default: return 4;  // R32F, R32UI, DEPTH_COMPONENT24/32/32F, DEPTH24_STENCIL8
-    }
-}
+    "ssf_thickness_fb", "ssf_depth_fb", "ssf_smooth_a_fb", "ssf_smooth_b_fb", "ssf_shade_fb"};
+constexpr GLenum kFormats[SsfTargets::texture_count] = {GL_RGBA16F, GL_R32F,    GL_R32F,    GL_R32F,
+                                                        GL_DEPTH_COMPONENT32F, GL_R32F, GL_R32F, GL_RGBA16F,
+                                                        GL_R32F,    GL_R32UI,   GL_R32UI};
+// Bytes per texel of the formats the targets use.
+uint64_t texel_bytes(GLenum format) { return format == GL_RGBA16F ? 8 : 4; }
 }  // namespace
 
 uint64_t SsfTargets::bytes() const {
     uint64_t total = 0;
     for (int t = 0; t < texture_count; ++t) {
         if (textures_[t].id() == 0) continue;
-        total += uint64_t(width_) * uint64_t(height_) * texel_bytes(t == scene_depth ? depth_format_ : kFormats[t]);
+        total += uint64_t(width_) * uint64_t(height_) * texel_bytes(kFormats[t]);
     }
     return total;
 }
@@ -59,8 +51,6 @@ void SsfTargets::attach(Framebuffer f, GLenum attachment, Texture t) {
 }
 
 void SsfTargets::attach_all() {
-    attach(copy_draw, GL_COLOR_ATTACHMENT0, scene_color);
-    attach(copy_draw, GL_DEPTH_ATTACHMENT, scene_depth);  // 0 when there is no copy
     attach(thickness_fb, GL_COLOR_ATTACHMENT0, thickness);
     attach(depth_fb, GL_COLOR_ATTACHMENT0, raw_depth);
     attach(depth_fb, GL_DEPTH_ATTACHMENT, depth_buffer);
@@ -72,19 +62,17 @@ void SsfTargets::attach_all() {
     gl_.DrawBuffers(2, two);  // shade_fb is still bound
 }
 
-void SsfTargets::ensure(int width, int height, GLenum depth_format) {
+void SsfTargets::ensure(int width, int height, bool scene_depth_copy) {
     const bool resized = width != width_ || height != height_;
-    const bool new_depth = depth_format != 0 && depth_format != depth_format_;
+    const bool new_depth = scene_depth_copy && textures_[scene_depth].id() == 0;
     if (!resized && !new_depth) return;
+    const bool had_depth = textures_[scene_depth].id() != 0;
     width_ = width;
     height_ = height;
-    if (resized) {
-        for (int t = 0; t < texture_count; ++t) {
-            if (t != scene_depth) allocate(Texture(t), kFormats[t]);
-        }
+    for (int t = 0; t < texture_count; ++t) {
+        if (t == scene_depth ? (resized ? had_depth || scene_depth_copy : new_depth) : resized)
+            allocate(Texture(t), kFormats[t]);
     }
-    if (depth_format != 0) depth_format_ = depth_format;
-    if (depth_format_ != 0) allocate(scene_depth, depth_format_);
     attach_all();
 }
 

@@ -1,6 +1,6 @@
 // The screen-space liquid's own textures and framebuffers, all of the viewport's size:
-// (re)allocated when the viewport size or the engine's scene depth format changes, never
-// touching an engine object.
+// (re)allocated when the viewport size changes (the scene depth copy once a call gives a scene
+// depth), never touching an engine object.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -14,7 +14,7 @@ class SsfTargets {
 public:
     enum Texture {
         scene_color,   // RGBA16F copy of the engine's scene colour (refraction source)
-        scene_depth,   // copy of the engine's scene depth, in the engine's own depth format
+        scene_depth,   // R32F copy of the engine's scene depth (window depth)
         thickness,     // R32F additive thickness
         raw_depth,     // R32F nearest sphere eye depth (PF_NO_LIQUID elsewhere)
         depth_buffer,  // DEPTH_COMPONENT32F: keeps the nearest sphere in the depth pass
@@ -27,8 +27,6 @@ public:
         texture_count
     };
     enum Framebuffer {
-        copy_read,   // engine scene textures, attached only during the copy
-        copy_draw,   // scene_color (+ scene_depth) copies
         thickness_fb,
         depth_fb,    // raw_depth + depth_buffer
         smooth_a_fb,
@@ -39,14 +37,13 @@ public:
 
     explicit SsfTargets(const gl::Api& gl);
 
-    // Makes every texture width x height and the scene depth copy `depth_format` (0: none
-    // needed; an existing copy is kept). Binds textures on the active unit and framebuffers
-    // on GL_DRAW_FRAMEBUFFER: call under a RenderStateGuard.
-    void ensure(int width, int height, GLenum depth_format);
+    // Makes every texture width x height, and the scene depth copy if `scene_depth` (an existing
+    // copy is kept). Binds textures on the active unit and framebuffers on GL_DRAW_FRAMEBUFFER:
+    // call under a RenderStateGuard.
+    void ensure(int width, int height, bool scene_depth);
 
     GLuint texture(Texture t) const { return textures_[t].id(); }
     GLuint framebuffer(Framebuffer f) const { return framebuffers_[f].id(); }
-    bool has_scene_depth_copy() const { return depth_format_ != 0; }
     // GPU memory of the textures made so far, bytes.
     uint64_t bytes() const;
 
@@ -57,7 +54,6 @@ private:
 
     const gl::Api& gl_;
     int width_ = 0, height_ = 0;
-    GLenum depth_format_ = 0;
     std::array<gl::Object, texture_count> textures_;
     std::array<gl::Object, framebuffer_count> framebuffers_;
 };
