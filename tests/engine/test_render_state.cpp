@@ -110,6 +110,18 @@ TEST_F(RenderState, BadArgumentsAreRefusedAndDrawNothing) {
     glGenTextures(1, &empty_tex);
     glBindTexture(GL_TEXTURE_2D, empty_tex);  // a texture object without an image
     glBindTexture(GL_TEXTURE_2D, 0);
+    // A depth-stencil texture sampled as stencil, and a colour texture whose base level is 1: the
+    // scene copy fetches level 0's depth.
+    GLuint stencil_tex = 0, based = 0;
+    glGenTextures(1, &stencil_tex);
+    glBindTexture(GL_TEXTURE_2D, stencil_tex);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH24_STENCIL8, 64, 48);
+    glTexParameteri(GL_TEXTURE_2D, GL_DEPTH_STENCIL_TEXTURE_MODE, GL_STENCIL_INDEX);
+    glGenTextures(1, &based);
+    glBindTexture(GL_TEXTURE_2D, based);
+    glTexStorage2D(GL_TEXTURE_2D, 2, GL_RGBA8, 64, 48);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 1);
+    glBindTexture(GL_TEXTURE_2D, 0);
     glGenFramebuffers(1, &empty_fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, empty_fbo);  // no attachments: incomplete
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -175,6 +187,8 @@ TEST_F(RenderState, BadArgumentsAreRefusedAndDrawNothing) {
     with_target("scene colour smaller than the viewport", "target->scene_color", {t.fbo, small, t.depth, 0});
     with_target("scene colour without image", "target->scene_color", {t.fbo, empty_tex, t.depth, 0});
     with_target("scene depth a colour texture", "target->scene_depth", {t.fbo, t.color, small, 0});
+    with_target("scene depth sampled as stencil", "target->scene_depth", {t.fbo, t.color, stencil_tex, 0});
+    with_target("scene colour from base level 1", "target->scene_color", {t.fbo, based, t.depth, 0});
     with_target("environment a 2D texture", "target->environment_cubemap", {t.fbo, t.color, t.depth, t.color});
 
     for (const Case& k : cases) {
@@ -200,8 +214,8 @@ TEST_F(RenderState, BadArgumentsAreRefusedAndDrawNothing) {
     EXPECT_EQ(std::memcmp(t.read_depth().data(), depth0.data(), depth0.size() * 4), 0) << "a refused call drew depth";
     // The same target is fine with good arguments (the refusals were about the arguments).
     EXPECT_EQ(pf_render_ssf(sim_.get(), &good.cam, &ok_target, nullptr), PF_OK) << last_log();
-    const GLuint textures[] = {ms, depth_tex, int_tex, small, empty_tex};
-    glDeleteTextures(5, textures);
+    const GLuint textures[] = {ms, depth_tex, int_tex, small, empty_tex, stencil_tex, based};
+    glDeleteTextures(7, textures);
     glDeleteFramebuffers(1, &empty_fbo);
     glDeleteBuffers(1, &buffer);
 }
