@@ -48,11 +48,7 @@ void main() {
             float front, back, per_length;
             if (!sphere_span(frag, center, front, back, per_length)) continue;
             float scene = scene_eye_depth(ivec2(x, y));
-            // Most spheres lie behind the surface already splatted: a plain load skips their
-            // atomic (the stored depth only ever falls, so skipping on a stale value is safe).
-            uint bits = floatBitsToUint(front);
-            if (span_front_visible(front, scene) && bits < imageLoad(io_depth_bits, ivec2(x, y)).r)
-                imageAtomicMin(io_depth_bits, ivec2(x, y), bits);
+            if (span_front_visible(front, scene)) imageAtomicMin(io_depth_bits, ivec2(x, y), floatBitsToUint(front));
             float chord = span_chord(front, back, per_length, scene);
             if (chord > 0.0) imageAtomicAdd(io_thickness_bits, ivec2(x, y), uint(chord * PF_THICKNESS_FIXED_SCALE + 0.5));
         }
