@@ -1104,7 +1104,8 @@ void Viewer::ui_rendering() {
         if (ImGui::Combo("path", &pth, paths, 2)) s.path = pf_ssf_path(pth);
         ImGui::SliderFloat("particle radius", &s.particle_radius, 0.0f, 4.0f * scene_.cell_size, "%.4f m (0 = default)");
         int fr = int(s.filter_radius), fi = int(s.filter_iterations);
-        if (ImGui::SliderInt("filter radius px", &fr, 0, 64, fr ? "%d" : "%d (default)")) s.filter_radius = uint32_t(fr);
+        ImGui::SliderFloat("filter width", &s.filter_world_radius, 0.0f, 8.0f * scene_.cell_size, "%.4f m (0 = one cell)");
+        if (ImGui::SliderInt("filter cap px", &fr, 0, 64, fr ? "%d" : "%d (default)")) s.filter_radius = uint32_t(fr);
         if (ImGui::SliderInt("filter iterations", &fi, 0, 16, fi ? "%d" : "%d (default)")) s.filter_iterations = uint32_t(fi);
         ImGui::SliderFloat("depth range", &s.filter_depth_range, 0.0f, 8.0f * scene_.cell_size, "%.4f m (0 = default)");
         ImGui::DragFloat3("absorption /m", s.absorption, 0.02f, 0.0f, 100.0f, "%.2f");

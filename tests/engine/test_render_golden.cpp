@@ -1,6 +1,6 @@
 // A small golden image of the composite: a jittered block of liquid over a checkerboard scene
-// with a post in the scene depth in front of part of it, default look (bilateral filter,
-// compute path, built-in sky). Compared with tolerance (drivers round differently); with
+// with a post in the scene depth in front of part of it, default look (narrow-range filter one
+// cell wide, compute path, built-in sky). Compared with tolerance (drivers round differently); with
 // PF_UPDATE_GOLDEN=1 in the environment the image is rewritten instead (then inspect and commit
 // it) and the test fails so an update is never mistaken for a pass.
 #define STB_IMAGE_IMPLEMENTATION
