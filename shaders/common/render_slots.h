@@ -11,8 +11,8 @@
 
 /* texture units (sampler bindings) */
 #define PF_TEX_SCENE_COLOR 0   /* copy of the engine's scene colour (the engine's own during the copy) */
-#define PF_TEX_SCENE_DEPTH 1   /* copy of the engine's scene depth (window depth, engine convention; the
-                                  engine's own during the copy) */
+#define PF_TEX_SCENE_DEPTH 1   /* the engine's scene depth as eye depth (the engine's own window depth
+                                  during the copy) */
 #define PF_TEX_LIQUID_DEPTH 2  /* linear eye depth of the liquid surface (filter input / shading) */
 #define PF_TEX_THICKNESS 3     /* liquid thickness along the view ray, metres */
 #define PF_TEX_ENVIRONMENT 4   /* the engine's environment cube map */

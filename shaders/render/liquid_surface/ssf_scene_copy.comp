@@ -1,7 +1,8 @@
 // SCENE_COPY pass: the engine's scene colour and depth under the viewport into the liquid
 // surface's own textures, one invocation per pixel, so later passes read the scene while the
 // engine's textures may be the very target they draw into. texelFetch decodes an sRGB scene to
-// linear; the depth keeps the engine's window depth (its convention) as a float.
+// linear; the depth is converted once from the engine's window depth to eye depth, which every
+// sphere covering the pixel compares with.
 #include "common/render.glsl"
 
 layout(local_size_x = PF_RENDER_TILE, local_size_y = PF_RENDER_TILE) in;
@@ -15,5 +16,8 @@ void main() {
     if (any(greaterThanEqual(p, ivec2(rnd.viewport.xy)))) return;
     ivec2 engine = p + rnd.target.xy;
     imageStore(o_color, p, texelFetch(u_engine_color, engine, 0));
-    if (rnd.sphere.w > 0.5) imageStore(o_depth, p, vec4(texelFetch(u_engine_depth, engine, 0).r));
+    if (rnd.sphere.w > 0.5) {
+        float window = texelFetch(u_engine_depth, engine, 0).r;
+        imageStore(o_depth, p, vec4(eye_depth_of_window(pixel_ndc(vec2(p) + 0.5), window)));
+    }
 }

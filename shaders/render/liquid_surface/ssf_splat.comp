@@ -1,9 +1,9 @@
 // THICKNESS pass, compute path: one invocation per particle walks the pixels of its sphere's
 // projected quad and, for each pixel whose centre ray hits the sphere (the same test the
-// raster sprites make per fragment), adds the chord length to the thickness image in fixed
-// point and keeps the nearest eye depth with an atomic minimum on its float bits (positive
-// floats order like their bits): one walk for both, where the raster path draws the spheres
-// twice. Compute instead of raster because fragment work is slow on compute-heavy GPUs (H100).
+// raster sprites make per fragment), keeps the nearest eye depth with an atomic minimum on its
+// float bits (positive floats order like their bits); then it walks the quad's texels of the
+// half-resolution thickness image the same way and adds the chord length there in fixed point.
+// One invocation for both, where the raster path draws the spheres twice. Compute instead of raster because fragment work is slow on compute-heavy GPUs (H100).
 #include "common/slots.h"
 #include "common/ssf_sphere.glsl"
 
@@ -44,12 +44,17 @@ void main() {
     ivec2 last = min(ivec2(ceil(hi + 0.5)), ivec2(rnd.viewport.xy) - 1);
     for (int y = first.y; y <= last.y; ++y) {
         for (int x = first.x; x <= last.x; ++x) {
-            vec2 frag = vec2(x, y) + 0.5;
-            float front, back, per_length;
-            if (!sphere_span(frag, center, front, back, per_length)) continue;
-            float scene = scene_eye_depth(ivec2(x, y));
-            if (span_front_visible(front, scene)) imageAtomicMin(io_depth_bits, ivec2(x, y), floatBitsToUint(front));
-            float chord = span_chord(front, back, per_length, scene);
+            float depth;
+            if (sphere_depth_at(vec2(x, y) + 0.5, center, depth))
+                imageAtomicMin(io_depth_bits, ivec2(x, y), floatBitsToUint(depth));
+        }
+    }
+    // Thickness texel t is centred on full-resolution point 2 t + 1 (thickness_frag).
+    ivec2 t_first = max(ivec2(floor((lo - 1.0) * 0.5)), ivec2(0));
+    ivec2 t_last = min(ivec2(ceil((hi - 1.0) * 0.5)), imageSize(io_thickness_bits) - 1);
+    for (int y = t_first.y; y <= t_last.y; ++y) {
+        for (int x = t_first.x; x <= t_last.x; ++x) {
+            float chord = sphere_chord_at(thickness_frag(vec2(x, y) + 0.5), center);
             if (chord > 0.0) imageAtomicAdd(io_thickness_bits, ivec2(x, y), uint(chord * PF_THICKNESS_FIXED_SCALE + 0.5));
         }
     }

@@ -1,5 +1,6 @@
 // Turns the compute splat images into the float textures the rest of the pipeline reads
-// (the raster passes write those directly): eye depth or PF_NO_LIQUID, thickness in metres.
+// (the raster passes write those directly): eye depth or PF_NO_LIQUID, thickness in metres
+// (half resolution).
 #include "common/render.glsl"
 
 layout(local_size_x = PF_RENDER_TILE, local_size_y = PF_RENDER_TILE) in;
@@ -13,5 +14,6 @@ void main() {
     if (any(greaterThanEqual(p, ivec2(rnd.viewport.xy)))) return;
     uint bits = imageLoad(i_depth_bits, p).r;
     imageStore(o_depth, p, vec4(bits == PF_SPLAT_NO_DEPTH_BITS ? float(PF_NO_LIQUID) : uintBitsToFloat(bits)));
-    imageStore(o_thickness, p, vec4(float(imageLoad(i_thickness_bits, p).r) / PF_THICKNESS_FIXED_SCALE));
+    if (all(lessThan(p, imageSize(o_thickness))))
+        imageStore(o_thickness, p, vec4(float(imageLoad(i_thickness_bits, p).r) / PF_THICKNESS_FIXED_SCALE));
 }

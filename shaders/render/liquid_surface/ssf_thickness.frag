@@ -1,14 +1,14 @@
 // Thickness pass, raster path: length of the camera ray inside each sphere, blended
 // additively (ONE, ONE), counting only the part between the near plane and the nearer of the
 // far plane and the engine's scene surface (common/ssf_sphere.glsl, shared with the compute
-// splats).
+// splats), at half resolution: the ray through each thickness texel's centre.
 #include "common/ssf_sphere.glsl"
 
 layout(location = PF_VARY_CENTER) flat in vec3 v_center;
 layout(location = 0) out float o_thickness;
 
 void main() {
-    float chord = sphere_chord_at(gl_FragCoord.xy, v_center);
+    float chord = sphere_chord_at(thickness_frag(gl_FragCoord.xy), v_center);
     if (chord <= 0.0) discard;
     o_thickness = chord;
 }

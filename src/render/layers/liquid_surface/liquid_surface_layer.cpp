@@ -19,20 +19,22 @@ pf_result LiquidSurfaceLayer::prepare(RenderContext& c, const RenderFrame& f) {
     const pf_ssf_params& params = *f.ssf;
     const bool compute = params.path == PF_SSF_PATH_COMPUTE;
     const bool narrow = params.filter == PF_SSF_FILTER_NARROW_RANGE;
-    // Raster path: sphere sprites for THICKNESS / DEPTH. Compute path: splat clear, the splat
-    // and the splat resolve.
-    splat_clear_ = splat_resolve_ = smooth_ = 0;
-    // The compute splat writes thickness and depth at once: thickness_ is it, depth_ unused.
+    // Raster path: sphere sprites for THICKNESS and DEPTH. Compute path: the splat clear, one
+    // splat of both and its resolve.
+    thickness_ = depth_ = splat_clear_ = splat_ = splat_resolve_ = smooth_ = 0;
     for (auto [id, out] : {std::pair{ProgramId::ssf_scene_copy, &scene_copy_},
-                           std::pair{compute ? ProgramId::ssf_splat_cs : ProgramId::ssf_thickness, &thickness_},
-                           std::pair{compute ? ProgramId::ssf_splat_cs : ProgramId::ssf_depth, &depth_},
                            std::pair{compute ? ProgramId::ssf_shade_cs : ProgramId::ssf_shade_fs, &shade_},
                            std::pair{ProgramId::ssf_resolve, &resolve_}}) {
         if (pf_result r = c.program(id, f.fn, *out); r != PF_OK) return r;
     }
-    if (compute) {
-        if (pf_result r = c.program(ProgramId::ssf_splat_clear_cs, f.fn, splat_clear_); r != PF_OK) return r;
-        if (pf_result r = c.program(ProgramId::ssf_splat_resolve_cs, f.fn, splat_resolve_); r != PF_OK) return r;
+    const std::vector<std::pair<ProgramId, GLuint*>> splatting =
+        compute ? std::vector<std::pair<ProgramId, GLuint*>>{{ProgramId::ssf_splat_clear_cs, &splat_clear_},
+                                                             {ProgramId::ssf_splat_cs, &splat_},
+                                                             {ProgramId::ssf_splat_resolve_cs, &splat_resolve_}}
+                : std::vector<std::pair<ProgramId, GLuint*>>{{ProgramId::ssf_thickness, &thickness_},
+                                                             {ProgramId::ssf_depth, &depth_}};
+    for (auto [id, out] : splatting) {
+        if (pf_result r = c.program(id, f.fn, *out); r != PF_OK) return r;
     }
     if (params.filter != PF_SSF_FILTER_NONE) {
         const ProgramId id = compute ? (narrow ? ProgramId::ssf_smooth_narrow_cs : ProgramId::ssf_smooth_bilateral_cs)
@@ -89,7 +91,7 @@ void LiquidSurfaceLayer::scene_copy(RenderContext& c, const RenderFrame& f) {
 void LiquidSurfaceLayer::thickness(RenderContext& c, const RenderFrame& f) {
     const gl::Api& gl = c.gl();
     gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets_->framebuffer(SsfTargets::thickness_fb));
-    gl.Viewport(0, 0, f.width(), f.height());
+    gl.Viewport(0, 0, SsfTargets::half(f.width()), SsfTargets::half(f.height()));
     const GLfloat zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
     gl.ClearBufferfv(GL_COLOR, 0, zero);
     gl.Enable(GL_BLEND);
@@ -128,7 +130,7 @@ void LiquidSurfaceLayer::splat_thickness(RenderContext& c, const RenderFrame& f)
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_POS, b.positions);
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_COUNT, b.draw_indirect);
     c.bind_texture(PF_TEX_SCENE_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_depth), false);
-    c.dispatch_particles(thickness_);
+    c.dispatch_particles(splat_);
 }
 
 void LiquidSurfaceLayer::splat_resolve(RenderContext& c, const RenderFrame& f) {
@@ -172,7 +174,7 @@ void LiquidSurfaceLayer::shade(RenderContext& c, const RenderFrame& f) {
     const gl::Api& gl = c.gl();
     c.bind_texture(PF_TEX_SCENE_COLOR, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_color), true);
     c.bind_texture(PF_TEX_LIQUID_DEPTH, GL_TEXTURE_2D, targets_->texture(surface_), false);
-    c.bind_texture(PF_TEX_THICKNESS, GL_TEXTURE_2D, targets_->texture(SsfTargets::thickness), false);
+    c.bind_texture(PF_TEX_THICKNESS, GL_TEXTURE_2D, targets_->texture(SsfTargets::thickness), true);
     c.bind_texture(PF_TEX_ENVIRONMENT, GL_TEXTURE_CUBE_MAP, f.target->environment_cubemap, true);
     gl.UseProgram(shade_);
     if (f.ssf->path == PF_SSF_PATH_COMPUTE) {

@@ -30,8 +30,10 @@ private:
     void resolve(RenderContext& c, const RenderFrame& f);
 
     std::unique_ptr<SsfTargets> targets_;
-    // This frame's programs (raster or compute, by pf_ssf_path; smooth_ 0 without a filter).
-    GLuint scene_copy_ = 0, thickness_ = 0, depth_ = 0, splat_clear_ = 0, splat_resolve_ = 0, smooth_ = 0, shade_ = 0, resolve_ = 0;
+    // This frame's programs (raster or compute, by pf_ssf_path: the sprites of thickness_ and
+    // depth_ or the splat; smooth_ 0 without a filter).
+    GLuint scene_copy_ = 0, thickness_ = 0, depth_ = 0, splat_clear_ = 0, splat_ = 0, splat_resolve_ = 0, smooth_ = 0,
+           shade_ = 0, resolve_ = 0;
     SsfTargets::Texture surface_ = SsfTargets::raw_depth;  // what SMOOTH left for SHADE
 };
 

@@ -21,7 +21,9 @@ uint64_t SsfTargets::bytes() const {
     uint64_t total = 0;
     for (int t = 0; t < texture_count; ++t) {
         if (textures_[t].id() == 0) continue;
-        total += uint64_t(width_) * uint64_t(height_) * texel_bytes(kFormats[t]);
+        const bool half_res = half_resolution(Texture(t));
+        total += uint64_t(half_res ? half(width_) : width_) * uint64_t(half_res ? half(height_) : height_) *
+                 texel_bytes(kFormats[t]);
     }
     return total;
 }
@@ -40,7 +42,8 @@ SsfTargets::SsfTargets(const gl::Api& gl) : gl_(gl) {
 void SsfTargets::allocate(Texture t, GLenum format) {
     textures_[t] = gl::Object(gl_, gl::ObjectKind::texture);
     gl_.BindTexture(GL_TEXTURE_2D, textures_[t].id());
-    gl_.TexStorage2D(GL_TEXTURE_2D, 1, format, width_, height_);
+    const bool half_res = half_resolution(t);
+    gl_.TexStorage2D(GL_TEXTURE_2D, 1, format, half_res ? half(width_) : width_, half_res ? half(height_) : height_);
     gl::label_object(gl_, GL_TEXTURE, textures_[t].id(), kTextureLabels[t]);
     gl_.BindTexture(GL_TEXTURE_2D, 0);
 }

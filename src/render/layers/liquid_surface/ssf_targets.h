@@ -1,4 +1,5 @@
-// The screen-space liquid's own textures and framebuffers, all of the viewport's size:
+// The screen-space liquid's own textures and framebuffers, of the viewport's size (the thickness
+// of half of it in each axis):
 // (re)allocated when the viewport size changes (the scene depth copy once a call gives a scene
 // depth), never touching an engine object.
 #pragma once
@@ -14,8 +15,8 @@ class SsfTargets {
 public:
     enum Texture {
         scene_color,   // RGBA16F copy of the engine's scene colour (refraction source)
-        scene_depth,   // R32F copy of the engine's scene depth (window depth)
-        thickness,     // R32F additive thickness
+        scene_depth,   // R32F eye depth of the engine's scene depth
+        thickness,     // R32F additive thickness, half resolution
         raw_depth,     // R32F nearest sphere eye depth (PF_NO_LIQUID elsewhere)
         depth_buffer,  // DEPTH_COMPONENT32F: keeps the nearest sphere in the depth pass
         smooth_a,      // R32F ping-pong targets of the smoothing passes
@@ -23,7 +24,7 @@ public:
         shaded_color,  // RGBA16F liquid colour, alpha 1 where there is liquid
         shaded_depth,  // R32F liquid window depth, engine convention
         splat_depth_bits,      // R32UI compute splat: nearest eye depth as float bits
-        splat_thickness_bits,  // R32UI compute splat: thickness in fixed point
+        splat_thickness_bits,  // R32UI compute splat: thickness in fixed point, half resolution
         texture_count
     };
     enum Framebuffer {
@@ -43,6 +44,9 @@ public:
     void ensure(int width, int height, bool scene_depth);
 
     GLuint texture(Texture t) const { return textures_[t].id(); }
+    // Size of the half-resolution textures for `size` pixels.
+    static int half(int size) { return (size + 1) / 2; }
+    static bool half_resolution(Texture t) { return t == thickness || t == splat_thickness_bits; }
     GLuint framebuffer(Framebuffer f) const { return framebuffers_[f].id(); }
     // GPU memory of the textures made so far, bytes.
     uint64_t bytes() const;
