@@ -343,8 +343,9 @@ typedef enum pf_pass {
 /** Passes of pf_render_ssf / pf_render_particles, timed in pf_stats.render_gpu_ms. */
 typedef enum pf_render_pass {
     PF_RENDER_PASS_SCENE_COPY = 0,   /**< copy the engine's scene colour/depth (no feedback loops) */
-    PF_RENDER_PASS_THICKNESS = 1,    /**< additive sphere thickness */
-    PF_RENDER_PASS_DEPTH = 2,        /**< nearest sphere depth, occluded by the scene depth */
+    PF_RENDER_PASS_THICKNESS = 1,    /**< additive sphere thickness (compute path: one splat of it and the depth) */
+    PF_RENDER_PASS_DEPTH = 2,        /**< nearest sphere depth, occluded by the scene depth (compute path: the
+                                          splat's resolve) */
     PF_RENDER_PASS_SMOOTH = 3,       /**< depth smoothing filter (all iterations) */
     PF_RENDER_PASS_SHADE = 4,        /**< normals, refraction, absorption, Fresnel, specular */
     PF_RENDER_PASS_RESOLVE = 5,      /**< write liquid colour and depth into the engine's target */

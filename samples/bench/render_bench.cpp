@@ -22,7 +22,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -113,7 +112,7 @@ void bench_scene(const Options& opt, const std::string& arg, std::vector<Measure
         look.ssf = c.ssf;
         look.ssf_params.filter = c.filter;
         look.ssf_params.path = c.path;
-        std::map<uint64_t, pf_stats> by_frame;
+        pfs::RenderTimings timings;
         std::vector<double> wall;
         for (uint32_t i = 0; i < opt.frames + 8; ++i) {  // 8 extra calls let the last timings arrive
             glFinish();
@@ -122,24 +121,19 @@ void bench_scene(const Options& opt, const std::string& arg, std::vector<Measure
             glFinish();
             if (i < opt.frames) wall.push_back(pfs::now_ms() - t0);
             pf_get_stats(sim.get(), &st);
-            if (st.render_frame != 0) by_frame[st.render_frame] = st;
+            timings.add(st);
         }
-        // Keep the last `frames` measured calls (the first ones include program compilation).
-        while (by_frame.size() > opt.frames) by_frame.erase(by_frame.begin());
+        // The last `frames` measured calls (the first ones include program compilation).
+        const pfs::RenderTimings::Result r = timings.summary(opt.frames);
         Measurement m;
         m.scene = scene.name;
         m.particles = st.particle_count;
         m.config = c;
-        std::vector<double> pass[PF_RENDER_PASS_COUNT], total;
-        for (const auto& [frame, s] : by_frame) {
-            for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) pass[p].push_back(s.render_gpu_ms[p]);
-            total.push_back(s.render_gpu_total_ms);
-        }
-        for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) m.pass[p] = pfs::summarize(pass[p]);
-        m.total = pfs::summarize(total);
+        for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) m.pass[p] = r.pass[p];
+        m.total = r.total;
         m.wall = pfs::summarize(wall);
         std::printf("  %4ux%-4u %-22s gpu %8.3f ms (median of %zu)  frame wall %8.3f ms\n", c.width, c.height,
-                    c.name().c_str(), m.total.median, total.size(), m.wall.median);
+                    c.name().c_str(), m.total.median, m.total.n, m.wall.median);
         out.push_back(m);
     }
 }

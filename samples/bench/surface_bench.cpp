@@ -20,7 +20,6 @@
 
 #include <cstdio>
 #include <fstream>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -115,7 +114,7 @@ ojson measure_pool(const Options& opt, uint32_t cells) {
         const pf_camera camera = pfs::pool_camera(kBox, int(w), int(h), view, proj);
         const pf_render_target target = t.target();
         for (const Look& look : looks()) {
-            std::map<uint64_t, pf_stats> by_frame;
+            pfs::RenderTimings timings;
             pfs::NormalError e;
             for (uint32_t i = 0; i < opt.frames + 8; ++i) {  // 8 extra calls let the last timings arrive
                 t.clear();
@@ -128,14 +127,9 @@ ojson measure_pool(const Options& opt, uint32_t cells) {
                                           {0.0, 1.0, 0.0}, 3);
                 }
                 pf_get_stats(sim.get(), &st);
-                if (st.render_frame != 0) by_frame[st.render_frame] = st;
+                timings.add(st);
             }
-            while (by_frame.size() > opt.frames) by_frame.erase(by_frame.begin());
-            std::vector<double> pass[PF_RENDER_PASS_COUNT], total;
-            for (const auto& [frame, s] : by_frame) {
-                for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) pass[p].push_back(s.render_gpu_ms[p]);
-                total.push_back(s.render_gpu_total_ms);
-            }
+            const pfs::RenderTimings::Result r = timings.summary(opt.frames);
             ojson j;
             j["cells"] = cells;
             j["particles"] = st.particle_count;
@@ -145,8 +139,8 @@ ojson measure_pool(const Options& opt, uint32_t cells) {
             j["p95_deg"] = e.p95_deg;
             j["pixels"] = e.pixels;
             for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p)
-                j["gpu_ms_median"][pf_render_pass_name(pf_render_pass(p))] = pfs::summarize(pass[p]).median;
-            j["gpu_total_ms_median"] = pfs::summarize(total).median;
+                j["gpu_ms_median"][pf_render_pass_name(pf_render_pass(p))] = r.pass[p].median;
+            j["gpu_total_ms_median"] = r.total.median;
             std::printf("  %4ux%-4u %-14s RMS %6.2f deg  p95 %6.2f deg  (%d px)  gpu %7.3f ms (smooth %.3f)\n", w, h,
                         look.name, e.rms_deg, e.p95_deg, e.pixels, j["gpu_total_ms_median"].get<double>(),
                         j["gpu_ms_median"]["smooth"].get<double>());

@@ -121,6 +121,27 @@ std::string resolve_scene_path(const std::string& arg) {
     throw Error(msg);
 }
 
+void RenderTimings::add(const pf_stats& stats) {
+    if (stats.render_frame != 0) by_call_[stats.render_frame] = stats;
+}
+
+RenderTimings::Result RenderTimings::summary(size_t keep) const {
+    std::vector<double> pass[PF_RENDER_PASS_COUNT], total;
+    size_t skip = by_call_.size() > keep ? by_call_.size() - keep : 0;
+    for (const auto& [call, s] : by_call_) {
+        if (skip > 0) {
+            --skip;
+            continue;
+        }
+        for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) pass[p].push_back(s.render_gpu_ms[p]);
+        total.push_back(s.render_gpu_total_ms);
+    }
+    Result r;
+    for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) r.pass[p] = summarize(pass[p]);
+    r.total = summarize(total);
+    return r;
+}
+
 Summary summarize(std::vector<double> v) {
     Summary s;
     s.n = v.size();

@@ -6,6 +6,7 @@
 #include <pf/pf.h>
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -57,6 +58,22 @@ struct Summary {
     double mean = 0, median = 0, min = 0, max = 0, stddev = 0;
 };
 Summary summarize(std::vector<double> values);
+
+/// GPU times of render calls as pf_get_stats reports them, a few calls late: add() the stats
+/// after every call; summary() is each pass's and the total's statistics over the newest `keep`
+/// distinct calls (pf_stats.render_frame), so the first calls (program builds) drop out.
+class RenderTimings {
+public:
+    void add(const pf_stats& stats);
+    struct Result {
+        Summary pass[PF_RENDER_PASS_COUNT];
+        Summary total;
+    };
+    Result summary(size_t keep) const;
+
+private:
+    std::map<uint64_t, pf_stats> by_call_;
+};
 
 /// Strict decimal parsing of an integer setting (environment variables); throws Error naming `option`.
 uint32_t parse_u32(const std::string& text, const char* option, uint32_t lo, uint32_t hi);

@@ -3,7 +3,8 @@
 // raster sprites make per fragment), keeps the nearest eye depth with an atomic minimum on its
 // float bits (positive floats order like their bits); then it walks the quad's texels of the
 // half-resolution thickness image the same way and adds the chord length there in fixed point.
-// One invocation for both, where the raster path draws the spheres twice. Compute instead of raster because fragment work is slow on compute-heavy GPUs (H100).
+// One invocation for both, where the raster path draws the spheres twice. Compute instead of
+// raster because fragment work is slow on compute-heavy GPUs (H100).
 #include "common/slots.h"
 #include "common/ssf_sphere.glsl"
 

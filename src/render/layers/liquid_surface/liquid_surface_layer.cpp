@@ -61,7 +61,7 @@ std::vector<RenderPass> LiquidSurfaceLayer::passes(const RenderFrame& f) {
         return RenderPass{timer, [this, run](RenderContext& c, const RenderFrame& f) { (this->*run)(c, f); }};
     };
     return {pass(PF_RENDER_PASS_SCENE_COPY, &LiquidSurfaceLayer::scene_copy),
-            pass(PF_RENDER_PASS_THICKNESS, compute ? &LiquidSurfaceLayer::splat_thickness : &LiquidSurfaceLayer::thickness),
+            pass(PF_RENDER_PASS_THICKNESS, compute ? &LiquidSurfaceLayer::splat : &LiquidSurfaceLayer::thickness),
             pass(PF_RENDER_PASS_DEPTH, compute ? &LiquidSurfaceLayer::splat_resolve : &LiquidSurfaceLayer::depth),
             pass(PF_RENDER_PASS_SMOOTH, &LiquidSurfaceLayer::smooth),
             pass(PF_RENDER_PASS_SHADE, &LiquidSurfaceLayer::shade),
@@ -117,7 +117,7 @@ void LiquidSurfaceLayer::depth(RenderContext& c, const RenderFrame& f) {
     gl.Disable(GL_DEPTH_TEST);
 }
 
-void LiquidSurfaceLayer::splat_thickness(RenderContext& c, const RenderFrame& f) {
+void LiquidSurfaceLayer::splat(RenderContext& c, const RenderFrame& f) {
     const gl::Api& gl = c.gl();
     const GLuint depth_bits = targets_->texture(SsfTargets::splat_depth_bits);
     const GLuint thickness_bits = targets_->texture(SsfTargets::splat_thickness_bits);

@@ -23,7 +23,7 @@ private:
     void thickness(RenderContext& c, const RenderFrame& f);
     void depth(RenderContext& c, const RenderFrame& f);
     // Compute path of THICKNESS and DEPTH: clear + the splat of both, then their resolve.
-    void splat_thickness(RenderContext& c, const RenderFrame& f);
+    void splat(RenderContext& c, const RenderFrame& f);
     void splat_resolve(RenderContext& c, const RenderFrame& f);
     void smooth(RenderContext& c, const RenderFrame& f);
     void shade(RenderContext& c, const RenderFrame& f);
