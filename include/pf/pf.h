@@ -276,9 +276,13 @@ enum {
     PF_FEATURE_VORTICITY_CONFINEMENT = 1u << 5, /**< pf_set_vorticity_confinement: puts back the swirls the grid
                                                      smooths away (two grid passes per substep before the
                                                      pressure solve) */
+    PF_FEATURE_WHITEWATER = 1u << 6, /**< pf_set_whitewater: spray, foam and bubbles made where the liquid
+                                          traps air, breaks at crests and moves fast; carried by the liquid
+                                          without acting on it, aged and removed on the GPU (four passes and two
+                                          buffer copies per step), drawn by pf_render_ssf */
     PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES | PF_FEATURE_EMITTERS |
                      PF_FEATURE_SINKS | PF_FEATURE_DOMAIN_MOTION |
-                     PF_FEATURE_VORTICITY_CONFINEMENT /**< every known feature bit */
+                     PF_FEATURE_VORTICITY_CONFINEMENT | PF_FEATURE_WHITEWATER /**< every known feature bit */
 };
 
 /** @} */
@@ -369,8 +373,10 @@ enum {
     PF_FLAG_ENERGY_GAINED = 1u << 5,   /**< kinetic + potential energy rose more than params.energy_gain_limit
                                             above its reference (pf_stats.energy_drift) with no input: the
                                             step is numerically unsound (e.g. an unconverged pressure solve) */
-    PF_FLAG_EMITTERS_FULL = 1u << 6    /**< emitters wanted more particles than max_particles leaves room for:
+    PF_FLAG_EMITTERS_FULL = 1u << 6,   /**< emitters wanted more particles than max_particles leaves room for:
                                             emission stopped at capacity (PF_FEATURE_EMITTERS) */
+    PF_FLAG_WHITEWATER_FULL = 1u << 7  /**< the liquid made more whitewater than pf_whitewater.capacity holds: the
+                                            rest was not made (PF_FEATURE_WHITEWATER) */
 };
 /* Each flag is logged once (a warning) when it is raised, and again only after pf_clear_flags. */
 
@@ -445,6 +451,10 @@ typedef struct pf_stats {
                                            rendering, bytes (the engine's objects are not counted) */
     uint64_t gpu_particle_bytes;      /**< the part of gpu_memory_bytes whose size follows max_particles:
                                            divided by max_particles, the memory of one particle slot */
+    uint32_t whitewater_count;        /**< live whitewater particles at the end of step metrics_step
+                                           (PF_FEATURE_WHITEWATER; 0 while it is off) */
+    float render_whitewater_gpu_ms;   /**< GPU ms of the whitewater layer in render call render_frame
+                                           (included in render_gpu_total_ms) */
 } pf_stats;
 
 /** One entry of the per-pass statistics list (pf_get_pass_stats). The list is built at run
@@ -476,6 +486,33 @@ typedef struct pf_gl_buffers {
                                        points) and, at offset 16, {4, live count, 0, 0} (a 4-vertex strip
                                        instanced once per particle); kept current on the GPU */
 } pf_gl_buffers;
+
+/** Kinds of whitewater particle (pf_whitewater_buffers.velocities, w). */
+typedef enum pf_whitewater_kind {
+    PF_WHITEWATER_SPRAY = 0,      /**< in the air: ballistic */
+    PF_WHITEWATER_FOAM = 1,       /**< at the surface: carried by the liquid */
+    PF_WHITEWATER_BUBBLE = 2,     /**< inside the liquid: rises */
+    PF_WHITEWATER_KIND_FORCE32 = 0x7fffffff
+} pf_whitewater_kind;
+
+/** The whitewater's particle buffers (PF_FEATURE_WHITEWATER), for engines that draw it themselves;
+ *  readable like pf_gl_buffers right after pf_step. The names stay the same until the capacity
+ *  changes or the feature is turned off. */
+typedef struct pf_whitewater_buffers {
+    uint32_t positions;           /**< GL buffer: vec4 per particle, xyz = position in the simulation's frame
+                                       (like pf_gl_buffers), w = seconds it still lives */
+    uint32_t velocities;          /**< GL buffer: vec4 per particle, xyz = velocity in m/s, w = its
+                                       pf_whitewater_kind as a float */
+    uint32_t capacity;            /**< particle slots in each buffer */
+    uint32_t stride;              /**< bytes between particles: 16 */
+    uint32_t draw_indirect;       /**< GL buffer holding, at offset 0, a DrawArraysIndirectCommand {live, 1, 0,
+                                       0} (points) and, at offset 16, {4, live, 0, 0} (a 4-vertex strip per
+                                       particle); the live particles are the first `live` slots */
+} pf_whitewater_buffers;
+
+/** The whitewater's buffers. PF_ERROR_INVALID_ARGUMENT for a NULL out; PF_ERROR_INVALID_STATE
+ *  while PF_FEATURE_WHITEWATER is off (logged; out untouched). */
+PF_API pf_result pf_get_whitewater_buffers(const pf_sim* sim, pf_whitewater_buffers* out);
 
 /** @} */
 
@@ -973,6 +1010,53 @@ PF_API pf_result pf_set_vorticity_confinement(pf_sim* sim, const pf_vorticity_co
 /** The vorticity confinement last set (pf_default_vorticity_confinement() if never). */
 PF_API pf_result pf_get_vorticity_confinement(const pf_sim* sim, pf_vorticity_confinement* out);
 
+/** Whitewater (PF_FEATURE_WHITEWATER; after Ihmsen et al. 2012, "Unified spray, foam and bubbles
+ *  for particle-based fluids", with the potentials measured on the grid). Once per step every
+ *  liquid cell makes, on average, (trapped_air_rate * I_ta + wave_crest_rate * I_wc) * I_k * dt
+ *  particles, where I_ta (air trapped where neighbouring cells move into each other), I_wc (a
+ *  convex surface moving outward) and I_k (kinetic energy) are potentials in 0..1 set by the
+ *  ranges below. A particle is spray where little liquid surrounds it (ballistic, air drag),
+ *  foam at the surface (carried by the liquid) and a bubble inside (buoyant, dragged toward the
+ *  liquid's velocity); it lives for a random time within lifetime. Whitewater never acts on the
+ *  liquid and is not part of snapshots (a restore clears it). Start from pf_default_whitewater(). */
+typedef struct pf_whitewater {
+    uint32_t struct_size;         /**< sizeof(pf_whitewater) as the caller compiled it (pf_default_whitewater()
+                                       sets it; 0: zero-initialised, every zero field takes its default) */
+    uint32_t capacity;            /**< most whitewater particles, 1..2^23; default 262144 (64 bytes of GPU memory
+                                       each). Changing it clears the whitewater */
+    float trapped_air_rate;       /**< particles per liquid cell per second at full trapped-air and kinetic
+                                       potential, 0..10000; default 40 */
+    float wave_crest_rate;        /**< particles per liquid cell per second at full wave-crest and kinetic
+                                       potential, 0..10000; default 40 */
+    float trapped_air_range[2];   /**< m/s: the summed velocity difference of a cell's approaching neighbours
+                                       mapped to I_ta 0..1, 0 <= [0] < [1]; default 1..6 */
+    float wave_crest_range[2];    /**< the surface's curvature times the cell size (a ridge of radius r cells
+                                       has 1/r) mapped to I_wc 0..1, 0 <= [0] < [1]; default 0.25..1 */
+    float energy_range[2];        /**< J/kg: half the squared speed mapped to I_k 0..1, 0 <= [0] < [1];
+                                       default 0.5..5 */
+    float lifetime[2];            /**< seconds, shortest and longest, 0 < [0] <= [1] <= 1000; default 1..3 */
+    float bubble_buoyancy;        /**< a bubble's upward acceleration in units of gravity's, 0..100; default 2 */
+    float bubble_drag;            /**< 1/s: how fast a bubble takes the liquid's velocity, 0..1000; default 20 */
+    float spray_drag;             /**< 1/s: the air's drag on spray, 0..1000; default 0.5 */
+} pf_whitewater;
+
+/** Writes the default whitewater for a caller whose pf_whitewater is struct_size bytes (see the ABI
+ *  rules at the top). PF_ERROR_INVALID_ARGUMENT for a NULL out or a struct_size below 4 or not a
+ *  multiple of 4. Any thread. */
+PF_API pf_result pf_init_whitewater(pf_whitewater* out, uint32_t struct_size);
+/** The defaults above, struct_size set. */
+static inline pf_whitewater pf_default_whitewater(void) {
+    pf_whitewater w;
+    pf_init_whitewater(&w, (uint32_t)sizeof w);
+    return w;
+}
+/** Sets the whitewater parameters for the next pf_step. It may be set while PF_FEATURE_WHITEWATER is
+ *  off (it acts once it is on). PF_ERROR_INVALID_ARGUMENT for NULL or any field outside its range
+ *  (logged; nothing changes). */
+PF_API pf_result pf_set_whitewater(pf_sim* sim, const pf_whitewater* whitewater);
+/** The whitewater parameters last set (pf_default_whitewater() if never). */
+PF_API pf_result pf_get_whitewater(const pf_sim* sim, pf_whitewater* out);
+
 /** @} */
 
 /** @addtogroup pf_rendering
@@ -1047,6 +1131,12 @@ typedef struct pf_ssf_params {
                                       pixels follows its distance, 1..filter_radius, so the surface is as
                                       smooth at every resolution and distance; > 0; 0 = default (one cell
                                       size) */
+    float whitewater_radius;     /**< radius in metres of a whitewater particle's sprite, > 0; 0 = default
+                                      (0.25 cell size) */
+    float whitewater_opacity;    /**< opacity of one whitewater sprite at its centre, 0..1; 0 = default 0.5 */
+    uint32_t skip_whitewater;    /**< nonzero: pf_render_ssf leaves whitewater out (an engine drawing it itself
+                                      from pf_get_whitewater_buffers); default 0: drawn while
+                                      PF_FEATURE_WHITEWATER is on */
 } pf_ssf_params;
 
 /** What colours the debug sprites of pf_render_particles. */

@@ -80,6 +80,7 @@ _PROTOTYPES = {
     "pf_save_snapshot": (t.c_enum, [_sim, ctypes.c_void_p, ctypes.c_size_t]),
     "pf_restore_snapshot": (t.c_enum, [_sim, ctypes.c_void_p, ctypes.c_size_t]),
     "pf_get_gl_buffers": (t.c_enum, [_sim, _P(t.GlBuffers)]),
+    "pf_get_whitewater_buffers": (t.c_enum, [_sim, _P(t.WhitewaterBuffers)]),
     "pf_get_stats": (t.c_enum, [_sim, _P(t.Stats)]),
     "pf_clear_flags": (t.c_enum, [_sim]),
     "pf_get_pass_count": (t.c_enum, [_sim, _P(ctypes.c_uint32)]),
@@ -114,6 +115,9 @@ _PROTOTYPES = {
     "pf_init_vorticity_confinement": (t.c_enum, [_P(t.VorticityConfinement), ctypes.c_uint32]),
     "pf_set_vorticity_confinement": (t.c_enum, [_sim, _P(t.VorticityConfinement)]),
     "pf_get_vorticity_confinement": (t.c_enum, [_sim, _P(t.VorticityConfinement)]),
+    "pf_init_whitewater": (t.c_enum, [_P(t.Whitewater), ctypes.c_uint32]),
+    "pf_set_whitewater": (t.c_enum, [_sim, _P(t.Whitewater)]),
+    "pf_get_whitewater": (t.c_enum, [_sim, _P(t.Whitewater)]),
     "pf_get_obstacle_force": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.ObstacleForce)]),
 }
 

@@ -108,6 +108,7 @@ class Flag(enum.IntFlag):
     VOLUME_LOST = 1 << 4
     ENERGY_GAINED = 1 << 5
     EMITTERS_FULL = 1 << 6
+    WHITEWATER_FULL = 1 << 7
 
 
 class Feature(enum.IntFlag):
@@ -118,7 +119,8 @@ class Feature(enum.IntFlag):
     SINKS = 1 << 3
     DOMAIN_MOTION = 1 << 4
     VORTICITY_CONFINEMENT = 1 << 5
-    ALL = FORCE_FIELDS | OBSTACLES | EMITTERS | SINKS | DOMAIN_MOTION | VORTICITY_CONFINEMENT
+    WHITEWATER = 1 << 6
+    ALL = FORCE_FIELDS | OBSTACLES | EMITTERS | SINKS | DOMAIN_MOTION | VORTICITY_CONFINEMENT | WHITEWATER
 
 
 class ForceFieldType(enum.IntEnum):
@@ -148,6 +150,13 @@ class RateUnit(enum.IntEnum):
 class SinkShape(enum.IntEnum):
     BOX = 0
     SPHERE = 1
+
+
+class WhitewaterKind(enum.IntEnum):
+    """pf_whitewater_kind: what a whitewater particle is (WhitewaterBuffers.velocities, w)."""
+    SPRAY = 0   # in the air: ballistic
+    FOAM = 1    # at the surface: carried by the liquid
+    BUBBLE = 2  # inside the liquid: rises
 
 
 MAX_FORCE_FIELDS = 16
@@ -321,6 +330,8 @@ class Stats(_Struct):
         ("liquid_volume_drift", ctypes.c_float),
         ("gpu_memory_bytes", ctypes.c_uint64),
         ("gpu_particle_bytes", ctypes.c_uint64),
+        ("whitewater_count", ctypes.c_uint32),
+        ("render_whitewater_gpu_ms", ctypes.c_float),
     ]
 
 
@@ -340,6 +351,20 @@ class GlBuffers(_Struct):
         ("positions", ctypes.c_uint32),
         ("velocities", ctypes.c_uint32),
         ("count", ctypes.c_uint32),
+        ("stride", ctypes.c_uint32),
+        ("draw_indirect", ctypes.c_uint32),
+    ]
+
+
+class WhitewaterBuffers(_Struct):
+    """pf_whitewater_buffers (Feature.WHITEWATER): GL names of the whitewater's particle buffers, for
+    engines that draw it themselves. positions: vec4 per particle (xyz position, w seconds it still
+    lives); velocities: vec4 (xyz m/s, w its WhitewaterKind as a float); capacity slots, stride 16
+    bytes; draw_indirect holds {live, 1, 0, 0} at offset 0 and {4, live, 0, 0} at offset 16."""
+    _fields_ = [
+        ("positions", ctypes.c_uint32),
+        ("velocities", ctypes.c_uint32),
+        ("capacity", ctypes.c_uint32),
         ("stride", ctypes.c_uint32),
         ("draw_indirect", ctypes.c_uint32),
     ]
@@ -392,6 +417,9 @@ class SsfParams(_Struct):
         ("light_direction", ctypes.c_float * 3),
         ("path", c_enum),
         ("filter_world_radius", ctypes.c_float),
+        ("whitewater_radius", ctypes.c_float),
+        ("whitewater_opacity", ctypes.c_float),
+        ("skip_whitewater", ctypes.c_uint32),
     ]
 
 
@@ -560,6 +588,36 @@ class VorticityConfinement(_Struct):
     ]
 
 
+class Whitewater(_Struct):
+    """pf_whitewater (Feature.WHITEWATER): spray, foam and bubbles made where the liquid traps air,
+    breaks at crests and moves fast; carried by the liquid without acting on it. Start from
+    Whitewater.default(): capacity 262144, trapped_air_rate and wave_crest_rate 40 (particles per
+    liquid cell per second), trapped_air_range 1..6 m/s, wave_crest_range 0.25..1, energy_range
+    0.5..5 J/kg, lifetime 1..3 s, bubble_buoyancy 2, bubble_drag 20 /s, spray_drag 0.5 /s. pf.h
+    gives each field's range."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_whitewater()."""
+        out = cls()
+        _lib().pf_init_whitewater(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
+
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("capacity", ctypes.c_uint32),
+        ("trapped_air_rate", ctypes.c_float),
+        ("wave_crest_rate", ctypes.c_float),
+        ("trapped_air_range", ctypes.c_float * 2),
+        ("wave_crest_range", ctypes.c_float * 2),
+        ("energy_range", ctypes.c_float * 2),
+        ("lifetime", ctypes.c_float * 2),
+        ("bubble_buoyancy", ctypes.c_float),
+        ("bubble_drag", ctypes.c_float),
+        ("spray_drag", ctypes.c_float),
+    ]
+
+
 # C name of each mirrored struct, for the layout test.
 C_NAMES = {
     Logger: "pf_logger",
@@ -568,6 +626,7 @@ C_NAMES = {
     Stats: "pf_stats",
     PassStatsC: "pf_pass_stats",
     GlBuffers: "pf_gl_buffers",
+    WhitewaterBuffers: "pf_whitewater_buffers",
     Camera: "pf_camera",
     RenderTarget: "pf_render_target",
     SsfParams: "pf_ssf_params",
@@ -578,6 +637,7 @@ C_NAMES = {
     Sink: "pf_sink",
     DomainMotion: "pf_domain_motion",
     VorticityConfinement: "pf_vorticity_confinement",
+    Whitewater: "pf_whitewater",
     ObstacleForce: "pf_obstacle_force",
 }
 
@@ -589,6 +649,7 @@ C_ENUMS = {
     SsfFilter: "PF_SSF_FILTER_", SsfPath: "PF_SSF_PATH_", ParticleColor: "PF_PARTICLE_COLOR_",
     Feature: "PF_FEATURE_", ForceFieldType: "PF_FORCE_FIELD_", ObstacleShape: "PF_OBSTACLE_",
     EmitterShape: "PF_EMITTER_", RateUnit: "PF_RATE_", SinkShape: "PF_SINK_", GpuTiming: "PF_GPU_TIMING_",
+    WhitewaterKind: "PF_WHITEWATER_",
 }
 C_CONSTANTS = {"PF_PASS_COUNT": PASS_COUNT, "PF_RENDER_PASS_COUNT": RENDER_PASS_COUNT,
                "PF_MAX_FORCE_FIELDS": MAX_FORCE_FIELDS, "PF_MAX_OBSTACLES": MAX_OBSTACLES,

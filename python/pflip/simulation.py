@@ -6,6 +6,7 @@ rule; a moderngl standalone context is current on the thread that made it).
 import collections
 import ctypes
 import logging
+import operator
 import warnings
 
 import numpy as np
@@ -58,6 +59,7 @@ _ENUM_FIELDS = {
     t.Sink: {"shape": t.SinkShape},
     t.DomainMotion: {},
     t.VorticityConfinement: {},
+    t.Whitewater: {},
 }
 
 
@@ -73,7 +75,9 @@ def _u32(value, function, what):
 def _effect_struct(cls, base, fields, function):
     """A copy of base (a cls; None: cls.default()) with the keyword fields set. Array fields take
     sequences of the right length (ValueError otherwise); type / shape take their enum, an int or
-    the enumerator's name ("sphere"). Values are checked by the library, not here."""
+    the enumerator's name ("sphere"). Values are checked by the library, not here, except that an
+    unsigned field (Whitewater.capacity) out of uint32 range raises PflipError(ERROR_INVALID_ARGUMENT)
+    instead of wrapping silently."""
     if base is None:
         s = cls.default()
     elif isinstance(base, cls):
@@ -96,6 +100,8 @@ def _effect_struct(cls, base, fields, function):
             except KeyError:
                 names = ", ".join(m.name.lower() for m in _ENUM_FIELDS[cls][name])
                 raise ValueError(f"{name}: unknown {value!r} (one of {names})") from None
+        elif ctype is ctypes.c_uint32:
+            value = _u32(operator.index(value), function, name).value
         setattr(s, name, value)
     return s
 
@@ -521,6 +527,31 @@ class Simulation:
         c = _effect_struct(t.VorticityConfinement, self.vorticity_confinement if confinement is None else confinement,
                            fields, "pf_set_vorticity_confinement")
         self._call("pf_set_vorticity_confinement", ctypes.byref(c))
+
+    @property
+    def whitewater(self):
+        """pf_get_whitewater: the whitewater parameters last set (a Whitewater)."""
+        out = t.Whitewater()
+        self._call("pf_get_whitewater", ctypes.byref(out))
+        return out
+
+    def set_whitewater(self, whitewater=None, **fields):
+        """pf_set_whitewater: whitewater (a Whitewater; default: as it is now) with the keyword fields
+        set, e.g. set_whitewater(capacity=65536, lifetime=(0.5, 2.0)). Acts while Feature.WHITEWATER
+        is on (it may be set while off). A field outside its range in pf.h (capacity 1..2^23, rates
+        0..10000, ranges 0 <= [0] < [1], lifetime 0 < [0] <= [1] <= 1000, ...) or not finite raises
+        PflipError(ERROR_INVALID_ARGUMENT) and changes nothing. A new capacity clears the whitewater."""
+        w = _effect_struct(t.Whitewater, self.whitewater if whitewater is None else whitewater, fields,
+                           "pf_set_whitewater")
+        self._call("pf_set_whitewater", ctypes.byref(w))
+
+    def whitewater_buffers(self):
+        """pf_get_whitewater_buffers: the GL names of the whitewater's particle buffers (a
+        WhitewaterBuffers), for an engine that draws it itself. While Feature.WHITEWATER is off it
+        raises PflipError(ERROR_INVALID_STATE)."""
+        out = t.WhitewaterBuffers()
+        self._call("pf_get_whitewater_buffers", ctypes.byref(out))
+        return out
 
     def obstacle_force(self, obstacle_id):
         """pf_get_obstacle_force: the newest ObstacleForce of obstacle obstacle_id (force in N, torque

@@ -1,12 +1,15 @@
 """Effects through the Python client (pf_set_features, force fields, obstacles, emitters, sinks,
-vorticity confinement): what pf.h promises, measured, not recorded numbers.
+vorticity confinement, whitewater): what pf.h promises, measured, not recorded numbers.
 
 Turning effects on and off keeps every particle; a directional field accelerates a free blob at
 its acceleration; liquid poured on a sphere obstacle never ends inside it (and, as a control, does
 when obstacles are off); bad fields and obstacles raise PflipError(ERROR_INVALID_ARGUMENT) and
 change nothing; PF_MAX_* of each gives ERROR_CAPACITY; vorticity confinement starts at strength
 0.2, round-trips, refuses a strength that is not finite or outside 0..1 (keeping the old one) and,
-once on, spins a vortex up at the rate its formula gives (strength 0, or the feature off: no change).
+once on, spins a vortex up at the rate its formula gives (strength 0, or the feature off: no change);
+whitewater starts at pf.h's defaults, round-trips, refuses any field outside its range (keeping the
+old ones), has its buffers only while on, and a jet falling into a pool makes it (pf_stats counts
+it, pf_render_ssf draws it, a small capacity fills up with WHITEWATER_FULL).
 """
 import ctypes
 
@@ -15,6 +18,7 @@ import pytest
 
 import pflip
 from pflip import Feature, PflipError, Result
+from pflip.camera import look_at, make_camera, perspective
 
 DT = 1.0 / 60.0
 
@@ -484,6 +488,213 @@ def test_vorticity_confinement_spins_a_vortex_up_at_its_strength(sims):
             expected = s * rates[q] * t
             assert 0.5 * expected <= gained <= 1.3 * expected, (
                 f"{name}: {what} gained {gained:.3g} against confinement off, pf.h's formula {expected:.3g}; {report}")
+
+
+# ---- whitewater ------------------------------------------------------------------------------------
+
+WHITEWATER_DEFAULTS = dict(capacity=262144, trapped_air_rate=40.0, wave_crest_rate=40.0,
+                           trapped_air_range=[1.0, 6.0], wave_crest_range=[0.25, 1.0], energy_range=[0.5, 5.0],
+                           lifetime=[1.0, 3.0], bubble_buoyancy=2.0, bubble_drag=20.0, spray_drag=0.5)
+WHITEWATER_SETTINGS = dict(capacity=1000, trapped_air_rate=123.5, wave_crest_rate=0.0,
+                           trapped_air_range=[0.5, 2.25], wave_crest_range=[0.0, 0.731],
+                           energy_range=[0.1, 9.0], lifetime=[0.25, 0.25], bubble_buoyancy=3.5,
+                           bubble_drag=0.0, spray_drag=1.25)
+
+
+def whitewater_fields(w):
+    """{field: value} of a Whitewater without struct_size, arrays as lists."""
+    return {name: list(getattr(w, name)) if isinstance(getattr(w, name), ctypes.Array) else getattr(w, name)
+            for name, _ in pflip.Whitewater._fields_ if name != "struct_size"}
+
+
+def as_f32(fields):
+    """fields with every float rounded to float32, as the library stores them."""
+    return {k: [f32(x) for x in v] if isinstance(v, list) else (f32(v) if isinstance(v, float) else v)
+            for k, v in fields.items()}
+
+
+def test_whitewater_defaults_and_round_trips(sims):
+    d = pflip.Whitewater.default()
+    assert d.struct_size == ctypes.sizeof(pflip.Whitewater) == 60
+    assert whitewater_fields(d) == as_f32(WHITEWATER_DEFAULTS)
+    sim = sims(0)  # may be set while the feature is off
+    got = sim.whitewater
+    assert isinstance(got, pflip.Whitewater)
+    assert got.struct_size == 60 and whitewater_fields(got) == as_f32(WHITEWATER_DEFAULTS)
+    # Turning the feature on does not change them.
+    sim.features = Feature.WHITEWATER
+    assert whitewater_fields(sim.whitewater) == as_f32(WHITEWATER_DEFAULTS)
+    # Every field set at once, by keyword; then one at a time over them.
+    sim.set_whitewater(**WHITEWATER_SETTINGS)
+    assert whitewater_fields(sim.whitewater) == as_f32(WHITEWATER_SETTINGS)
+    sim.set_whitewater(spray_drag=0.0, lifetime=(2.0, 1000.0), capacity=1 << 23)
+    expected = as_f32({**WHITEWATER_SETTINGS, "spray_drag": 0.0, "lifetime": [2.0, 1000.0], "capacity": 1 << 23})
+    assert whitewater_fields(sim.whitewater) == expected
+    # A set with no fields keeps them as they are; a whole struct replaces them.
+    sim.set_whitewater()
+    assert whitewater_fields(sim.whitewater) == expected
+    w = pflip.Whitewater.default()
+    w.capacity, w.bubble_drag = 1, 1000.0
+    sim.set_whitewater(w)
+    assert whitewater_fields(sim.whitewater) == as_f32({**WHITEWATER_DEFAULTS, "capacity": 1, "bubble_drag": 1000.0})
+    # A zero-initialised struct (struct_size 0): every zero field takes its default (the ABI rules).
+    sim.set_whitewater(pflip.Whitewater())
+    assert whitewater_fields(sim.whitewater) == as_f32(WHITEWATER_DEFAULTS)
+    # Each simulation has its own.
+    other = sims(Feature.WHITEWATER)
+    sim.set_whitewater(bubble_buoyancy=7.0)
+    assert other.whitewater.bubble_buoyancy == f32(2.0)
+
+
+NAN = float("nan")
+# Each bad value with the field the library names in its message.
+BAD_WHITEWATER = {
+    "capacity 0": ("capacity", dict(capacity=0)),
+    "capacity above 2^23": ("capacity", dict(capacity=(1 << 23) + 1)),
+    "trapped_air_rate NaN": ("trapped_air_rate", dict(trapped_air_rate=NAN)),
+    "trapped_air_rate above 10000": ("trapped_air_rate", dict(trapped_air_rate=10001.0)),
+    "wave_crest_rate negative": ("wave_crest_rate", dict(wave_crest_rate=-1.0)),
+    "wave_crest_rate +Inf": ("wave_crest_rate", dict(wave_crest_rate=float("inf"))),
+    "trapped_air_range reversed": ("trapped_air_range", dict(trapped_air_range=(7.0, 6.0))),
+    "wave_crest_range NaN": ("wave_crest_range", dict(wave_crest_range=(0.25, NAN))),
+    "wave_crest_range empty": ("wave_crest_range", dict(wave_crest_range=(0.5, 0.5))),
+    "energy_range negative": ("energy_range", dict(energy_range=(-0.5, 5.0))),
+    "lifetime 0": ("lifetime", dict(lifetime=(0.0, 3.0))),
+    "lifetime reversed": ("lifetime", dict(lifetime=(4.0, 3.0))),
+    "lifetime above 1000 s": ("lifetime", dict(lifetime=(1.0, 1001.0))),
+    "bubble_buoyancy NaN": ("bubble_buoyancy", dict(bubble_buoyancy=NAN)),
+    "bubble_buoyancy above 100": ("bubble_buoyancy", dict(bubble_buoyancy=101.0)),
+    "bubble_drag above 1000": ("bubble_drag", dict(bubble_drag=2000.0)),
+    "spray_drag negative": ("spray_drag", dict(spray_drag=-0.1)),
+    "spray_drag -Inf": ("spray_drag", dict(spray_drag=float("-inf"))),
+}
+
+
+@pytest.mark.parametrize("feature", [0, Feature.WHITEWATER], ids=["off", "on"])
+def test_bad_whitewater_raises_and_changes_nothing(sims, feature):
+    sim = sims(feature)
+    sim.set_whitewater(spray_drag=1.25, capacity=5000)
+    good = whitewater_fields(sim.whitewater)
+    for why, (field, bad) in BAD_WHITEWATER.items():
+        with pytest.raises(PflipError) as e:
+            sim.set_whitewater(**bad)
+        assert e.value.code == Result.ERROR_INVALID_ARGUMENT, why
+        assert e.value.function == "pf_set_whitewater" and field in e.value.message, (why, e.value.message)
+        assert whitewater_fields(sim.whitewater) == good, why
+        # The same through a whole struct.
+        w = pflip.Whitewater.default()
+        for name, value in bad.items():
+            setattr(w, name, value if np.isscalar(value) else type(getattr(w, name))(*value))
+        with pytest.raises(PflipError) as e:
+            sim.set_whitewater(w)
+        assert e.value.code == Result.ERROR_INVALID_ARGUMENT, why
+        assert whitewater_fields(sim.whitewater) == good, why
+    # A capacity outside uint32 raises too instead of wrapping (2^32 + 1 would wrap to a valid 1).
+    for capacity in (-1, 1 << 32, (1 << 32) + 1):
+        with pytest.raises(PflipError) as e:
+            sim.set_whitewater(capacity=capacity)
+        assert e.value.code == Result.ERROR_INVALID_ARGUMENT and e.value.function == "pf_set_whitewater", capacity
+    # Caught in Python: a struct of another effect, a field the struct lacks, a range of 3 numbers.
+    with pytest.raises(TypeError):
+        sim.set_whitewater(pflip.VorticityConfinement.default())
+    with pytest.raises(TypeError):
+        sim.set_whitewater(foam_rate=5.0)
+    with pytest.raises(ValueError):
+        sim.set_whitewater(lifetime=(1.0, 2.0, 3.0))
+    assert whitewater_fields(sim.whitewater) == good
+    sim.fill_box((0.1, 0.0, 0.1), (0.5, 0.3, 0.5))
+    sim.step(DT)  # still usable
+    assert np.isfinite(sim.read_particles()[0]).all()
+
+
+def test_whitewater_feature_turns_on_with_its_buffers(sims):
+    assert Feature.WHITEWATER in Feature.ALL and int(Feature.WHITEWATER) == 1 << 6
+    sim = sims(0)
+    sim.fill_box((0.1, 0.0, 0.1), (0.5, 0.3, 0.5))
+    before = sim.read_particles()
+    # No buffers while the feature is off.
+    with pytest.raises(PflipError) as e:
+        sim.whitewater_buffers()
+    assert e.value.code == Result.ERROR_INVALID_STATE and e.value.function == "pf_get_whitewater_buffers"
+    sim.features = Feature.WHITEWATER
+    assert sim.features == Feature.WHITEWATER
+    b = sim.whitewater_buffers()
+    assert isinstance(b, pflip.WhitewaterBuffers)
+    assert b.capacity == WHITEWATER_DEFAULTS["capacity"] and b.stride == 16
+    names = (b.positions, b.velocities, b.draw_indirect)
+    assert all(names) and len(set(names)) == 3, b
+    # Turning it on kept every particle; stepping keeps the buffers' names.
+    for a, c in zip(sim.read_particles(), before):
+        np.testing.assert_array_equal(a, c)
+    for _ in range(3):
+        sim.step(DT)
+    assert bytes(sim.whitewater_buffers()) == bytes(b)
+    # A new capacity: buffers of that many slots after the next step.
+    sim.set_whitewater(capacity=1000)
+    sim.step(DT)
+    assert sim.whitewater_buffers().capacity == 1000
+    st = sim.stats()
+    assert st.whitewater_count == 0 and not st.flags & pflip.Flag.WHITEWATER_FULL  # liquid at rest makes none
+    sim.features = Feature(0)
+    with pytest.raises(PflipError) as e:
+        sim.whitewater_buffers()
+    assert e.value.code == Result.ERROR_INVALID_STATE
+
+
+def jet_into_a_pool(sims, features):
+    """A 0.8 x 1.2 x 0.8 m tank (16 x 24 x 16 cells of 5 cm) with a pool 0.3 m deep and a disc
+    nozzle 0.9 m up shooting 3 m/s down into it (tests/engine/test_whitewater.cpp's scene)."""
+    sim = sims(features, grid=(16, 24, 16), max_particles=1 << 15)
+    sim.fill_box((0.0, 0.0, 0.0), (0.8, 0.3, 0.8))
+    sim.add_emitter(shape="disc", position=(0.4, 0.9, 0.4), rotation=(1.0, 0.0, 0.0, 0.0),  # local +y -> -y
+                    radius=0.08, velocity=(0.0, -3.0, 0.0), rate=12000.0)
+    return sim
+
+
+def test_jet_into_a_pool_makes_whitewater_and_render_ssf_draws_it(sims, gl):
+    # 0.4 s of the jet (it reaches the pool after about 0.15 s), then a few steps more: pf_stats
+    # lags a few steps. Whitewater within the capacity, no WHITEWATER_FULL; pf_render_ssf draws
+    # it (the frame differs from one with skip_whitewater) and refuses a bad opacity; a capacity
+    # of 64 under huge rates fills up and raises WHITEWATER_FULL; turned off, the count is 0.
+    sim = jet_into_a_pool(sims, Feature.EMITTERS | Feature.WHITEWATER)
+    for _ in range(24 + 4):
+        sim.step(DT)
+    st = sim.stats()
+    assert 0 < st.whitewater_count <= WHITEWATER_DEFAULTS["capacity"], st.whitewater_count
+    assert not st.flags & (pflip.Flag.WHITEWATER_FULL | pflip.Flag.NONFINITE), hex(st.flags)
+
+    w, h = 96, 72
+    cam = make_camera(look_at((0.4, 0.7, 2.2), (0.4, 0.35, 0.4)), perspective(45.0, w / h, 0.1, 10.0),
+                      (0, 0, w, h), 0.1, 10.0)
+    with pflip.frame.Frame(gl, w, h) as frame:
+        def draw(**fields):
+            frame.clear((0.05, 0.05, 0.05, 1.0), depth=1.0)
+            p = pflip.SsfParams.default()
+            for name, value in fields.items():
+                setattr(p, name, value)
+            sim.render_ssf(cam, frame.target, p)
+            return frame.read_color().astype(np.int32)
+
+        liquid = draw(skip_whitewater=1)
+        both = draw(skip_whitewater=0, whitewater_radius=0.02, whitewater_opacity=1.0)
+        assert (np.abs(both - liquid).sum(axis=-1) > 0).sum() > 100, "the whitewater changed too few pixels"  # 659 on llvmpipe
+        for bad in (dict(whitewater_opacity=1.5), dict(whitewater_opacity=-0.5), dict(whitewater_radius=-0.01),
+                    dict(whitewater_radius=float("nan"))):
+            with pytest.raises(PflipError) as e:
+                draw(**bad)
+            assert e.value.code == Result.ERROR_INVALID_ARGUMENT and e.value.function == "pf_render_ssf", bad
+    assert sim.stats().render_whitewater_gpu_ms >= 0.0
+
+    sim.set_whitewater(capacity=64, trapped_air_rate=5000.0, wave_crest_rate=5000.0)  # clears it
+    for _ in range(6 + 4):
+        sim.step(DT)
+    st = sim.stats()
+    assert 0 < st.whitewater_count <= 64 and st.flags & pflip.Flag.WHITEWATER_FULL, (st.whitewater_count, hex(st.flags))
+
+    sim.features = Feature.EMITTERS
+    for _ in range(4):
+        sim.step(DT)
+    assert sim.stats().whitewater_count == 0
 
 
 # ---- capacity --------------------------------------------------------------------------------------

@@ -104,6 +104,7 @@ ojson measure_pool(const Options& opt, uint32_t cells) {
     pfs::check(pf_fill_box(sim.get(), lo, hi, nullptr), "pf_fill_box");
     for (uint32_t f = 0; f < opt.settle; ++f) pfs::check(pf_step(sim.get(), 1.0f / 60.0f), "pf_step");
     pf_stats st{};
+    st.struct_size = sizeof st;  // every field, render_whitewater_gpu_ms included
     st.struct_size = sizeof st;
     pf_get_stats(sim.get(), &st);
     std::printf("\n[pool %u^3] %u particles, %u frames settled\n", cells, st.particle_count, opt.settle);

@@ -41,6 +41,8 @@
 //   "domain_motion": { "position": [..], "rotation": [..], "velocity": [..],
 //                      "angular_velocity": [..] }                  pf_domain_motion, set once
 //   "vorticity_confinement": { "strength": 0.2 }                   pf_vorticity_confinement, set once
+//   "whitewater": { "capacity": 262144, "trapped_air_rate": 40, "lifetime": [1, 3], ... }
+//                                                                   pf_whitewater (any of its fields), set once
 // }
 // Effect objects start from pf_default_*() and take the keys given; the library validates them
 // when the scene is created, and an error names the object's JSON Pointer ("/emitters/1").
@@ -104,6 +106,8 @@ struct Scene {
     pf_domain_motion domain_motion{};
     bool has_vorticity_confinement = false;
     pf_vorticity_confinement vorticity_confinement{};
+    bool has_whitewater = false;
+    pf_whitewater whitewater{};
 
     /// World-space bounds of the grid.
     vec3f domain_min() const { return origin; }

@@ -58,6 +58,12 @@ struct ObjectReader {
     void real(const char* key, float& out) const {
         if (const json* j = find(key)) out = p.real(*j, at(key));
     }
+    void pair(const char* key, float out[2]) const {
+        const json* j = find(key);
+        if (!j) return;
+        if (!j->is_array() || j->size() != 2) p.fail(at(key), "must be an array of 2 numbers, found " + Parser::describe(*j));
+        for (size_t i = 0; i < 2; ++i) out[i] = p.real((*j)[i], Parser::join(at(key), i));
+    }
     void rotation(float out[4]) const {
         if (const json* j = find("rotation")) quaternion(p, *j, at("rotation"), out);
     }
@@ -77,7 +83,8 @@ const Names<uint32_t> kFeatures = {{"force_fields", PF_FEATURE_FORCE_FIELDS},
                                    {"emitters", PF_FEATURE_EMITTERS},
                                    {"sinks", PF_FEATURE_SINKS},
                                    {"domain_motion", PF_FEATURE_DOMAIN_MOTION},
-                                   {"vorticity_confinement", PF_FEATURE_VORTICITY_CONFINEMENT}};
+                                   {"vorticity_confinement", PF_FEATURE_VORTICITY_CONFINEMENT},
+                                   {"whitewater", PF_FEATURE_WHITEWATER}};
 
 pf_force_field read_field(const ObjectReader& r) {
     r.p.check_keys(r.obj, r.path, {"type", "position", "vector", "strength", "radius", "drag"});
@@ -189,6 +196,24 @@ pf_vorticity_confinement read_confinement(const ObjectReader& r) {
     return c;
 }
 
+pf_whitewater read_whitewater(const ObjectReader& r) {
+    r.p.check_keys(r.obj, r.path, {"capacity", "trapped_air_rate", "wave_crest_rate", "trapped_air_range",
+                                   "wave_crest_range", "energy_range", "lifetime", "bubble_buoyancy", "bubble_drag",
+                                   "spray_drag"});
+    pf_whitewater w = pf_default_whitewater();
+    if (const json* j = r.find("capacity")) w.capacity = uint32_t(r.p.real(*j, r.at("capacity"), 1.0, double(1u << 23), true));
+    r.real("trapped_air_rate", w.trapped_air_rate);
+    r.real("wave_crest_rate", w.wave_crest_rate);
+    r.pair("trapped_air_range", w.trapped_air_range);
+    r.pair("wave_crest_range", w.wave_crest_range);
+    r.pair("energy_range", w.energy_range);
+    r.pair("lifetime", w.lifetime);
+    r.real("bubble_buoyancy", w.bubble_buoyancy);
+    r.real("bubble_drag", w.bubble_drag);
+    r.real("spray_drag", w.spray_drag);
+    return w;
+}
+
 } // namespace
 
 void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
@@ -229,6 +254,12 @@ void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
             read_confinement(ObjectReader{p, p.object(*it, "/vorticity_confinement"), "/vorticity_confinement"});
         s.has_vorticity_confinement = true;
     }
+    if (auto it = root.find("whitewater"); it != root.end()) {
+        if (!(s.features & PF_FEATURE_WHITEWATER))
+            p.fail("/whitewater", "is given but \"whitewater\" is not listed in /features");
+        s.whitewater = read_whitewater(ObjectReader{p, p.object(*it, "/whitewater"), "/whitewater"});
+        s.has_whitewater = true;
+    }
 }
 
 uint32_t parse_feature_list(const std::string& list, const char* what) {
@@ -249,7 +280,7 @@ uint32_t parse_feature_list(const std::string& list, const char* what) {
         }
         if (!known) {
             throw Error(std::string(what) + ": unknown feature '" + name +
-                        "' (force_fields, obstacles, emitters, sinks, domain_motion, vorticity_confinement, all, none)");
+                        "' (force_fields, obstacles, emitters, sinks, domain_motion, vorticity_confinement, whitewater, all, none)");
         }
     }
     return bits;

@@ -50,6 +50,8 @@ SceneEffectIds add_scene_effects(pf_sim* sim, const Scene& s) {
         throw Error(s.path + ": /domain_motion: refused by the library (the log says why)");
     if (s.has_vorticity_confinement && pf_set_vorticity_confinement(sim, &s.vorticity_confinement) != PF_OK)
         throw Error(s.path + ": /vorticity_confinement: refused by the library (the log says why)");
+    if (s.has_whitewater && pf_set_whitewater(sim, &s.whitewater) != PF_OK)
+        throw Error(s.path + ": /whitewater: refused by the library (the log says why)");
     return ids;
 }
 

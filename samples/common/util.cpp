@@ -126,7 +126,7 @@ void RenderTimings::add(const pf_stats& stats) {
 }
 
 RenderTimings::Result RenderTimings::summary(size_t keep) const {
-    std::vector<double> pass[PF_RENDER_PASS_COUNT], total;
+    std::vector<double> pass[PF_RENDER_PASS_COUNT], whitewater, total;
     size_t skip = by_call_.size() > keep ? by_call_.size() - keep : 0;
     for (const auto& [call, s] : by_call_) {
         if (skip > 0) {
@@ -134,10 +134,12 @@ RenderTimings::Result RenderTimings::summary(size_t keep) const {
             continue;
         }
         for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) pass[p].push_back(s.render_gpu_ms[p]);
+        whitewater.push_back(s.render_whitewater_gpu_ms);
         total.push_back(s.render_gpu_total_ms);
     }
     Result r;
     for (int p = 0; p < PF_RENDER_PASS_COUNT; ++p) r.pass[p] = summarize(pass[p]);
+    r.whitewater = summarize(whitewater);
     r.total = summarize(total);
     return r;
 }

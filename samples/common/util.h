@@ -67,6 +67,7 @@ public:
     void add(const pf_stats& stats);
     struct Result {
         Summary pass[PF_RENDER_PASS_COUNT];
+        Summary whitewater;  // the whitewater layer (pf_stats.render_whitewater_gpu_ms)
         Summary total;
     };
     Result summary(size_t keep) const;

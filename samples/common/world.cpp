@@ -445,6 +445,10 @@ std::string flag_names(uint32_t flags) {
     add(PF_FLAG_NONFINITE, "NONFINITE");
     add(PF_FLAG_SPEED_CLAMPED, "SPEED_CLAMPED");
     add(PF_FLAG_SUBSTEPS_CLAMPED, "SUBSTEPS_CLAMPED");
+    add(PF_FLAG_VOLUME_LOST, "VOLUME_LOST");
+    add(PF_FLAG_ENERGY_GAINED, "ENERGY_GAINED");
+    add(PF_FLAG_EMITTERS_FULL, "EMITTERS_FULL");
+    add(PF_FLAG_WHITEWATER_FULL, "WHITEWATER_FULL");
     return s.empty() ? "none" : s;
 }
 

@@ -386,6 +386,7 @@ int run(int argc, char** argv) {
     const double fill_ms = pfs::now_ms() - t0;
 
     pf_stats st{};
+    st.struct_size = sizeof st;  // every field, whitewater_count included
     pfs::check(pf_get_stats(sim.get(), &st), "pf_get_stats");
     std::printf("  %u particles (estimate %.0f); pf_create %.1f ms, fill %.1f ms\n", st.particle_count,
                 scene.estimated_particles(), create_ms, fill_ms);
@@ -655,6 +656,7 @@ int run(int argc, char** argv) {
                     w.mean, w.median);
     }
     std::printf("flags: %s; largest speed %.3f m/s\n", pfs::flag_names(st.flags).c_str(), double(st.max_speed));
+    if (scene.features & PF_FEATURE_WHITEWATER) std::printf("whitewater particles: %u\n", st.whitewater_count);
     const double total_s = (pfs::now_ms() - t_start) / 1000.0;
     std::printf("total wall time %.2f s: simulation %.2f s, rendering %.2f s, PNG encoding %.2f s, %u images in %s\n",
                 total_s, sim_total_ms / 1000.0, render_total_ms / 1000.0, png_total_ms / 1000.0, image_index,

@@ -1045,6 +1045,25 @@ void Viewer::ui_effects() {
             report("pf_set_vorticity_confinement", pf_set_vorticity_confinement(sim_.get(), &c));
         }
     }
+    {
+        // Whitewater: a switch, its two rates and its lifetimes (the look is under "look").
+        bool on = (features & PF_FEATURE_WHITEWATER) != 0;
+        if (ImGui::Checkbox("whitewater", &on)) {
+            log_.clear();
+            report("pf_set_features", pf_set_features(sim_.get(), on ? (features | PF_FEATURE_WHITEWATER)
+                                                                     : (features & ~uint32_t(PF_FEATURE_WHITEWATER))));
+        }
+        pf_whitewater w = pf_default_whitewater();
+        pfs::check(pf_get_whitewater(sim_.get(), &w), "pf_get_whitewater");
+        bool changed = ImGui::SliderFloat("trapped-air rate", &w.trapped_air_rate, 0.0f, 400.0f, "%.0f /cell/s");
+        changed |= ImGui::SliderFloat("wave-crest rate", &w.wave_crest_rate, 0.0f, 400.0f, "%.0f /cell/s");
+        changed |= ImGui::SliderFloat2("lifetime", w.lifetime, 0.1f, 10.0f, "%.2f s");
+        if (changed) {
+            log_.clear();
+            report("pf_set_whitewater", pf_set_whitewater(sim_.get(), &w));
+        }
+        ImGui::Text("whitewater particles: %u", stats_.whitewater_count);
+    }
     for (size_t i = 0; i < scene_.obstacles.size() && i < effect_ids_.obstacles.size(); ++i) {
         pf_obstacle o = obstacle_pose(i); // a floating one where it floats now
         const std::string label = "obstacle " + std::to_string(i) + " position";
@@ -1113,6 +1132,10 @@ void Viewer::ui_rendering() {
         ImGui::SliderFloat("fresnel f0", &s.fresnel_f0, 0.0f, 1.0f, "%.3f");
         ImGui::SliderFloat("specular", &s.specular, 0.0f, 10.0f, "%.2f");
         ImGui::SliderFloat("shininess", &s.shininess, 1.0f, 2000.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+        bool whitewater = s.skip_whitewater == 0;
+        if (ImGui::Checkbox("whitewater layer", &whitewater)) s.skip_whitewater = whitewater ? 0u : 1u;
+        ImGui::SliderFloat("whitewater radius", &s.whitewater_radius, 0.0f, scene_.cell_size, "%.4f m (0 = default)");
+        ImGui::SliderFloat("whitewater opacity", &s.whitewater_opacity, 0.0f, 1.0f, "%.2f (0 = default)");
         if (ImGui::DragFloat3("light direction", s.light_direction, 0.01f, -1.0f, 1.0f, "%.2f")) {
             if (glm::length(glm::vec3(s.light_direction[0], s.light_direction[1], s.light_direction[2])) < 1e-3f)
                 s.light_direction[1] = 1.0f;
@@ -1291,6 +1314,13 @@ void Viewer::ui_render_pass_table() {
         ImGui::TextUnformatted(total ? "total" : pf_render_pass_name(pf_render_pass(row)));
         ImGui::TableNextColumn();
         ImGui::Text("%.3f", double(total ? stats_.render_gpu_total_ms : stats_.render_gpu_ms[row]));
+        if (row == PF_RENDER_PASS_COUNT - 1) {  // the whitewater layer, before the total
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted("whitewater");
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", double(stats_.render_whitewater_gpu_ms));
+        }
     }
     ImGui::EndTable();
 }

@@ -23,6 +23,7 @@ layout(std140, binding = PF_UBO_RENDER) uniform RenderUniforms {
     mat4 domain_view; // simulation (domain) coordinates -> eye: view * the domain's pose
     vec4 filter_size; // filter half-width in metres, pixels per metre at eye depth 1 (perspective) or at
                       // any depth (orthographic), -, -
+    vec4 whitewater;  // sprite radius of foam (m), opacity at a sprite's centre, -, -
 } rnd;
 
 // Larger than any eye depth: "no scene surface here".

@@ -104,6 +104,17 @@
 /* the vorticity confinement's per-cell vorticity (vec4: w, |w|), on the effects' slot 3: written
  * by vorticity.comp (face velocities 2, cell types 6), read by confinement_force.comp */
 #define PF_SLOT_VORTICITY 3
+/* storage blocks of the whitewater kernels (shaders/effects/whitewater/): last step's particles
+ * in (0, 1), face velocities 2, the liquid fraction around each cell 3, this step's particles
+ * out (4, 5), cell types 6 and the state record (PF_WW_* words below) 7; the status buffer on 0
+ * in the kernels that read no particles (emit, commit) */
+#define PF_SLOT_WW_IN_POS 0
+#define PF_SLOT_WW_IN_VEL 1
+#define PF_SLOT_WW_FRACTION 3
+#define PF_SLOT_WW_OUT_POS 4
+#define PF_SLOT_WW_OUT_VEL 5
+#define PF_SLOT_WW_STATE 7
+#define PF_SLOT_WW_STATUS 0
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
@@ -141,6 +152,20 @@
 #define PF_LOC_DOMAIN_ALPHA 2    /* angular acceleration (xyz) */
 /* explicit uniform location of the vorticity confinement's force kernel: epsilon */
 #define PF_LOC_VORTICITY_STRENGTH 0
+/* explicit uniform locations of the whitewater kernels */
+#define PF_LOC_WW_CAPACITY 0   /* uint: particle slots */
+#define PF_LOC_WW_MOTION 1     /* vec4: frame dt, bubble buoyancy, bubble drag, spray drag */
+#define PF_LOC_WW_LIMITS_A 2   /* vec4: trapped-air range, wave-crest range */
+#define PF_LOC_WW_LIMITS_B 3   /* vec4: energy range, lifetime range */
+#define PF_LOC_WW_RATES 4      /* vec4: trapped-air and wave-crest particles per cell this step, 0, 0 */
+#define PF_LOC_WW_SEED 5       /* uint: the step number mixed with desc.seed (new numbers every step) */
+/* The whitewater's state record (uints): two DrawArraysIndirectCommand records of the live
+ * particles (like PF_COUNT_*), then the count of the step's output while it is being built. */
+#define PF_WW_LIVE 0
+#define PF_WW_STRIP_RECORD 4
+#define PF_WW_INSTANCES 5
+#define PF_WW_NEXT 8
+#define PF_WW_WORDS 12
 
 /* The live-count record (8 words), kept on the GPU: two DrawArraysIndirectCommand records, so
  * engines and the renderer draw exactly the live particles without reading the count back.
@@ -183,12 +208,14 @@
 #define PF_STATUS_POTENTIAL_ENERGY 11  /* m sum -g . (x - origin) over the particles, J */
 #define PF_STATUS_PARTICLE_COUNT 12    /* live particles at the step's end (uint) */
 #define PF_STATUS_INTERIOR_DENSITY 13 /* mean count / rest over interior FLUID cells (0: none) */
-#define PF_STATUS_WORDS 14
+#define PF_STATUS_WHITEWATER_COUNT 14 /* live whitewater particles at the step's end (uint) */
+#define PF_STATUS_WORDS 16
 
 /* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */
 #define PF_GPU_FLAG_P2G_OVERFLOW 1u
 #define PF_GPU_FLAG_NONFINITE 2u
 #define PF_GPU_FLAG_SPEED_CLAMPED 4u
 #define PF_GPU_FLAG_EMITTERS_FULL 64u
+#define PF_GPU_FLAG_WHITEWATER_FULL 128u
 
 #endif

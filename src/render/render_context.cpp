@@ -67,6 +67,11 @@ void RenderContext::set_fixed_state() {
     gl_.DepthRange(0.0, 1.0);  // gl_FragDepth is clamped to the depth range
     gl_.PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
     gl_.BindVertexArray(vao_.id());
+    bind_vertex_buffers();
+    handoff_ = Handoff{};
+}
+
+void RenderContext::bind_vertex_buffers() {
     pf_gl_buffers b{};
     sim_.gl_buffers(b);
     gl_.BindVertexBuffer(PF_ATTR_POSITION, b.positions, 0, GLsizei(b.stride));
@@ -75,7 +80,7 @@ void RenderContext::set_fixed_state() {
 
 void RenderContext::run(const std::vector<RenderPass>& passes, const RenderFrame& frame) {
     for (const RenderPass& pass : passes) {
-        const gl::DebugGroup group(gl_, (std::string("pflip/") + pf_render_pass_name(pass.timer)).c_str());
+        const gl::DebugGroup group(gl_, (std::string("pflip/") + render_pass_name(pass.timer)).c_str());
         timers_.begin_pass(pass.timer);
         pass.run(*this, frame);
         timers_.end_pass();

@@ -42,6 +42,15 @@ public:
     // Runs a layer's passes, each timed and in its debug group "pflip/<pass name>".
     void run(const std::vector<RenderPass>& passes, const RenderFrame& frame);
 
+    // Textures a layer leaves for the layers after it in the same call (0: none): the liquid
+    // surface's scene depth and liquid surface as eye depths, which the whitewater reads.
+    struct Handoff {
+        GLuint scene_eye_depth = 0;
+        GLuint liquid_eye_depth = 0;
+    };
+    Handoff& handoff() { return handoff_; }
+    // The simulation's particles on the sprite attributes (set_fixed_state binds them too).
+    void bind_vertex_buffers();
     // Binds `texture` on `unit` with the nearest or linear sampler.
     void bind_texture(GLuint unit, GLenum target, GLuint texture, bool linear);
     // One sphere sprite per live particle, as many as the GPU's count record says (no readback).
@@ -59,6 +68,7 @@ private:
     gl::TimerRing timers_;
     gl::Buffer uniforms_;
     gl::Object vao_, nearest_, linear_;
+    Handoff handoff_;
 };
 
 }  // namespace pf

@@ -16,7 +16,17 @@ namespace pf {
 
 class RenderContext;
 
-enum class RenderLayerId { liquid_surface, particles, count };
+enum class RenderLayerId { liquid_surface, particles, whitewater, count };
+
+// The whitewater layer's timer: past the public pf_render_pass values (pf_stats.render_gpu_ms
+// has PF_RENDER_PASS_COUNT entries), reported as pf_stats.render_whitewater_gpu_ms.
+constexpr pf_render_pass kRenderPassWhitewater = pf_render_pass(PF_RENDER_PASS_COUNT);
+// Timers of a render call: the public passes and the whitewater layer's.
+constexpr int kRenderTimers = PF_RENDER_PASS_COUNT + 1;
+// A render pass's stable short name (its debug group "pflip/<name>").
+inline const char* render_pass_name(pf_render_pass pass) {
+    return pass == kRenderPassWhitewater ? "whitewater" : pf_render_pass_name(pass);
+}
 
 // One render call as the layers see it: the engine's camera and target (already checked), and
 // the parameters of the call (with their defaults resolved; null for a layer it does not draw).

@@ -28,8 +28,9 @@ struct RenderUniforms {
     float domain_view[16]; // simulation (domain) coordinates -> eye: view * the domain's pose
     float filter[4];       // filter half-width in metres, pixels per metre at eye depth 1 (perspective) or
                            // at any depth (orthographic), -, -
+    float whitewater[4];   // sprite radius of foam in metres, opacity at a sprite's centre, -, -
 };
-static_assert(sizeof(RenderUniforms) == 5 * 64 + 11 * 16, "RenderUniforms must match the std140 block");
+static_assert(sizeof(RenderUniforms) == 5 * 64 + 12 * 16, "RenderUniforms must match the std140 block");
 
 // Camera part: matrices (inverses in double precision), viewport, planes. `y_sign` is -1 when
 // the engine's clip origin is GL_UPPER_LEFT. The camera must have passed validation (the

@@ -98,6 +98,8 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
     frame.camera = &camera;
     frame.target = &target;
     frame.ssf = &params;
+    if ((sim_.features() & PF_FEATURE_WHITEWATER) && params.skip_whitewater == 0)
+        return render(frame, {RenderLayerId::liquid_surface, RenderLayerId::whitewater});
     return render(frame, {RenderLayerId::liquid_surface});
 }
 
@@ -121,6 +123,8 @@ void Renderer::stats(pf_stats& out) const {
         out.render_gpu_ms[p] = r.at(size_t(p));
         out.render_gpu_total_ms += r.at(size_t(p));
     }
+    out.render_whitewater_gpu_ms = r.at(size_t(kRenderPassWhitewater));
+    out.render_gpu_total_ms += out.render_whitewater_gpu_ms;
     out.render_cpu_ms = last_cpu_ms_;
     for (const auto& l : layers_) {
         if (l) out.gpu_memory_bytes += l->bytes();  // their buffers are in the simulation's tally

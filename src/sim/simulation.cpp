@@ -630,6 +630,7 @@ void Simulation::read_status_slot(int s) const {
         m.liquid_volume = float(m.interior_density > 0.0f ? rest_volume / m.interior_density : rest_volume);
         metrics_ = m;
         readback_count_ = live;
+        whitewater_count_ = words[PF_STATUS_WHITEWATER_COUNT];
         // The drifts' reference: the first step measured since the particles last changed.
         if (!metrics_first_set_ && fence_step_[s] >= metrics_epoch_step_) {
             metrics_first_ = m;
@@ -770,6 +771,8 @@ void Simulation::raise_flags(uint32_t bits) const {
                               "correction or smaller frame times (PF_FLAG_VOLUME_LOST)"},
         {PF_FLAG_EMITTERS_FULL, "the emitters wanted more particles than desc.max_particles leaves room for: "
                                 "emission stopped at the capacity (PF_FLAG_EMITTERS_FULL)"},
+        {PF_FLAG_WHITEWATER_FULL, "the liquid made more whitewater than pf_whitewater.capacity holds: the rest was "
+                                  "not made; raise the capacity or lower the rates (PF_FLAG_WHITEWATER_FULL)"},
     };
     for (const Text& t : kTexts)
         if (fresh & t.bit) log_.warning(std::string("pf_step: ") + t.text);
@@ -920,9 +923,8 @@ void Simulation::run_effects(EffectStage stage) {
 }
 
 void Simulation::run_count_stage(EffectStage stage) {
-    if (!gpu_count_) return;
     run_effects(stage);
-    copy_count_to_uniforms();
+    if (gpu_count_) copy_count_to_uniforms();
 }
 
 pf_result Simulation::read_particles(uint32_t first, uint32_t count, float* xyz, float* vel) const {
@@ -966,6 +968,7 @@ void Simulation::stats(pf_stats& out) const {
     out.max_particles = desc_.max_particles;
     out.gpu_memory_bytes = memory_.bytes;
     out.gpu_particle_bytes = memory_.particle_bytes;
+    out.whitewater_count = (desc_.features & PF_FEATURE_WHITEWATER) ? whitewater_count_ : 0;
     out.steps = steps_;
     out.substeps = last_substeps_;
     out.flags = flags_;

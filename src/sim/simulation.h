@@ -180,8 +180,8 @@ private:
     void begin_effects_step(float frame_dt);
     // The effects' buffers and sizes for this substep.
     EffectBuffers effect_buffers() const;
-    // Runs the once-per-step stage `stage` (emitters, sinks), then hands the GPU's live count to
-    // the kernels' uniform block.
+    // Runs the once-per-step stage `stage` (emitters, sinks, whitewater), then, while the GPU
+    // keeps the live count, hands it to the kernels' uniform block.
     void run_count_stage(EffectStage stage);
     // Writes a host-known live count into the count record.
     void write_count_record(uint32_t live);
@@ -251,6 +251,7 @@ private:
     bool gpu_count_ = false;
     uint64_t added_total_ = 0;    // particles added so far (pf_add_particles, emitters' requests)
     mutable uint32_t readback_count_ = 0;  // live count of the newest readback
+    mutable uint32_t whitewater_count_ = 0;  // live whitewater particles of the newest readback
     // grid
     int32_t cells_ = 0;
     std::array<int32_t, 3> face_counts_{};

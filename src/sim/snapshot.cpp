@@ -23,7 +23,8 @@ namespace {
 
 constexpr char kMagic[8] = {'p', 'f', 'l', 'i', 'p', 's', 'n', 'p'};
 // 2: the status words gained PF_STATUS_INTERIOR_DENSITY (14 words, 2026-11-24).
-constexpr uint32_t kFormat = 2;
+// 3: and PF_STATUS_WHITEWATER_COUNT (16 words, 2026-11-26).
+constexpr uint32_t kFormat = 3;
 
 struct Header {
     char magic[8];

@@ -83,7 +83,8 @@ TEST_F(Effects, EachEffectAddsOnlyItsOwnPasses) {
                           Case{PF_FEATURE_OBSTACLES, {"obstacles", "obstacle_push", "obstacle_forces"}},
                           Case{PF_FEATURE_EMITTERS, {"emit"}}, Case{PF_FEATURE_SINKS, {"sinks"}},
                           Case{PF_FEATURE_DOMAIN_MOTION, {"domain_motion"}},
-                          Case{PF_FEATURE_VORTICITY_CONFINEMENT, {"vorticity_confinement"}}}) {
+                          Case{PF_FEATURE_VORTICITY_CONFINEMENT, {"vorticity_confinement"}},
+                          Case{PF_FEATURE_WHITEWATER, {"whitewater"}}}) {
         SimPtr sim = make_scene(*this, 0);
         ASSERT_TRUE(sim);
         ASSERT_EQ(pf_set_features(sim.get(), c.feature), PF_OK) << last_log();

@@ -17,6 +17,8 @@ const gl::ProgramId kObstaclePrograms[] = {gl::ProgramId::obstacle_cells, gl::Pr
 const gl::ProgramId kEmitterPrograms[] = {gl::ProgramId::emit, gl::ProgramId::emit_apic, gl::ProgramId::emit_commit};
 const gl::ProgramId kDomainPrograms[] = {gl::ProgramId::domain_forces};
 const gl::ProgramId kVorticityPrograms[] = {gl::ProgramId::vorticity, gl::ProgramId::confinement_force};
+const gl::ProgramId kWhitewaterPrograms[] = {gl::ProgramId::ww_fraction, gl::ProgramId::ww_advect, gl::ProgramId::ww_emit,
+                                             gl::ProgramId::ww_commit};
 const gl::ProgramId kSinkPrograms[] = {gl::ProgramId::sink_mark, gl::ProgramId::sink_lists, gl::ProgramId::sink_move,
                                        gl::ProgramId::sink_move_apic};
 
@@ -68,9 +70,12 @@ TEST_F(EffectsPipeline, OffEffectsBuildNothingAndTurningOneOnBuildsOnlyItsProgra
     EXPECT_EQ(built(r, kVorticityPrograms), 0u);
     ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_VORTICITY_CONFINEMENT), PF_OK);
     EXPECT_EQ(built(r, kVorticityPrograms), std::size(kVorticityPrograms));
+    EXPECT_EQ(built(r, kWhitewaterPrograms), 0u);
+    ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_WHITEWATER), PF_OK);
+    EXPECT_EQ(built(r, kWhitewaterPrograms), std::size(kWhitewaterPrograms));
     const size_t all = core + std::size(kForceFieldPrograms) + std::size(kObstaclePrograms) +
                        std::size(kEmitterPrograms) + std::size(kSinkPrograms) + std::size(kDomainPrograms) +
-                       std::size(kVorticityPrograms);
+                       std::size(kVorticityPrograms) + std::size(kWhitewaterPrograms);
     EXPECT_EQ(r.programs_built(), all);
     // Off and on again: nothing is rebuilt.
     ASSERT_EQ(pf_set_features(handle.get(), 0), PF_OK);

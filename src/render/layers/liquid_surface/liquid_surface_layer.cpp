@@ -86,6 +86,7 @@ void LiquidSurfaceLayer::scene_copy(RenderContext& c, const RenderFrame& f) {
     // The engine's textures stay bound only for this pass.
     c.bind_texture(PF_TEX_SCENE_COLOR, GL_TEXTURE_2D, 0, false);
     c.bind_texture(PF_TEX_SCENE_DEPTH, GL_TEXTURE_2D, 0, false);
+    c.handoff().scene_eye_depth = f.target->scene_depth != 0 ? targets_->texture(SsfTargets::scene_depth) : 0;
 }
 
 void LiquidSurfaceLayer::thickness(RenderContext& c, const RenderFrame& f) {
@@ -175,6 +176,7 @@ void LiquidSurfaceLayer::shade(RenderContext& c, const RenderFrame& f) {
     c.bind_texture(PF_TEX_SCENE_COLOR, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_color), true);
     c.bind_texture(PF_TEX_LIQUID_DEPTH, GL_TEXTURE_2D, targets_->texture(surface_), false);
     c.bind_texture(PF_TEX_THICKNESS, GL_TEXTURE_2D, targets_->texture(SsfTargets::thickness), true);
+    c.handoff().liquid_eye_depth = targets_->texture(surface_);
     c.bind_texture(PF_TEX_ENVIRONMENT, GL_TEXTURE_CUBE_MAP, f.target->environment_cubemap, true);
     gl.UseProgram(shade_);
     if (f.ssf->path == PF_SSF_PATH_COMPUTE) {
