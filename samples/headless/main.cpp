@@ -80,6 +80,7 @@ struct Options {
     pfs::PlyFormat ply_format = pfs::PlyFormat::binary_little_endian;
     std::string export_vdb;           // directory for frame_NNNN.vdb / frame_NNNN_points.vdb; empty: none
     VdbContent vdb_content = VdbContent::both;
+    float count_above = -1.0f;        // --count-above: print the particles above this height at the end
 };
 
 void add_options(CLI::App& app, Options& o) {
@@ -141,6 +142,10 @@ void add_options(CLI::App& app, Options& o) {
         ->type_name("FILE.mp4");
     app.add_option("--fps", o.fps, "video frame rate (default: real time, 1 / (frame_dt * every))")
         ->check(pfs::Range(0.1f, 1000.0f));
+    app.add_option("--count-above", o.count_above,
+                   "at the end, print how many particles lie above this world height in metres (liquid "
+                   "hanging from a lid)")
+        ->type_name("METRES");
     app.add_option("--export-ply", o.export_ply,
                    "write every frame's particles to DIR/frame_NNNN.ply (x y z vx vy vz; frame 0: the initial fill)")
         ->type_name("DIR");
@@ -657,6 +662,15 @@ int run(int argc, char** argv) {
     }
     std::printf("flags: %s; largest speed %.3f m/s\n", pfs::flag_names(st.flags).c_str(), double(st.max_speed));
     if (scene.features & PF_FEATURE_WHITEWATER) std::printf("whitewater particles: %u\n", st.whitewater_count);
+    if (opt.count_above >= 0.0f) {
+        uint32_t n = 0;
+        pfs::check(pf_get_particle_count(sim.get(), &n), "pf_get_particle_count");
+        std::vector<float> xyz(3 * size_t(n));
+        if (n > 0) pfs::check(pf_read_particles(sim.get(), 0, n, xyz.data(), nullptr), "pf_read_particles");
+        uint32_t above = 0;
+        for (uint32_t i = 0; i < n; ++i) above += xyz[3 * size_t(i) + 1] > opt.count_above ? 1 : 0;
+        std::printf("particles above %.4g m: %u of %u\n", double(opt.count_above), above, n);
+    }
     const double total_s = (pfs::now_ms() - t_start) / 1000.0;
     std::printf("total wall time %.2f s: simulation %.2f s, rendering %.2f s, PNG encoding %.2f s, %u images in %s\n",
                 total_s, sim_total_ms / 1000.0, render_total_ms / 1000.0, png_total_ms / 1000.0, image_index,
