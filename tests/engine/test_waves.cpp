@@ -1,10 +1,14 @@
 // Standing waves keep their energy (issue 17): the first sloshing mode of a tank 3.2 m long and
 // 1.6 m deep (64 x 48 cells of 5 cm, 32 cells of depth), amplitude 0.1 m, a jittered lattice of
 // 8 particles per cell, frame dt 1/60 s, public API only. For every preset as shipped (the
-// ghost-fluid surface, design.md §4.6a), in thin tanks (1 and 2 cells) and a 3D one (8 cells; 4
-// in CI's fast mode): the scheme never adds energy, and the amplitude lost per period and the
-// period stay within their bounds; the marker-cell surface (opt-in since 2026-11-26) in the
-// 2-cell tank against its own guards.
+// ghost-fluid surface, design.md §4.6a), in thin tanks (1 and 2 cells) and a 3D one (8 cells): the
+// scheme never adds energy, and the amplitude lost per period and the period stay within their
+// bounds; the marker-cell surface (opt-in since 2026-11-26) in the 2-cell tank against its own
+// guards. CI's fast mode (12 minutes of its 2 cores before 2026-11-27) runs the issue's thin and 3D
+// tank and the marker-cell surface at their smallest: the 1-cell tank (the largest energy rise
+// measured, 0.061 of the wave's), the 3D one 4 cells thick and the marker-cell surface 1 cell
+// thick (measured 2026-11-27: loss 21-30% a period, period 2.5-3.2% long, energy rise at most
+// 0.029 of the wave's); the 2-cell tank runs in the long mode only.
 //
 // Measured on llvmpipe (3 periods, 2026-11-25): on the code before issue 17 the fast preset's
 // energy rose to 91 times the wave's energy (2 cells thick) and the balanced preset lost 45% of
@@ -134,14 +138,19 @@ void Waves::check_presets(uint32_t thickness) {
 }  // namespace
 
 TEST_F(Waves, ThinTankOneCell) { check_presets(1); }
-TEST_F(Waves, ThinTankTwoCells) { check_presets(2); }
+TEST_F(Waves, ThinTankTwoCells) {
+    if (!long_mode()) GTEST_SKIP() << "the long mode's (PF_STABILITY_LONG); CI runs the 1-cell tank";
+    check_presets(2);
+}
 TEST_F(Waves, Tank3D) { check_presets(long_mode() ? 8 : 4); }
 
-// The marker-cell free surface (the original's, opt-in), every preset, 2 cells thick.
+// The marker-cell free surface (the original's, opt-in), every preset, 2 cells thick (1 in CI's
+// fast mode).
 TEST_F(Waves, MarkerCellSurfaceAddsNoEnergy) {
+    const uint32_t thickness = long_mode() ? 2 : 1;
     for (size_t i = 0; i < std::size(kPresets); ++i) {
-        const std::string label = std::string(kPresetNames[i]) + "_marker_cell_2";
-        const WaveRun r = run_wave(kPresets[i], 2, periods_to_run(), label.c_str(), PF_FREE_SURFACE_MARKER_CELL);
+        const std::string label = std::string(kPresetNames[i]) + "_marker_cell_" + std::to_string(thickness);
+        const WaveRun r = run_wave(kPresets[i], thickness, periods_to_run(), label.c_str(), PF_FREE_SURFACE_MARKER_CELL);
         expect_wave(r, label, kMarkerCellLossPerPeriodBound, kMarkerCellPeriodErrorBound);
     }
 }
