@@ -497,7 +497,7 @@ typedef enum pf_whitewater_kind {
 
 /** The whitewater's particle buffers (PF_FEATURE_WHITEWATER), for engines that draw it themselves;
  *  readable like pf_gl_buffers right after pf_step. The names stay the same until the capacity
- *  changes or the feature is turned off. */
+ *  changes; turning the feature off and on again keeps them (and clears the particles). */
 typedef struct pf_whitewater_buffers {
     uint32_t positions;           /**< GL buffer: vec4 per particle, xyz = position in the simulation's frame
                                        (like pf_gl_buffers), w = seconds it still lives */

@@ -160,11 +160,13 @@
 #define PF_LOC_WW_RATES 4      /* vec4: trapped-air and wave-crest particles per cell this step, 0, 0 */
 #define PF_LOC_WW_SEED 5       /* uint: the step number mixed with desc.seed (new numbers every step) */
 /* The whitewater's state record (uints): two DrawArraysIndirectCommand records of the live
- * particles (like PF_COUNT_*), then the count of the step's output while it is being built. */
+ * particles (like PF_COUNT_*), the count of the step's output while it is being built, then a
+ * DispatchIndirectCommand of one invocation per live particle (the per-particle passes). */
 #define PF_WW_LIVE 0
 #define PF_WW_STRIP_RECORD 4
 #define PF_WW_INSTANCES 5
 #define PF_WW_NEXT 8
+#define PF_WW_GROUPS 9
 #define PF_WW_WORDS 12
 
 /* The live-count record (8 words), kept on the GPU: two DrawArraysIndirectCommand records, so

@@ -10,33 +10,19 @@ layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
 layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_vel[]; };
 
-// Clamped trilinear interpolation of the face velocity at world position x (as in G2P).
-vec3 grid_velocity(vec3 x) {
-    vec3 g = grid_coord(x);
-    vec3 v;
-    for (int axis = 0; axis < 3; ++axis) {
-        Stencil st = face_stencil(axis, g);
-        float t[8];
-        for (int n = 0; n < 8; ++n) {
-            ivec3 d = stencil_offset(n);
-            t[n] = stencil_weight(st.frac, d) * face_vel[face_index(axis, st.base + d)];
-        }
-        v[axis] = mirror_sum(t);
-    }
-    return v;
-}
+#include "common/face_velocity.glsl"
 
 void main() {
     uint i = flat_id();
     if (i >= sim.particle_count) return;
     float dt = sim.dt;
     vec3 x0 = pos[i].xyz;
-    vec3 k1 = grid_velocity(x0);
-    vec3 k2 = grid_velocity(keep_in_domain(x0 + (0.5 * dt) * k1));
+    vec3 k1 = sample_velocity(x0);
+    vec3 k2 = sample_velocity(keep_in_domain(x0 + (0.5 * dt) * k1));
 #if PF_RK_ORDER == 2
     vec3 x = x0 + dt * k2;
 #elif PF_RK_ORDER == 3
-    vec3 k3 = grid_velocity(keep_in_domain(x0 + (0.75 * dt) * k2));
+    vec3 k3 = sample_velocity(keep_in_domain(x0 + (0.75 * dt) * k2));
     vec3 x = x0 + dt * ((2.0 / 9.0) * k1 + (1.0 / 3.0) * k2 + (4.0 / 9.0) * k3);
 #else
 #error PF_RK_ORDER must be 2 or 3

@@ -160,7 +160,8 @@ bool PassRunner::writes_indirect_records(gl::ProgramId id) {
         case gl::ProgramId::cg_matvec_jacobi:
         case gl::ProgramId::cg_matvec_stored:
         case gl::ProgramId::cg_zstats:
-        case gl::ProgramId::mg_smooth_zstats: return true;
+        case gl::ProgramId::mg_smooth_zstats:
+        case gl::ProgramId::ww_commit: return true;
         default: return false;
     }
 }

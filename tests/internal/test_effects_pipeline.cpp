@@ -18,7 +18,7 @@ const gl::ProgramId kEmitterPrograms[] = {gl::ProgramId::emit, gl::ProgramId::em
 const gl::ProgramId kDomainPrograms[] = {gl::ProgramId::domain_forces};
 const gl::ProgramId kVorticityPrograms[] = {gl::ProgramId::vorticity, gl::ProgramId::confinement_force};
 const gl::ProgramId kWhitewaterPrograms[] = {gl::ProgramId::ww_fraction, gl::ProgramId::ww_advect, gl::ProgramId::ww_emit,
-                                             gl::ProgramId::ww_commit};
+                                             gl::ProgramId::ww_commit, gl::ProgramId::ww_copy};
 const gl::ProgramId kSinkPrograms[] = {gl::ProgramId::sink_mark, gl::ProgramId::sink_lists, gl::ProgramId::sink_move,
                                        gl::ProgramId::sink_move_apic};
 

@@ -12,16 +12,7 @@ layout(std430, binding = PF_SLOT_VORTICITY) writeonly buffer Vorticity { vec4 vo
 
 bool fluid(ivec3 c) { return cell_inside(c) && PF_CELL_KIND(cell_type[cell_index(c)]) == PF_CELL_FLUID; }
 
-// The cell-centred velocity of cell c.
-vec3 centre_velocity(ivec3 c) {
-    vec3 u;
-    for (int a = 0; a < 3; ++a) {
-        ivec3 upper = c;
-        upper[a] += 1;
-        u[a] = 0.5 * (face_vel[face_index(a, c)] + face_vel[face_index(a, upper)]);
-    }
-    return u;
-}
+#include "common/face_velocity.glsl"
 
 void main() {
     int id = int(flat_id());

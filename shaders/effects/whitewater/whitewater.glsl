@@ -1,6 +1,7 @@
-// Helpers shared by the whitewater kernels (PF_FEATURE_WHITEWATER): the cell-centred and
-// interpolated liquid velocity, the kinds of whitewater particle and how the liquid around a
-// point decides a particle's kind.
+// Helpers shared by the whitewater kernels (PF_FEATURE_WHITEWATER): the liquid's velocity
+// (common/face_velocity.glsl; the face velocities reach a few cells into the air through the
+// extrapolation, so foam and spray near the surface see the liquid's motion), the kinds of
+// whitewater particle and how the liquid around a point decides a particle's kind.
 #include "common/sim.glsl"
 #include "common/hash.glsl"
 
@@ -16,34 +17,7 @@ const float kBubbleAbove = 0.9;
 
 layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_vel[]; };
 
-// The liquid's velocity at cell c's centre: the mean of its two faces on each lattice.
-vec3 centre_velocity(ivec3 c) {
-    vec3 u;
-    for (int a = 0; a < 3; ++a) {
-        ivec3 upper = c;
-        upper[a] += 1;
-        u[a] = 0.5 * (face_vel[face_index(a, c)] + face_vel[face_index(a, upper)]);
-    }
-    return u;
-}
-
-// The liquid's velocity at world point x: the clamped trilinear stencil of G2P. The face
-// velocities reach a few cells into the air (extrapolation), so foam and spray near the
-// surface see the liquid's motion.
-vec3 liquid_velocity(vec3 x) {
-    vec3 g = grid_coord(x);
-    vec3 v;
-    for (int axis = 0; axis < 3; ++axis) {
-        Stencil st = face_stencil(axis, g);
-        float t[8];
-        for (int n = 0; n < 8; ++n) {
-            ivec3 d = stencil_offset(n);
-            t[n] = stencil_weight(st.frac, d) * face_vel[face_index(axis, st.base + d)];
-        }
-        v[axis] = mirror_sum(t);
-    }
-    return v;
-}
+#include "common/face_velocity.glsl"
 
 float kind_for(float fraction) {
     return fraction < kSprayBelow ? PF_WW_SPRAY : (fraction > kBubbleAbove ? PF_WW_BUBBLE : PF_WW_FOAM);

@@ -32,7 +32,7 @@ void main() {
     if (kind == PF_WW_SPRAY) {
         v = (v + dt * g) / (1.0 + dt * u_motion.w);
     } else {
-        vec3 u = liquid_velocity(p.xyz);
+        vec3 u = sample_velocity(p.xyz);
         v = kind == PF_WW_FOAM ? u : u + (v - u) * exp(-u_motion.z * dt) - dt * u_motion.y * g;
     }
     vec3 x = p.xyz + dt * v;

@@ -95,6 +95,6 @@ void main() {
         vec3 x = corner + sim.dx * vec3(next_random(random), next_random(random), next_random(random));
         float life = mix(u_limits_b.z, u_limits_b.w, next_random(random));
         out_pos[first + uint(k)] = vec4(x, life);
-        out_vel[first + uint(k)] = vec4(liquid_velocity(x), kind);
+        out_vel[first + uint(k)] = vec4(sample_velocity(x), kind);
     }
 }

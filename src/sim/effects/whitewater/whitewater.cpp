@@ -16,7 +16,7 @@ WhitewaterEffect::WhitewaterEffect(const pf_sim_desc& desc)
 
 pf_result WhitewaterEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
     for (gl::ProgramId id : {gl::ProgramId::ww_fraction, gl::ProgramId::ww_advect, gl::ProgramId::ww_emit,
-                             gl::ProgramId::ww_commit}) {
+                             gl::ProgramId::ww_commit, gl::ProgramId::ww_copy}) {
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
@@ -45,7 +45,7 @@ void WhitewaterEffect::allocate() {
 }
 
 void WhitewaterEffect::clear() {
-    const uint32_t none[PF_WW_WORDS] = {0, 1, 0, 0, 4, 0, 0, 0, 0, 0, 0, 0};
+    const uint32_t none[PF_WW_WORDS] = {0, 1, 0, 0, 4, 0, 0, 0, 0, 0, 1, 1};
     state_.upload(0, sizeof(none), none);
     clear_ = false;
 }
@@ -66,13 +66,16 @@ void WhitewaterEffect::run(EffectStage stage, PassRunner& runner, const EffectBu
     const Bind face_vel{PF_SLOT_FACE_VEL, &b.face_vel}, cell_type{PF_SLOT_CELL_TYPE, &b.cell_type},
         fraction{PF_SLOT_WW_FRACTION, &fraction_}, out_pos{PF_SLOT_WW_OUT_POS, &out_pos_},
         out_vel{PF_SLOT_WW_OUT_VEL, &out_vel_}, state{PF_SLOT_WW_STATE, &state_}, status{PF_SLOT_WW_STATUS, &b.status};
+    const Bind pos{PF_SLOT_WW_IN_POS, &pos_}, vel{PF_SLOT_WW_IN_VEL, &vel_};
     const Uniform capacity = Uniform::uint1(PF_LOC_WW_CAPACITY, allocated_);
+    // The per-particle passes: one invocation per live particle (the last commit's record).
+    const Indirect live{&state_, PF_WW_GROUPS * 4};
     runner.run({gl::ProgramId::ww_fraction, stat_, b.cells, {cell_type, fraction}});
     runner.run({gl::ProgramId::ww_advect,
                 stat_,
-                allocated_,
-                {{PF_SLOT_WW_IN_POS, &pos_}, {PF_SLOT_WW_IN_VEL, &vel_}, face_vel, cell_type, fraction, out_pos, out_vel, state},
-                {},
+                0,
+                {pos, vel, face_vel, cell_type, fraction, out_pos, out_vel, state},
+                live,
                 {Uniform::vec4(PF_LOC_WW_MOTION, frame_dt_, w.bubble_buoyancy, w.bubble_drag, w.spray_drag)}});
     runner.run({gl::ProgramId::ww_emit,
                 stat_,
@@ -86,8 +89,7 @@ void WhitewaterEffect::run(EffectStage stage, PassRunner& runner, const EffectBu
                  Uniform::vec4(PF_LOC_WW_RATES, w.trapped_air_rate * frame_dt_, w.wave_crest_rate * frame_dt_, 0.0f, 0.0f),
                  Uniform::uint1(PF_LOC_WW_SEED, uint32_t(step_) * 0x9E3779B9u + seed_)}});
     runner.run({gl::ProgramId::ww_commit, stat_, 1, {state, status}, {}, {capacity}});
-    runner.copy(out_pos_, pos_, pos_.bytes());
-    runner.copy(out_vel_, vel_, vel_.bytes());
+    runner.run({gl::ProgramId::ww_copy, stat_, 0, {pos, vel, out_pos, out_vel, state}, live});
 }
 
 void WhitewaterEffect::buffers(pf_whitewater_buffers& out) const {

@@ -1,11 +1,12 @@
 // Whitewater (PF_FEATURE_WHITEWATER; after Ihmsen et al. 2012): spray, foam and bubbles made
 // where the liquid traps air, breaks at crests and moves fast, carried by the liquid without
-// acting on it. Once per step, after the last substep, four passes over the step's final grid
+// acting on it. Once per step, after the last substep, five passes over the step's final grid
 // (shaders/effects/whitewater/): the liquid fraction around each cell (ww_fraction.comp), last
 // step's particles aged, moved by their kind and compacted into a scratch pair of buffers
-// (ww_advect.comp), new particles appended there (ww_emit.comp) and the live count committed
-// (ww_commit.comp); two copies then bring the scratch pair back into the buffers engines and
-// the renderer read, so their names stay put. No readback: the count lives on the GPU and
+// (ww_advect.comp), new particles appended there (ww_emit.comp), the live count committed
+// (ww_commit.comp) and the live particles copied back into the buffers engines and the
+// renderer read, so their names stay put (ww_copy.comp; the per-particle passes are dispatched
+// indirectly, one invocation per live particle). No readback: the count lives on the GPU and
 // reaches pf_stats through the status words. Pass list entry "whitewater" in the PF_PASS_ADVECT
 // group (docs/effects.md).
 #pragma once
