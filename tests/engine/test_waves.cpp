@@ -4,10 +4,10 @@
 // ghost-fluid surface, design.md §4.6a), in thin tanks (1 and 2 cells) and a 3D one (8 cells): the
 // scheme never adds energy, and the amplitude lost per period and the period stay within their
 // bounds; the marker-cell surface (opt-in since 2026-11-26) in the 2-cell tank against its own
-// guards. CI's fast mode (12 minutes of its 2 cores before 2026-11-27) runs the issue's thin and 3D
+// guards. CI's fast mode (12 minutes of its 2 cores until 2026-11-26) runs the issue's thin and 3D
 // tank and the marker-cell surface at their smallest: the 1-cell tank (the largest energy rise
 // measured, 0.061 of the wave's), the 3D one 4 cells thick and the marker-cell surface 1 cell
-// thick (measured 2026-11-27: loss 21-30% a period, period 2.5-3.2% long, energy rise at most
+// thick (measured 2026-11-26: loss 21-30% a period, period 2.5-3.2% long, energy rise at most
 // 0.029 of the wave's); the 2-cell tank runs in the long mode only.
 //
 // Measured on llvmpipe (3 periods, 2026-11-25): on the code before issue 17 the fast preset's
