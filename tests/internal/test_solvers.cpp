@@ -63,6 +63,8 @@ struct Solved {
     std::vector<double> p;
     uint32_t iterations = 0;
     float reported_residual = 0;
+    bool bottom = false;        // multigrid: the bottom of the V-cycle ran in one workgroup (mg_bottom.comp)
+    bool coarse_solve = false;  // multigrid: the coarsest level ran on its own (mg_coarse_solve.comp)
 };
 
 struct SolverCase {
@@ -102,6 +104,8 @@ protected:
         out.p.assign(p.begin(), p.end());
         out.iterations = status[PF_STATUS_SOLVER_ITERATIONS];
         std::memcpy(&out.reported_residual, &status[PF_STATUS_SOLVER_RESIDUAL], 4);
+        out.bottom = sim.runner().program(gl::ProgramId::mg_bottom) != 0;
+        out.coarse_solve = sim.runner().program(gl::ProgramId::mg_coarse_solve) != 0;
         EXPECT_EQ(sim.runner().binding_errors(), 0u);
         return out;
     }
@@ -342,12 +346,25 @@ TEST_P(SolverLadder, MgpcgCoarsensFlatAndThinGrids) {
     }
 }
 
+// Whether mg_bottom.comp takes the bottom of a grid's hierarchy (multigrid.cpp's rule).
+bool bottom_in_one_workgroup(glm::ivec3 dims) {
+    std::vector<int> cells{dims.x * dims.y * dims.z};
+    while (cells.back() > PF_MG_COARSE_CELLS) {
+        dims = (dims + 1) / 2;
+        cells.push_back(dims.x * dims.y * dims.z);
+    }
+    return cells.size() >= 3 && cells[cells.size() - 2] <= PF_MG_BOTTOM_CELLS;
+}
+
 // The V-cycle against the double-precision reference V-cycle (reference/cpu_multigrid.cpp):
 // from p = 0, one MGPCG iteration gives x = alpha V(b), so the solution after one iteration is
 // V(b) up to CG's scalar. The fused kernels work on tiles (mg_down.comp, mg_up.comp) whose halos
 // are recomputed by neighbouring tiles: grids that are no multiple of a tile, two to four levels,
 // a flat grid (an axis that never coarsens), SOLID cells and the ghost-fluid surface term; the
-// fine level and coarse levels above PF_MG_FUSED_CELLS take the unfused passes.
+// fine level and coarse levels above PF_MG_FUSED_CELLS take the unfused passes. The level above
+// the coarsest runs with it in one workgroup (mg_bottom.comp) where it is not the fine level and
+// has at most PF_MG_BOTTOM_CELLS cells, else the coarsest level runs alone (mg_coarse_solve.comp):
+// both happen here, and which one each case took is checked.
 TEST_P(SolverLadder, VcycleMatchesTheReference) {
     struct Case {
         const char* name;
@@ -359,6 +376,7 @@ TEST_P(SolverLadder, VcycleMatchesTheReference) {
                             {"flat", bubbly_tank({96, 64, 1}, 6)},
                             {"fine_level_unfused", bubbly_tank({72, 48, 40}, 8)},
                             {"two_levels_unfused", bubbly_tank({128, 96, 96}, 9)},
+                            {"bottom_of_6859_cells", bubbly_tank({38, 38, 38}, 10)},
                             {"solid_and_ghost_fluid", bubbly_tank({40, 30, 20}, 7)}};
     Problem& last = cases.back().pb;
     std::mt19937 rng(11);
@@ -376,6 +394,10 @@ TEST_P(SolverLadder, VcycleMatchesTheReference) {
         const Solved s = solve_with(PF_PRESSURE_SOLVER_MGPCG, pb, 1e-9f, 1);
         ASSERT_EQ(s.p.size(), pb.rhs.size()) << tc.name;
         EXPECT_EQ(s.iterations, 1u) << tc.name;
+        const bool bottom = bottom_in_one_workgroup({pb.grid.nx, pb.grid.ny, pb.grid.nz});
+        EXPECT_EQ(s.bottom, bottom) << tc.name;
+        EXPECT_EQ(s.coarse_solve, !bottom) << tc.name;
+        RecordProperty(std::string("bottom_in_one_workgroup_") + tc.name, int(bottom));
         std::vector<double> b(pb.rhs.size()), extra;
         for (size_t c = 0; c < b.size(); ++c) b[c] = double(float(pb.rhs[c]));
         if (!pb.theta.empty()) extra = ref::surface_extra_diagonal(pb.grid, pb.type, pb.theta);

@@ -13,6 +13,9 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
     control_ = &control;
     glm::ivec3 dims = control.dims();
     levels_.clear();
+    // The bottom of the V-cycle in one workgroup (mg_bottom.comp) takes the level above the
+    // coarsest up to PF_MG_BOTTOM_CELLS cells.
+    const uint32_t bottom_cells = PF_MG_BOTTOM_CELLS;
     for (;;) {
         Level level;
         level.dims = dims;
@@ -38,10 +41,12 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         // wherever it holds most of the work (a large grid; a CPU rasteriser, which has no launch
         // cost to save).
         level.fused = !fine && level.cells <= PF_MG_FUSED_CELLS;
+        const uint64_t next_cells = uint64_t(next.x) * uint64_t(next.y) * uint64_t(next.z);
+        level.bottom = !fine && !last && level.cells <= bottom_cells && next_cells <= PF_MG_COARSE_CELLS;
         const bool finer_unfused = !fine && !levels_.back().fused;
         if (fine) level.record = control.record(0);
         else if (!level.fused || finer_unfused) level.record = control.record(control.add_record(level.cells));
-        if (!last && level.fused) {
+        if (!last && level.fused && !level.bottom) {
             level.down = control.record(control.add_record(tiles(next, PF_MG_DOWN_TILE) * PF_WORKGROUP_SIZE));
             if (!fine) level.up = control.record(control.add_record(tiles(dims, PF_MG_UP_TILE) * PF_WORKGROUP_SIZE));
         }
@@ -53,11 +58,14 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         return "multigrid: the coarsest level has " + std::to_string(levels_.back().cells) + " cells (more than " +
                std::to_string(PF_MG_COARSE_CELLS) + ")";
     std::vector<ProgramId> programs{ProgramId::mg_smooth_from_zero, ProgramId::mg_coarsen_types,
-                                    ProgramId::mg_prolong_smooth,   ProgramId::mg_smooth_zstats,
-                                    ProgramId::mg_coarse_solve,     ProgramId::cg_zstats};
-    // The passes of the levels above the coarsest, fused or not: only those built.
-    bool fused = false, unfused = false;
-    for (size_t l = 0; l + 1 < levels_.size(); ++l) (levels_[l].fused ? fused : unfused) = true;
+                                    ProgramId::mg_prolong_smooth, ProgramId::mg_smooth_zstats, ProgramId::cg_zstats};
+    // The passes of the levels above the coarsest, fused or not, and the bottom's: only those built.
+    bool fused = false, unfused = false, bottom = false;
+    for (size_t l = 0; l + 1 < levels_.size(); ++l) {
+        if (levels_[l].bottom) bottom = true;
+        else (levels_[l].fused ? fused : unfused) = true;
+    }
+    programs.push_back(bottom ? ProgramId::mg_bottom : ProgramId::mg_coarse_solve);
     if (fused) programs.insert(programs.end(), {ProgramId::mg_down, ProgramId::mg_down_start, ProgramId::mg_up});
     if (unfused) {
         programs.insert(programs.end(), {ProgramId::mg_smooth, ProgramId::mg_residual, ProgramId::mg_restrict,
@@ -100,6 +108,16 @@ void Multigrid::begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_ty
 void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_step) {
     const Level& level = levels_[l];
     const Uniform dims = SolveControl::dims_uniform(level.dims);
+    if (level.bottom) {
+        // This level and the coarsest in one workgroup (PF_WORKGROUP_SIZE invocations make one group).
+        runner.run({ProgramId::mg_bottom, stat, PF_WORKGROUP_SIZE,
+                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
+                     {PF_SLOT_MG_COARSE_TYPE, &levels_[l + 1].type}, {PF_SLOT_MG_TMP, &out_of(l)},
+                     {PF_SLOT_SOLVER_STATE, &control_->state()}},
+                    {},
+                    {dims, coarse_dims(levels_[l + 1])}});
+        return;
+    }
     if (coarsest(l)) {
         // One workgroup (of PF_MG_COARSE_INVOCATIONS): PF_WORKGROUP_SIZE invocations make one group.
         runner.run({ProgramId::mg_coarse_solve, stat, PF_WORKGROUP_SIZE,

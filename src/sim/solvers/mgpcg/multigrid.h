@@ -20,7 +20,10 @@
 // (mg_restrict.comp), the correction with the black half-sweep (mg_prolong_smooth.comp) and the
 // red one. The fine
 // level's last red half-sweep carries CG's sums of z (mg_smooth_zstats.comp). On the H100 each
-// pass costs a few microseconds of launch and barrier whatever its size.
+// pass costs a few microseconds of launch and barrier whatever its size, so the level above the
+// coarsest, when it is not the fine one and has at most PF_MG_BOTTOM_CELLS cells, runs its way
+// down, the coarsest level's sweeps and its way up in one workgroup (mg_bottom.comp): one
+// dispatch for three.
 #pragma once
 #include <vector>
 
@@ -43,6 +46,7 @@ private:
         glm::ivec3 dims{0};
         uint32_t cells = 0;
         bool fused = false;     // small enough for the fused kernels (PF_MG_FUSED_CELLS)
+        bool bottom = false;    // the level above the coarsest, both in one workgroup (mg_bottom.comp)
         Indirect record{};      // the level's cells (the fine level's, or an unfused pass's)
         Indirect down{}, up{};  // a fused level's mg_down (over the next level's tiles) and mg_up
         // type, r: the level's system; e: the correction while pre-smoothing; out: the residual
