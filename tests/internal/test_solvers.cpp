@@ -361,9 +361,7 @@ bool bottom_in_one_workgroup(glm::ivec3 dims) {
 // V(b) up to CG's scalar. The fused kernels work on tiles (mg_down.comp, mg_up.comp) whose halos
 // are recomputed by neighbouring tiles: grids that are no multiple of a tile, two to four levels,
 // a flat grid (an axis that never coarsens), SOLID cells and the ghost-fluid surface term; the
-// fine level and coarse levels above PF_MG_FUSED_CELLS take the unfused passes (a fine level of
-// at most PF_MG_FUSED_CELLS cells its residual and restriction in one tiled pass, the others in
-// two: both here). The level above
+// fine level and coarse levels above PF_MG_FUSED_CELLS take the unfused passes. The level above
 // the coarsest runs with it in one workgroup (mg_bottom.comp) where it is not the fine level and
 // has at most PF_MG_BOTTOM_CELLS cells, else the coarsest level runs alone (mg_coarse_solve.comp):
 // both happen here, and which one each case took is checked.

@@ -11,13 +11,6 @@
 // e holds the red half-sweep from zero (written with r by the pass that made r: CG's update on
 // the fine grid, this kernel's PF_MG_START on coarser ones); its black cells are not read. The
 // arithmetic per cell is the unfused passes' (same terms, same order).
-// PF_MG_SWEPT 1, on a fine level of at most PF_MG_FUSED_CELLS cells: its black half-sweep ran as
-// a pass of its own (the fine level's red values are CG's, and its way up carries CG's sums), so
-// e holds the whole pre-smoothing; the tile stages every FLUID value with a halo of two and only
-// forms the residuals and restricts them (mg_residual.comp and mg_restrict.comp in one).
-#ifndef PF_MG_SWEPT
-#define PF_MG_SWEPT 0
-#endif
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
 #include "solvers/mgpcg/multigrid_limits.h"
@@ -34,10 +27,7 @@ layout(std430, binding = PF_SLOT_MG_COARSE_E) writeonly buffer CoarseE { float c
 #include "solvers/mgpcg/multigrid.glsl"
 
 const int kTile = PF_MG_DOWN_TILE;
-// Fine cells staged on each side of the tile's own: the restriction's reach, its residuals'
-// stencils and, unless swept, the black half-sweep's.
-const int kHalo = PF_MG_SWEPT != 0 ? 2 : 3;
-const int kStaged = 2 * kTile + 2 * kHalo;  // fine cells per axis of the staged types and e
+const int kStaged = 2 * kTile + 6;    // fine cells per axis of the staged types and e
 const int kResidual = 2 * kTile + 2;  // fine cells per axis of the residuals restricted
 shared uint s_type[kStaged * kStaged * kStaged];
 shared float s_e[kStaged * kStaged * kStaged];
@@ -50,12 +40,11 @@ void main() {
     int g = int(workgroup_index());
     if (g >= tiles.x * tiles.y * tiles.z) return;  // uniform across the workgroup
     ivec3 c0 = tile_coord(g, tiles) * kTile;
-    ivec3 origin = 2 * c0 - kHalo;  // fine coordinates of s_type[0]
+    ivec3 origin = 2 * c0 - 3;  // fine coordinates of s_type[0]
     int lid = int(gl_LocalInvocationIndex);
 
     // Stage types (outside the level: SOLID, which the stencil leaves out as poisson.glsl does)
-    // and e's red FLUID values (everything else 0: the sweep started from zero), or every FLUID
-    // value once swept.
+    // and e's red FLUID values (everything else 0: the sweep started from zero).
     for (int i = lid; i < kStaged * kStaged * kStaged; i += PF_MG_TILE_INVOCATIONS) {
         ivec3 f = origin + tile_local(i, kStaged);
         uint word = uint(PF_CELL_SOLID);
@@ -63,18 +52,16 @@ void main() {
         if (level_inside(f)) {
             int c = level_index(f);
             word = cell_type[c];
-            if (PF_CELL_KIND(word) == PF_CELL_FLUID && (PF_MG_SWEPT != 0 || ((f.x + f.y + f.z) & 1) == 0))
-                value = e[c];
+            if (PF_CELL_KIND(word) == PF_CELL_FLUID && ((f.x + f.y + f.z) & 1) == 0) value = e[c];
         }
         s_type[i] = word;
         s_e[i] = value;
     }
     barrier();
 
-    const int steps[6] = tile_steps(kStaged);
-#if !PF_MG_SWEPT
     // The black half-sweep, one cell inside the staged region (in place: black cells read only
     // red neighbours, which nothing here writes).
+    const int steps[6] = tile_steps(kStaged);
     for (int i = lid; i < (kStaged - 2) * (kStaged - 2) * (kStaged - 2); i += PF_MG_TILE_INVOCATIONS) {
         ivec3 local = tile_local(i, kStaged - 2) + 1;
         ivec3 f = origin + local;
@@ -86,11 +73,10 @@ void main() {
         s_e[s] = diag > 0.0 ? (r[level_index(f)] + pair_total(pair_sum)) / diag : 0.0;
     }
     barrier();
-#endif
 
     // Residuals of the fine cells the tile's coarse cells gather (0 where not FLUID).
     for (int i = lid; i < kResidual * kResidual * kResidual; i += PF_MG_TILE_INVOCATIONS) {
-        ivec3 local = tile_local(i, kResidual) + (kHalo - 1);
+        ivec3 local = tile_local(i, kResidual) + 2;
         int s = tile_index(local, kStaged);
         float res = 0.0;
         if (PF_CELL_KIND(s_type[s]) == PF_CELL_FLUID) {

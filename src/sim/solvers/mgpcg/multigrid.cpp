@@ -34,27 +34,22 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
             level.out = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_out");
             if (!last) level.e = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_e");
         }
-        // Indirect records, which convergence zeroes: mg_down's and mg_up's tiles on a fused
-        // level (mg_down's on a swept one); the level's cells where an unfused pass works on them
-        // (its own passes, the restriction from a finer level that takes two passes). At most
-        // 3 + 2 per level (solver_state.h).
+        // Indirect records, which convergence zeroes: mg_down's and mg_up's tiles on a fused level;
+        // the level's cells where an unfused pass works on them (its own passes, the restriction
+        // from an unfused finer level). At most 3 + 2 per level (solver_state.h).
         // The fine level never: its tiles' repeated halo work costs more than its launches save
         // wherever it holds most of the work (a large grid; a CPU rasteriser, which has no launch
         // cost to save).
         level.fused = !fine && level.cells <= PF_MG_FUSED_CELLS;
         const uint64_t next_cells = uint64_t(next.x) * uint64_t(next.y) * uint64_t(next.z);
         level.bottom = !fine && !last && level.cells <= bottom_cells && next_cells <= PF_MG_COARSE_CELLS;
-        // A fine level that small forms its residual and restricts it in one tiled pass after its
-        // black half-sweep (mg_down.comp's PF_MG_SWEPT); larger ones keep the two passes, whose
-        // work a tile's halo would repeat (docs/performance.md, issue 18 step 7).
-        level.swept = fine && !last && level.cells <= PF_MG_FUSED_CELLS;
-        const bool finer_two_passes = !fine && !levels_.back().fused && !levels_.back().swept;
+        const bool finer_unfused = !fine && !levels_.back().fused;
         if (fine) level.record = control.record(0);
-        else if (!level.fused || finer_two_passes) level.record = control.record(control.add_record(level.cells));
-        if (!last && (level.fused || level.swept) && !level.bottom)
+        else if (!level.fused || finer_unfused) level.record = control.record(control.add_record(level.cells));
+        if (!last && level.fused && !level.bottom) {
             level.down = control.record(control.add_record(tiles(next, PF_MG_DOWN_TILE) * PF_WORKGROUP_SIZE));
-        if (!last && level.fused && !level.bottom)
-            level.up = control.record(control.add_record(tiles(dims, PF_MG_UP_TILE) * PF_WORKGROUP_SIZE));
+            if (!fine) level.up = control.record(control.add_record(tiles(dims, PF_MG_UP_TILE) * PF_WORKGROUP_SIZE));
+        }
         levels_.push_back(std::move(level));
         if (last) break;
         dims = next;
@@ -73,9 +68,8 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
     programs.push_back(bottom ? ProgramId::mg_bottom : ProgramId::mg_coarse_solve);
     if (fused) programs.insert(programs.end(), {ProgramId::mg_down, ProgramId::mg_down_start, ProgramId::mg_up});
     if (unfused) {
-        programs.insert(programs.end(), {ProgramId::mg_smooth});
-        if (levels_[0].swept) programs.insert(programs.end(), {ProgramId::mg_down_swept, ProgramId::mg_down_swept_start});
-        else programs.insert(programs.end(), {ProgramId::mg_residual, ProgramId::mg_restrict, ProgramId::mg_restrict_start});
+        programs.insert(programs.end(), {ProgramId::mg_smooth, ProgramId::mg_residual, ProgramId::mg_restrict,
+                                         ProgramId::mg_restrict_start});
     }
     for (ProgramId id : programs) {
         if (std::string error = runner.prepare(id); !error.empty()) return error;
@@ -135,10 +129,8 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
     }
     const Level& coarse = levels_[l + 1];
     // e holds the red half-sweep from zero (made with r); the black one completes the
-    // pre-smoothing, and its residual is restricted: one pass on a fused level (mg_down.comp);
-    // on an unfused one the black half-sweep, then the residual and the restriction in two
-    // passes, or in one tiled pass on a small fine level (PF_MG_SWEPT).
-    if (!level.fused && !level.swept) {
+    // pre-smoothing, and its residual is restricted: one pass on a fused level (mg_down.comp).
+    if (!level.fused) {
         half_sweep(runner, stat, l, e_of(l), 1u);
         runner.run({ProgramId::mg_residual, stat, 0,
                     {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
@@ -156,22 +148,6 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
                         {{PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
                          {PF_SLOT_MG_COARSE_R, &coarse.r}, {PF_SLOT_MG_COARSE_E, &coarse.e}},
                         coarse.record,
-                        {dims, coarse_dims(coarse)}});
-        }
-    } else if (level.swept) {
-        half_sweep(runner, stat, l, e_of(l), 1u);
-        if (coarsest(l + 1)) {
-            runner.run({ProgramId::mg_down_swept, stat, 0,
-                        {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
-                         {PF_SLOT_MG_COARSE_TYPE, &coarse.type}, {PF_SLOT_MG_COARSE_R, &coarse.r}},
-                        level.down,
-                        {dims, coarse_dims(coarse)}});
-        } else {
-            runner.run({ProgramId::mg_down_swept_start, stat, 0,
-                        {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
-                         {PF_SLOT_MG_COARSE_TYPE, &coarse.type}, {PF_SLOT_MG_COARSE_R, &coarse.r},
-                         {PF_SLOT_MG_COARSE_E, &coarse.e}},
-                        level.down,
                         {dims, coarse_dims(coarse)}});
         }
     } else if (coarsest(l + 1)) {

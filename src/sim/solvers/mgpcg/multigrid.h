@@ -47,7 +47,6 @@ private:
         uint32_t cells = 0;
         bool fused = false;     // small enough for the fused kernels (PF_MG_FUSED_CELLS)
         bool bottom = false;    // the level above the coarsest, both in one workgroup (mg_bottom.comp)
-        bool swept = false;     // a small fine level: residual and restriction in one tiled pass
         Indirect record{};      // the level's cells (the fine level's, or an unfused pass's)
         Indirect down{}, up{};  // a fused level's mg_down (over the next level's tiles) and mg_up
         // type, r: the level's system; e: the correction while pre-smoothing; out: the residual
