@@ -13,9 +13,6 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
     control_ = &control;
     glm::ivec3 dims = control.dims();
     levels_.clear();
-    // The bottom of the V-cycle in one workgroup (mg_bottom.comp) takes the level above the
-    // coarsest up to PF_MG_BOTTOM_CELLS cells.
-    const uint32_t bottom_cells = PF_MG_BOTTOM_CELLS;
     for (;;) {
         Level level;
         level.dims = dims;
@@ -42,7 +39,8 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         // cost to save).
         level.fused = !fine && level.cells <= PF_MG_FUSED_CELLS;
         const uint64_t next_cells = uint64_t(next.x) * uint64_t(next.y) * uint64_t(next.z);
-        level.bottom = !fine && !last && level.cells <= bottom_cells && next_cells <= PF_MG_COARSE_CELLS;
+        // The bottom of the V-cycle in one workgroup (mg_bottom.comp): the level above the coarsest.
+        level.bottom = !fine && !last && level.cells <= PF_MG_BOTTOM_CELLS && next_cells <= PF_MG_COARSE_CELLS;
         const bool finer_unfused = !fine && !levels_.back().fused;
         if (fine) level.record = control.record(0);
         else if (!level.fused || finer_unfused) level.record = control.record(control.add_record(level.cells));
