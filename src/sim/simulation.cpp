@@ -530,6 +530,20 @@ pf_result Simulation::run_substep_for_test(float dt) {
     return PF_OK;
 }
 
+pf_result Simulation::run_effect_stages_for_test(std::initializer_list<EffectStage> stages, float dt) {
+    run_one_step_for_test(dt, [&] {
+        EffectBuffers buffers = effect_buffers();
+        buffers.projector = nullptr;  // the effects' own passes alone
+        for (EffectStage stage : stages) {
+            for (uint32_t i = 0; i < kEffectCount; ++i) {
+                if ((desc_.features & (1u << i)) && (effects_[i]->stages() & stage_bit(stage)))
+                    effects_[i]->run(stage, *runner_, buffers);
+            }
+        }
+    });
+    return PF_OK;
+}
+
 pf_result Simulation::run_volume_correction_for_test() {
     run_one_step_for_test(0.01f, [&] {
         volume_correction_.run(*runner_, *solver_, desc_.params,
@@ -607,6 +621,7 @@ void Simulation::read_status_slot(int s) const {
     if (fence_step_[s] > flags_cleared_at_step_) raise_flags(words[PF_STATUS_FLAGS]);
     if (fence_step_[s] > status_step_) {
         status_step_ = fence_step_[s];
+        std::copy(std::begin(words), std::end(words), status_words_.begin());
         std::memcpy(&gpu_max_speed_, &words[PF_STATUS_MAX_SPEED], sizeof(float));
         solver_iterations_ = words[PF_STATUS_SOLVER_ITERATIONS];
         recent_iterations_ = words[PF_STATUS_SOLVER_FIRST_ROUND];
@@ -871,7 +886,8 @@ pf_result Simulation::set_features(uint32_t features, const char* fn) {
 void Simulation::begin_effects_step(float frame_dt) {
     bool work = false, changes = false;
     uint64_t added = 0;
-    const FrameInfo frame{frame_dt, steps_, std::pow(double(desc_.cell_size), 3) / desc_.fill_particles_per_cell};
+    const FrameInfo frame{frame_dt, steps_, std::pow(double(desc_.cell_size), 3) / desc_.fill_particles_per_cell,
+                          status_words_.data(), status_step_};
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (!(desc_.features & (1u << i))) continue;
         effects_[i]->begin_frame(frame);
@@ -905,7 +921,24 @@ EffectBuffers Simulation::effect_buffers() const {
     return EffectBuffers{pos_,         vel_,       face_accum_,   face_vel_,
                          face_vel_old_, cell_type_, count_record_, status_,
                          apic ? &affine_ : nullptr, pressure_, particle_count_, uint64_t(cells_),
-                         uint64_t(faces_), step_substeps_};
+                         uint64_t(faces_), step_substeps_, this};
+}
+
+void Simulation::project(PassRunner& runner, const gl::Buffer& potential, const gl::Buffer& report, StatId stat,
+                         uint32_t recent_iterations, float recent_residual) const {
+    const PassRunner::StatScope as_effect(runner, stat);
+    runner.run({ProgramId::pressure_setup, stat, uint64_t(cells_),
+                {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
+                 {PF_SLOT_PRESSURE, &potential}}});
+    pf_sim_params params = desc_.params;
+    params.separation = 0;  // a correction of either sign, not a pressure
+    solver_->solve(runner, PressureProblem{cell_type_, rhs_, potential, report, params, recent_iterations,
+                                           kUnknownIterations,
+                                           recent_residual >= 0.0f && recent_residual <= params.pressure_tolerance,
+                                           recent_residual});
+    runner.run({ProgramId::velocity_update, stat, uint64_t(faces_),
+                {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &potential},
+                 {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
 }
 
 void Simulation::end_effects_step() {

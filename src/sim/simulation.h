@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,7 +29,7 @@ namespace pf {
 // Grid buffers tests may read back (raw 32-bit words).
 enum class GridBuffer { face_accum, face_vel, face_vel_old, face_valid, face_fraction, cell_count, cell_type, pressure, rhs, status };
 
-class Simulation {
+class Simulation : private Projector {
 public:
     // Loads GL through desc.gl_get_proc_address, checks GL 4.3, allocates and compiles.
     // `desc` must already be validated and have defaults resolved.
@@ -103,6 +104,10 @@ public:
     // Test access: one substep of length dt exactly (no CFL logic, no volume correction), and
     // raw grid words.
     pf_result run_substep_for_test(float dt);
+    // Test access: the passes the effects that are on run at `stages`, in that order, on the grid
+    // as it is (set it with write_grid_for_test), in one step of one substep of length dt; an
+    // effect that asks for the projection again gets none.
+    pf_result run_effect_stages_for_test(std::initializer_list<EffectStage> stages, float dt);
     // Test access: the volume correction alone, on the cell types and counts as they are (set
     // them with write_grid_for_test); its potential is read with read_volume_potential.
     pf_result run_volume_correction_for_test();
@@ -180,6 +185,9 @@ private:
     void begin_effects_step(float frame_dt);
     // The effects' buffers and sizes for this substep.
     EffectBuffers effect_buffers() const;
+    // Projector: the projection again, for an effect that changed the velocities after it.
+    void project(PassRunner& runner, const gl::Buffer& potential, const gl::Buffer& report, StatId stat,
+                 uint32_t recent_iterations, float recent_residual) const override;
     // Runs the once-per-step stage `stage` (emitters, sinks, whitewater), then, while the GPU
     // keeps the live count, hands it to the kernels' uniform block.
     void run_count_stage(EffectStage stage);
@@ -252,6 +260,7 @@ private:
     uint64_t added_total_ = 0;    // particles added so far (pf_add_particles, emitters' requests)
     mutable uint32_t readback_count_ = 0;  // live count of the newest readback
     mutable uint32_t whitewater_count_ = 0;  // live whitewater particles of the newest readback
+    mutable std::array<uint32_t, PF_STATUS_WORDS> status_words_{};  // the newest readback's words (effects read theirs)
     // grid
     int32_t cells_ = 0;
     std::array<int32_t, 3> face_counts_{};

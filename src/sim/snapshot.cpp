@@ -24,7 +24,8 @@ namespace {
 constexpr char kMagic[8] = {'p', 'f', 'l', 'i', 'p', 's', 'n', 'p'};
 // 2: the status words gained PF_STATUS_INTERIOR_DENSITY (14 words, 2026-11-24).
 // 3: and PF_STATUS_WHITEWATER_COUNT (16 words, 2026-11-26).
-constexpr uint32_t kFormat = 3;
+// 4: the host state holds the newest status words read back, which effects learn from (2026-11-27).
+constexpr uint32_t kFormat = 4;
 
 struct Header {
     char magic[8];
@@ -81,6 +82,8 @@ struct Simulation::SnapshotState {
     int64_t cfl_step;
     float cfl_speed;
     StepStatus received[kReadbackSlots];
+    // The newest status words read back, which effects learn from (FrameInfo::status).
+    uint32_t status_words[PF_STATUS_WORDS];
 };
 
 std::vector<uint8_t> Simulation::snapshot_host_state() const {
@@ -110,6 +113,7 @@ std::vector<uint8_t> Simulation::snapshot_host_state() const {
     s.cfl_step = cfl_step_;
     s.cfl_speed = cfl_speed_;
     for (int k = 0; k < kReadbackSlots; ++k) s.received[k] = received_[k];
+    std::copy(status_words_.begin(), status_words_.end(), std::begin(s.status_words));
     w.put(s);
     w.put(kEffectCount);
     for (uint32_t i = 0; i < kEffectCount; ++i) {
@@ -312,6 +316,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     added_at_step_ = rebase_signed(s.added_at_step);
     cfl_step_ = rebase_signed(s.cfl_step);
     cfl_speed_ = s.cfl_speed;
+    std::copy(std::begin(s.status_words), std::end(s.status_words), status_words_.begin());
     for (StepStatus& r : received_) r = StepStatus{};
     for (const StepStatus& saved : s.received) {
         if (saved.valid == 0) continue;

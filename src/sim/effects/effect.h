@@ -22,8 +22,24 @@
 #include "pf/pf.h"
 #include "sim/pass_runner.h"
 #include "sim/snapshot_io.h"
+#include "sim/solvers/pressure_solver.h"
 
 namespace pf {
+
+// The pressure projection, offered to effects that change the velocities after it.
+class Projector {
+public:
+    virtual ~Projector() = default;
+    // Makes the face velocities divergence-free again: the pressure setup, a solve (without
+    // separation) and the velocity update, with `potential` (a value per cell, the effect's own;
+    // its values are the solve's starting guess) as the pressure and `report` (PF_STATUS_WORDS) as the solver's
+    // status buffer, so the substep's pressure and the step's solver figures stay the first
+    // projection's. `recent_iterations` and `recent_residual` are what such solves needed and
+    // reached lately, read back from `report` (kUnknownIterations and -1 until known): the
+    // solver issues that need and a margin, not its cap. Counted and timed as entry `stat`.
+    virtual void project(PassRunner& runner, const gl::Buffer& potential, const gl::Buffer& report, StatId stat,
+                         uint32_t recent_iterations, float recent_residual) const = 0;
+};
 
 // The simulation's buffers an effect's passes may bind, and their sizes in this substep.
 struct EffectBuffers {
@@ -41,6 +57,7 @@ struct EffectBuffers {
                                    // while the GPU keeps it: kernels compare with sim.particle_count)
     uint64_t cells = 0, faces = 0;
     uint32_t substeps = 1;         // substeps of the current step
+    const Projector* projector = nullptr;  // the simulation's pressure projection
 };
 
 // What an effect learns at the start of each pf_step.
@@ -48,6 +65,9 @@ struct FrameInfo {
     float frame_dt = 0.0f;          // s
     uint64_t step = 0;              // pf_step number (1 for the first)
     double particle_volume = 0.0;   // m^3 of liquid one particle stands for at rest density
+    const uint32_t* status = nullptr;  // the newest status words read back (PF_STATUS_WORDS of them,
+                                       // shaders/common/slots.h), measured at step status_step
+    uint64_t status_step = 0;       // 0: none read back yet
 };
 
 // The points of a step (docs/design.md §4) where effects add passes, in step order: the
