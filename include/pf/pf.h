@@ -280,9 +280,14 @@ enum {
                                           traps air, breaks at crests and moves fast; carried by the liquid
                                           without acting on it, aged and removed on the GPU (four passes and two
                                           buffer copies per step), drawn by pf_render_ssf */
+    PF_FEATURE_VISCOSITY = 1u << 7, /**< pf_set_viscosity: a viscous liquid, water to honey and beyond (per
+                                         substep an implicit solve over the faces after the pressure
+                                         projection, three passes per conjugate-gradient iteration, and the
+                                         projection again) */
     PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES | PF_FEATURE_EMITTERS |
                      PF_FEATURE_SINKS | PF_FEATURE_DOMAIN_MOTION |
-                     PF_FEATURE_VORTICITY_CONFINEMENT | PF_FEATURE_WHITEWATER /**< every known feature bit */
+                     PF_FEATURE_VORTICITY_CONFINEMENT | PF_FEATURE_WHITEWATER |
+                     PF_FEATURE_VISCOSITY /**< every known feature bit */
 };
 
 /** @} */
@@ -455,6 +460,12 @@ typedef struct pf_stats {
                                            (PF_FEATURE_WHITEWATER; 0 while it is off) */
     float render_whitewater_gpu_ms;   /**< GPU ms of the whitewater layer in render call render_frame
                                            (included in render_gpu_total_ms) */
+    uint32_t viscosity_iterations;    /**< most viscosity iterations of a substep in step metrics_step
+                                           (PF_FEATURE_VISCOSITY; 0 while it is off) */
+    float viscosity_residual;         /**< largest final relative residual |r| / |r0| of a viscosity solve in
+                                           that step: above pf_viscosity.tolerance when a solve stopped short
+                                           (out of iterations, or issued fewer than it needed: the next steps
+                                           issue more) (0 while it is off) */
 } pf_stats;
 
 /** One entry of the per-pass statistics list (pf_get_pass_stats). The list is built at run
@@ -1056,6 +1067,48 @@ static inline pf_whitewater pf_default_whitewater(void) {
 PF_API pf_result pf_set_whitewater(pf_sim* sim, const pf_whitewater* whitewater);
 /** The whitewater parameters last set (pf_default_whitewater() if never). */
 PF_API pf_result pf_get_whitewater(const pf_sim* sim, pf_whitewater* out);
+
+/** Viscosity (PF_FEATURE_VISCOSITY; the variational form of Batty & Bridson 2008): each substep,
+ *  after the pressure projection, the face velocities u* become the u that minimises
+ *  (rho/2)|u - u*|^2 + dt * mu * |strain rate of u|^2 over the liquid, solved implicitly by
+ *  conjugate gradients (Jacobi-preconditioned) on the GPU, so it is stable at any viscosity and time
+ *  step and only removes energy. The liquid sticks to the domain's walls and to obstacles unless
+ *  free_slip is set; its free surface is stress-free (shear stress where a cell edge touches air is
+ *  left out). The projection then runs again, so the velocities stay divergence-free (its cost is
+ *  pass entry viscosity_projection). The solve has its own state: it never writes the pressure
+ *  solver's status (pf_stats.viscosity_iterations and viscosity_residual report it). Start from
+ *  pf_default_viscosity(). */
+typedef struct pf_viscosity {
+    uint32_t struct_size;         /**< sizeof(pf_viscosity) as the caller compiled it (pf_default_viscosity()
+                                       sets it; 0: zero-initialised, every zero field takes its default) */
+    float viscosity;              /**< dynamic viscosity mu in Pa s, above 0 and at most 1e5; default 1
+                                       (about glycerine's). Water is 1e-3, olive oil 0.08, honey 2..10, molten lava
+                                       1e2..1e4 */
+    uint32_t iterations;          /**< most conjugate-gradient iterations per substep, 1..1000; default 60
+                                       (each is three passes; a solve stops on the GPU once it meets the
+                                       tolerance, and steps issue what recent solves needed plus a margin) */
+    float tolerance;              /**< relative residual at which the solve stops, 1e-8..0.5; default 1e-3 */
+    uint32_t free_slip;           /**< 0 (default): the liquid sticks to the domain's walls and to obstacles (no
+                                       slip); 1: it slides along them (no shear stress at a wall) */
+} pf_viscosity;
+
+/** Writes the default viscosity for a caller whose pf_viscosity is struct_size bytes (see the ABI
+ *  rules at the top): the first struct_size bytes only. PF_ERROR_INVALID_ARGUMENT for a NULL out or a
+ *  struct_size below 4 or not a multiple of 4. Any thread. */
+PF_API pf_result pf_init_viscosity(pf_viscosity* out, uint32_t struct_size);
+/** Viscosity 1 Pa s, 60 iterations, tolerance 1e-3, no slip, struct_size set. */
+static inline pf_viscosity pf_default_viscosity(void) {
+    pf_viscosity v;
+    pf_init_viscosity(&v, (uint32_t)sizeof v);
+    return v;
+}
+/** Sets the viscosity for the next pf_step. It may be set while PF_FEATURE_VISCOSITY is off (it acts
+ *  once it is on). PF_ERROR_INVALID_ARGUMENT for NULL, a viscosity not finite, not above 0 or above
+ *  1e5 Pa s, iterations outside 1..1000, a tolerance outside 1e-8..0.5, or free_slip other than 0 or
+ *  1 (logged; nothing changes). */
+PF_API pf_result pf_set_viscosity(pf_sim* sim, const pf_viscosity* viscosity);
+/** The viscosity last set (pf_default_viscosity() if never). */
+PF_API pf_result pf_get_viscosity(const pf_sim* sim, pf_viscosity* out);
 
 /** @} */
 

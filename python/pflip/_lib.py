@@ -118,6 +118,9 @@ _PROTOTYPES = {
     "pf_init_whitewater": (t.c_enum, [_P(t.Whitewater), ctypes.c_uint32]),
     "pf_set_whitewater": (t.c_enum, [_sim, _P(t.Whitewater)]),
     "pf_get_whitewater": (t.c_enum, [_sim, _P(t.Whitewater)]),
+    "pf_init_viscosity": (t.c_enum, [_P(t.Viscosity), ctypes.c_uint32]),
+    "pf_set_viscosity": (t.c_enum, [_sim, _P(t.Viscosity)]),
+    "pf_get_viscosity": (t.c_enum, [_sim, _P(t.Viscosity)]),
     "pf_get_obstacle_force": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.ObstacleForce)]),
 }
 

@@ -120,7 +120,8 @@ class Feature(enum.IntFlag):
     DOMAIN_MOTION = 1 << 4
     VORTICITY_CONFINEMENT = 1 << 5
     WHITEWATER = 1 << 6
-    ALL = FORCE_FIELDS | OBSTACLES | EMITTERS | SINKS | DOMAIN_MOTION | VORTICITY_CONFINEMENT | WHITEWATER
+    VISCOSITY = 1 << 7
+    ALL = FORCE_FIELDS | OBSTACLES | EMITTERS | SINKS | DOMAIN_MOTION | VORTICITY_CONFINEMENT | WHITEWATER | VISCOSITY
 
 
 class ForceFieldType(enum.IntEnum):
@@ -332,6 +333,8 @@ class Stats(_Struct):
         ("gpu_particle_bytes", ctypes.c_uint64),
         ("whitewater_count", ctypes.c_uint32),
         ("render_whitewater_gpu_ms", ctypes.c_float),
+        ("viscosity_iterations", ctypes.c_uint32),
+        ("viscosity_residual", ctypes.c_float),
     ]
 
 
@@ -618,6 +621,30 @@ class Whitewater(_Struct):
     ]
 
 
+class Viscosity(_Struct):
+    """pf_viscosity (Feature.VISCOSITY): a viscous liquid, solved implicitly each substep after the
+    pressure projection (which then runs again). viscosity is the dynamic viscosity in Pa s (water 1e-3, honey 2..10), above 0
+    and at most 1e5; iterations 1..1000 caps the conjugate-gradient iterations of a substep;
+    tolerance 1e-8..0.5 is the relative residual that ends the solve; free_slip 1 lets the liquid
+    slide along walls and obstacles (0: it sticks). Start from Viscosity.default(): 1 Pa s, 60
+    iterations, tolerance 1e-3, no slip."""
+
+    @classmethod
+    def default(cls):
+        """pf_default_viscosity()."""
+        out = cls()
+        _lib().pf_init_viscosity(ctypes.byref(out), ctypes.sizeof(out))  # sets struct_size
+        return out
+
+    _fields_ = [
+        ("struct_size", ctypes.c_uint32),
+        ("viscosity", ctypes.c_float),
+        ("iterations", ctypes.c_uint32),
+        ("tolerance", ctypes.c_float),
+        ("free_slip", ctypes.c_uint32),
+    ]
+
+
 # C name of each mirrored struct, for the layout test.
 C_NAMES = {
     Logger: "pf_logger",
@@ -638,6 +665,7 @@ C_NAMES = {
     DomainMotion: "pf_domain_motion",
     VorticityConfinement: "pf_vorticity_confinement",
     Whitewater: "pf_whitewater",
+    Viscosity: "pf_viscosity",
     ObstacleForce: "pf_obstacle_force",
 }
 

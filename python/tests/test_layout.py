@@ -127,23 +127,40 @@ def test_every_entry_point_of_the_header_has_a_prototype():
     assert sorted(set(_lib._PROTOTYPES) - functions) == [], "prototypes in pflip/_lib.py of no pf.h entry point"
 
 
+def check_appended(c_layout, cls, c_name, after, appended):
+    """The fields appended follow field after in cls as in C, each 4 bytes at the next offset, so
+    the offsets an older caller knows stay."""
+    names = [name for name, _ in cls._fields_]
+    i = names.index(after)
+    assert names[i:i + len(appended) + 1] == [after] + appended, c_name
+    offset, size = c_layout[("field", f"{c_name}.{after}")]
+    for name in appended:
+        assert c_layout[("field", f"{c_name}.{name}")] == (offset + size, 4), f"{c_name}.{name}"
+        offset, size = offset + size, 4
+    assert c_layout[("size", c_name)][0] == ctypes.sizeof(cls) >= offset + size, c_name
+
+
 def test_whitewater_layout(c_layout):
     # pf_whitewater and pf_whitewater_buffers as pf.h declares them, and the fields whitewater
-    # appended to pf_stats and pf_ssf_params last, after the ones an older caller knows (whose
+    # appended to pf_stats and pf_ssf_params, after the ones an older caller knows (whose
     # offsets stay), so a caller's struct_size tells the library which of them it has.
     assert c_layout[("size", "pf_whitewater")][0] == ctypes.sizeof(t.Whitewater) == 60
     assert c_layout[("size", "pf_whitewater_buffers")][0] == ctypes.sizeof(t.WhitewaterBuffers) == 20
-    for cls, c_name, after, appended in (
-            (t.Stats, "pf_stats", "gpu_particle_bytes", ["whitewater_count", "render_whitewater_gpu_ms"]),
-            (t.SsfParams, "pf_ssf_params", "filter_world_radius",
-             ["whitewater_radius", "whitewater_opacity", "skip_whitewater"])):
-        names = [name for name, _ in cls._fields_]
-        assert names[-len(appended) - 1:] == [after] + appended, c_name
-        offset, size = c_layout[("field", f"{c_name}.{after}")]
-        for name in appended:
-            assert c_layout[("field", f"{c_name}.{name}")] == (offset + size, 4), f"{c_name}.{name}"
-            offset, size = offset + size, 4
-        assert c_layout[("size", c_name)][0] == ctypes.sizeof(cls) >= offset + size, c_name
+    check_appended(c_layout, t.Stats, "pf_stats", "gpu_particle_bytes", ["whitewater_count", "render_whitewater_gpu_ms"])
+    check_appended(c_layout, t.SsfParams, "pf_ssf_params", "filter_world_radius",
+                   ["whitewater_radius", "whitewater_opacity", "skip_whitewater"])
     assert {m.name: m.value for m in t.WhitewaterKind} == {"SPRAY": 0, "FOAM": 1, "BUBBLE": 2}
     assert c_layout[("value", "PF_FEATURE_WHITEWATER")][0] == t.Feature.WHITEWATER == 1 << 6
     assert c_layout[("value", "PF_FLAG_WHITEWATER_FULL")][0] == t.Flag.WHITEWATER_FULL == 1 << 7
+
+
+def test_viscosity_layout(c_layout):
+    # pf_viscosity as pf.h declares it, and the solve's two figures appended to pf_stats last,
+    # after whitewater's.
+    assert c_layout[("size", "pf_viscosity")][0] == ctypes.sizeof(t.Viscosity) == 20
+    names = [name for name, _ in t.Stats._fields_]
+    assert names[-2:] == ["viscosity_iterations", "viscosity_residual"]
+    check_appended(c_layout, t.Stats, "pf_stats", "render_whitewater_gpu_ms",
+                   ["viscosity_iterations", "viscosity_residual"])
+    assert c_layout[("value", "PF_FEATURE_VISCOSITY")][0] == t.Feature.VISCOSITY == 1 << 7
+    assert c_layout[("value", "PF_FEATURE_ALL")][0] == t.Feature.ALL

@@ -43,6 +43,8 @@
 //   "vorticity_confinement": { "strength": 0.2 }                   pf_vorticity_confinement, set once
 //   "whitewater": { "capacity": 262144, "trapped_air_rate": 40, "lifetime": [1, 3], ... }
 //                                                                   pf_whitewater (any of its fields), set once
+//   "viscosity": { "viscosity": 5.0, "iterations": 60, "tolerance": 1e-3,
+//                  "free_slip": false }                             pf_viscosity (Pa s), set once
 // }
 // Effect objects start from pf_default_*() and take the keys given; the library validates them
 // when the scene is created, and an error names the object's JSON Pointer ("/emitters/1").
@@ -108,6 +110,8 @@ struct Scene {
     pf_vorticity_confinement vorticity_confinement{};
     bool has_whitewater = false;
     pf_whitewater whitewater{};
+    bool has_viscosity = false;
+    pf_viscosity viscosity{};
 
     /// World-space bounds of the grid.
     vec3f domain_min() const { return origin; }

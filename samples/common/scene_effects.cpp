@@ -84,7 +84,8 @@ const Names<uint32_t> kFeatures = {{"force_fields", PF_FEATURE_FORCE_FIELDS},
                                    {"sinks", PF_FEATURE_SINKS},
                                    {"domain_motion", PF_FEATURE_DOMAIN_MOTION},
                                    {"vorticity_confinement", PF_FEATURE_VORTICITY_CONFINEMENT},
-                                   {"whitewater", PF_FEATURE_WHITEWATER}};
+                                   {"whitewater", PF_FEATURE_WHITEWATER},
+                                   {"viscosity", PF_FEATURE_VISCOSITY}};
 
 pf_force_field read_field(const ObjectReader& r) {
     r.p.check_keys(r.obj, r.path, {"type", "position", "vector", "strength", "radius", "drag"});
@@ -214,6 +215,20 @@ pf_whitewater read_whitewater(const ObjectReader& r) {
     return w;
 }
 
+pf_viscosity read_viscosity(const ObjectReader& r) {
+    r.p.check_keys(r.obj, r.path, {"viscosity", "iterations", "tolerance", "free_slip"});
+    pf_viscosity v = pf_default_viscosity();
+    r.real("viscosity", v.viscosity);
+    // Any uint32: the library checks the range (1..1000) when the scene is created.
+    if (const json* j = r.find("iterations")) v.iterations = r.p.u32(*j, r.at("iterations"), 0, 0xffffffffu);
+    r.real("tolerance", v.tolerance);
+    if (const json* j = r.find("free_slip")) {
+        if (!j->is_boolean()) r.p.fail(r.at("free_slip"), "must be true or false, found " + Parser::describe(*j));
+        v.free_slip = j->get<bool>() ? 1u : 0u;
+    }
+    return v;
+}
+
 } // namespace
 
 void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
@@ -260,6 +275,12 @@ void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
         s.whitewater = read_whitewater(ObjectReader{p, p.object(*it, "/whitewater"), "/whitewater"});
         s.has_whitewater = true;
     }
+    if (auto it = root.find("viscosity"); it != root.end()) {
+        if (!(s.features & PF_FEATURE_VISCOSITY))
+            p.fail("/viscosity", "is given but \"viscosity\" is not listed in /features");
+        s.viscosity = read_viscosity(ObjectReader{p, p.object(*it, "/viscosity"), "/viscosity"});
+        s.has_viscosity = true;
+    }
 }
 
 uint32_t parse_feature_list(const std::string& list, const char* what) {
@@ -280,7 +301,8 @@ uint32_t parse_feature_list(const std::string& list, const char* what) {
         }
         if (!known) {
             throw Error(std::string(what) + ": unknown feature '" + name +
-                        "' (force_fields, obstacles, emitters, sinks, domain_motion, vorticity_confinement, whitewater, all, none)");
+                        "' (force_fields, obstacles, emitters, sinks, domain_motion, vorticity_confinement, whitewater, "
+                        "viscosity, all, none)");
         }
     }
     return bits;

@@ -52,6 +52,8 @@ SceneEffectIds add_scene_effects(pf_sim* sim, const Scene& s) {
         throw Error(s.path + ": /vorticity_confinement: refused by the library (the log says why)");
     if (s.has_whitewater && pf_set_whitewater(sim, &s.whitewater) != PF_OK)
         throw Error(s.path + ": /whitewater: refused by the library (the log says why)");
+    if (s.has_viscosity && pf_set_viscosity(sim, &s.viscosity) != PF_OK)
+        throw Error(s.path + ": /viscosity: refused by the library (the log says why)");
     return ids;
 }
 

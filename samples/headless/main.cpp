@@ -662,6 +662,8 @@ int run(int argc, char** argv) {
     }
     std::printf("flags: %s; largest speed %.3f m/s\n", pfs::flag_names(st.flags).c_str(), double(st.max_speed));
     if (scene.features & PF_FEATURE_WHITEWATER) std::printf("whitewater particles: %u\n", st.whitewater_count);
+    if (scene.features & PF_FEATURE_VISCOSITY)
+        std::printf("viscosity solve: %u iterations, residual %.2g\n", st.viscosity_iterations, double(st.viscosity_residual));
     if (opt.count_above >= 0.0f) {
         uint32_t n = 0;
         pfs::check(pf_get_particle_count(sim.get(), &n), "pf_get_particle_count");

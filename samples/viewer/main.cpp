@@ -1046,6 +1046,24 @@ void Viewer::ui_effects() {
         }
     }
     {
+        // Viscosity: a switch and mu on a logarithmic slider (water 1e-3 to lava 1e4 Pa s spans
+        // seven decades), and what the solve took in the last measured step.
+        bool on = (features & PF_FEATURE_VISCOSITY) != 0;
+        if (ImGui::Checkbox("viscosity", &on)) {
+            log_.clear();
+            report("pf_set_features", pf_set_features(sim_.get(), on ? (features | PF_FEATURE_VISCOSITY)
+                                                                     : (features & ~uint32_t(PF_FEATURE_VISCOSITY))));
+        }
+        pf_viscosity v = pf_default_viscosity();
+        pfs::check(pf_get_viscosity(sim_.get(), &v), "pf_get_viscosity");
+        if (ImGui::SliderFloat("viscosity (Pa s)", &v.viscosity, 1e-3f, 1e4f, "%.3g", ImGuiSliderFlags_Logarithmic)) {
+            log_.clear();
+            report("pf_set_viscosity", pf_set_viscosity(sim_.get(), &v));
+        }
+        ImGui::Text("viscosity solve: %u iterations, residual %.2e", stats_.viscosity_iterations,
+                    double(stats_.viscosity_residual));
+    }
+    {
         // Whitewater: a switch, its two rates and its lifetimes (the look is under "look").
         bool on = (features & PF_FEATURE_WHITEWATER) != 0;
         if (ImGui::Checkbox("whitewater", &on)) {

@@ -115,6 +115,23 @@
 #define PF_SLOT_WW_OUT_VEL 5
 #define PF_SLOT_WW_STATE 7
 #define PF_SLOT_WW_STATUS 0
+/* storage blocks of the viscosity kernels (shaders/effects/viscosity/): the stresses at cell
+ * centres 0 and at cell corners 1 (edges), the CG search direction 2 (the stress pass's input:
+ * face velocities there in the first pass of a solve), the residual 3, per face the mass weight
+ * and inverse diagonal 4, per-workgroup partial sums 5, A p 6 (cell types there in the kernels
+ * that bind no A p), the state record 7 (effects/viscosity/viscosity_state.h); the update binds
+ * the face velocities on 0; the first stress pass reads the faces' velocities as walls and
+ * obstacles set them after classify on the residual's slot 3 */
+#define PF_SLOT_VISC_SIGMA_CELL 0
+#define PF_SLOT_VISC_SIGMA_NODE 1
+#define PF_SLOT_VISC_P 2
+#define PF_SLOT_VISC_R 3
+#define PF_SLOT_VISC_COEF 4
+#define PF_SLOT_VISC_PARTIALS 5
+#define PF_SLOT_VISC_Q 6
+#define PF_SLOT_VISC_STATE 7
+#define PF_SLOT_VISC_X 0
+#define PF_SLOT_VISC_SOLID_VEL 3
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
@@ -211,7 +228,11 @@
 #define PF_STATUS_PARTICLE_COUNT 12    /* live particles at the step's end (uint) */
 #define PF_STATUS_INTERIOR_DENSITY 13 /* mean count / rest over interior FLUID cells (0: none) */
 #define PF_STATUS_WHITEWATER_COUNT 14 /* live whitewater particles at the step's end (uint) */
-#define PF_STATUS_WORDS 16
+#define PF_STATUS_VISCOSITY_ITERATIONS 15 /* most viscosity iterations of a substep in the step (uint) */
+#define PF_STATUS_VISCOSITY_RESIDUAL 16 /* largest final relative residual of a viscosity solve (float bits) */
+#define PF_STATUS_VISCOSITY_PROJECTION_RESIDUAL 17 /* the viscosity's second projection: largest final residual */
+#define PF_STATUS_VISCOSITY_PROJECTION_ITERATIONS 18 /* and most iterations of its solves' first round */
+#define PF_STATUS_WORDS 20
 
 /* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */
 #define PF_GPU_FLAG_P2G_OVERFLOW 1u

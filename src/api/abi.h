@@ -29,6 +29,7 @@ constexpr uint32_t kDomainMotionV1 = 56;
 // Introduced in pflip 0.2 with struct_size.
 constexpr uint32_t kVorticityConfinementV1 = 8;
 constexpr uint32_t kWhitewaterV1 = 60;
+constexpr uint32_t kViscosityV1 = 20;
 
 template <typename T> struct AbiInfo;
 template <> struct AbiInfo<pf_sim_params> { static constexpr uint32_t v1 = kSimParamsV1; static constexpr const char* name = "pf_sim_params"; };
@@ -43,6 +44,7 @@ template <> struct AbiInfo<pf_sink> { static constexpr uint32_t v1 = kSinkV1; st
 template <> struct AbiInfo<pf_domain_motion> { static constexpr uint32_t v1 = kDomainMotionV1; static constexpr const char* name = "pf_domain_motion"; };
 template <> struct AbiInfo<pf_vorticity_confinement> { static constexpr uint32_t v1 = kVorticityConfinementV1; static constexpr const char* name = "pf_vorticity_confinement"; };
 template <> struct AbiInfo<pf_whitewater> { static constexpr uint32_t v1 = kWhitewaterV1; static constexpr const char* name = "pf_whitewater"; };
+template <> struct AbiInfo<pf_viscosity> { static constexpr uint32_t v1 = kViscosityV1; static constexpr const char* name = "pf_viscosity"; };
 
 // A struct_size a caller may pass: 0, or at least 4 and a multiple of 4.
 inline bool valid_struct_size(uint32_t size) { return size == 0 || (size >= 4 && size % 4 == 0); }

@@ -161,7 +161,12 @@ bool PassRunner::writes_indirect_records(gl::ProgramId id) {
         case gl::ProgramId::cg_matvec_stored:
         case gl::ProgramId::cg_zstats:
         case gl::ProgramId::mg_smooth_zstats:
-        case gl::ProgramId::ww_commit: return true;
+        case gl::ProgramId::ww_commit:
+        // The viscosity's setup (its records' full sizes) and its passes ending in a scalar step.
+        case gl::ProgramId::visc_setup:
+        case gl::ProgramId::visc_apply_start:
+        case gl::ProgramId::visc_apply:
+        case gl::ProgramId::visc_update: return true;
         default: return false;
     }
 }

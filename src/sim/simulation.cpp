@@ -646,6 +646,8 @@ void Simulation::read_status_slot(int s) const {
         metrics_ = m;
         readback_count_ = live;
         whitewater_count_ = words[PF_STATUS_WHITEWATER_COUNT];
+        viscosity_iterations_ = words[PF_STATUS_VISCOSITY_ITERATIONS];
+        std::memcpy(&viscosity_residual_, &words[PF_STATUS_VISCOSITY_RESIDUAL], sizeof(float));
         // The drifts' reference: the first step measured since the particles last changed.
         if (!metrics_first_set_ && fence_step_[s] >= metrics_epoch_step_) {
             metrics_first_ = m;
@@ -1002,6 +1004,9 @@ void Simulation::stats(pf_stats& out) const {
     out.gpu_memory_bytes = memory_.bytes;
     out.gpu_particle_bytes = memory_.particle_bytes;
     out.whitewater_count = (desc_.features & PF_FEATURE_WHITEWATER) ? whitewater_count_ : 0;
+    const bool viscous = (desc_.features & PF_FEATURE_VISCOSITY) != 0;
+    out.viscosity_iterations = viscous ? viscosity_iterations_ : 0;
+    out.viscosity_residual = viscous ? viscosity_residual_ : 0.0f;
     out.steps = steps_;
     out.substeps = last_substeps_;
     out.flags = flags_;

@@ -261,6 +261,8 @@ private:
     mutable uint32_t readback_count_ = 0;  // live count of the newest readback
     mutable uint32_t whitewater_count_ = 0;  // live whitewater particles of the newest readback
     mutable std::array<uint32_t, PF_STATUS_WORDS> status_words_{};  // the newest readback's words (effects read theirs)
+    mutable uint32_t viscosity_iterations_ = 0;  // the newest readback's viscosity solve figures
+    mutable float viscosity_residual_ = 0.0f;
     // grid
     int32_t cells_ = 0;
     std::array<int32_t, 3> face_counts_{};

@@ -25,7 +25,9 @@ constexpr char kMagic[8] = {'p', 'f', 'l', 'i', 'p', 's', 'n', 'p'};
 // 2: the status words gained PF_STATUS_INTERIOR_DENSITY (14 words, 2026-11-24).
 // 3: and PF_STATUS_WHITEWATER_COUNT (16 words, 2026-11-26).
 // 4: the host state holds the newest status words read back, which effects learn from (2026-11-27).
-constexpr uint32_t kFormat = 4;
+// 5: the status words gained the viscosity's four (20 words); the effects' state its settings
+// and what its recent solves needed (2026-11-27).
+constexpr uint32_t kFormat = 5;
 
 struct Header {
     char magic[8];

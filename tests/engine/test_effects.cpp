@@ -84,7 +84,7 @@ TEST_F(Effects, EachEffectAddsOnlyItsOwnPasses) {
                           Case{PF_FEATURE_EMITTERS, {"emit"}}, Case{PF_FEATURE_SINKS, {"sinks"}},
                           Case{PF_FEATURE_DOMAIN_MOTION, {"domain_motion"}},
                           Case{PF_FEATURE_VORTICITY_CONFINEMENT, {"vorticity_confinement"}},
-                          Case{PF_FEATURE_WHITEWATER, {"whitewater"}}}) {
+                          Case{PF_FEATURE_WHITEWATER, {"whitewater"}}, Case{PF_FEATURE_VISCOSITY, {"viscosity", "viscosity_projection"}}}) {
         SimPtr sim = make_scene(*this, 0);
         ASSERT_TRUE(sim);
         ASSERT_EQ(pf_set_features(sim.get(), c.feature), PF_OK) << last_log();
@@ -117,7 +117,7 @@ TEST_F(Effects, TogglingFeaturesKeepsEveryParticle) {
     ASSERT_GT(before.count(), 0u);
     for (uint32_t f : {uint32_t(PF_FEATURE_FORCE_FIELDS), uint32_t(PF_FEATURE_ALL), uint32_t(PF_FEATURE_OBSTACLES), 0u}) {
         ASSERT_EQ(pf_set_features(sim.get(), f), PF_OK) << last_log();
-        uint32_t got = 0xffu;
+        uint32_t got = ~0u;  // no valid feature set
         ASSERT_EQ(pf_get_features(sim.get(), &got), PF_OK);
         EXPECT_EQ(got, f);
     }
@@ -131,7 +131,7 @@ TEST_F(Effects, UnknownFeatureBitsAreRefusedAndChangeNothing) {
     SimPtr sim = make_scene(*this, PF_FEATURE_FORCE_FIELDS);
     ASSERT_TRUE(sim);
     clear_log();
-    EXPECT_EQ(pf_set_features(sim.get(), PF_FEATURE_ALL | (1u << 7)), PF_ERROR_INVALID_ARGUMENT);
+    EXPECT_EQ(pf_set_features(sim.get(), PF_FEATURE_ALL | (uint32_t(PF_FEATURE_ALL) + 1u)), PF_ERROR_INVALID_ARGUMENT);
     EXPECT_NE(std::string(last_log()).find("unknown feature bits"), std::string::npos) << last_log();
     uint32_t got = 0;
     ASSERT_EQ(pf_get_features(sim.get(), &got), PF_OK);

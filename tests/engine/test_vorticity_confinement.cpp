@@ -8,18 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "support/cellular_vortex.h"
+#include "support/resting_tank.h"
 #include "support/sim_fixture.h"
 
 namespace pf::test {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-double kinetic_energy(const ParticleState& p) {
-    double e = 0;
-    for (float v : p.vel) e += 0.5 * double(v) * v;
-    return p.count() ? e / double(p.count()) : 0.0;
-}
 
 // A closed 1 m box of 16^3 cells, full, in zero gravity, turning as one cellular vortex
 // u = 0.5 sin(pi x) cos(pi y), v = -0.5 cos(pi x) sin(pi y) (divergence-free, zero at the walls'
@@ -48,20 +42,12 @@ std::vector<double> VorticityConfinement::vortex_energy(bool confined, float str
     if (!sim) return {};
     EXPECT_EQ(set_strength(sim.get(), strength), PF_OK) << last_log();
     std::vector<float> pos, vel;
-    const double s = d.cell_size / 2.0;
-    for (int k = 0; k < 32; ++k)
-        for (int j = 0; j < 32; ++j)
-            for (int i = 0; i < 32; ++i) {
-                const double x = (i + 0.5) * s, y = (j + 0.5) * s, z = (k + 0.5) * s;
-                pos.insert(pos.end(), {float(x), float(y), float(z)});
-                vel.insert(vel.end(), {float(0.5 * std::sin(kPi * x) * std::cos(kPi * y)),
-                                       float(-0.5 * std::cos(kPi * x) * std::sin(kPi * y)), 0.0f});
-            }
+    cellular_vortex_particles(d, pos, vel);
     EXPECT_EQ(pf_add_particles(sim.get(), pos.data(), vel.data(), uint32_t(pos.size() / 3)), PF_OK);
-    std::vector<double> e{kinetic_energy(read_all(sim.get()))};
+    std::vector<double> e{kinetic_energy_per_mass(read_all(sim.get()))};
     for (int f = 0; f < frames; ++f) {
         EXPECT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
-        e.push_back(kinetic_energy(read_all(sim.get())));
+        e.push_back(kinetic_energy_per_mass(read_all(sim.get())));
     }
     return e;
 }
@@ -94,26 +80,13 @@ TEST_F(VorticityConfinement, KeepsADecayingVortexSpinningAndNeverAboveItsStart) 
 // (sampled every second) stays within half again the unconfined tank's and below 1 mm/s (both
 // about 0.5 mm/s on llvmpipe, 10 s alike). Its passes run exactly when it is on.
 TEST_F(VorticityConfinement, LiquidAtRestStaysAtRest) {
-    double speed[2] = {0, 0};
-    for (int on = 0; on < 2; ++on) {
-        pf_sim_desc d = test_desc(12, 12, 12, 0.1f);
-        d.features = on ? PF_FEATURE_VORTICITY_CONFINEMENT : 0u;
-        SimPtr sim = create(d);
-        ASSERT_TRUE(sim);
-        ASSERT_EQ(set_strength(sim.get(), 1.0f), PF_OK);
-        const float lo[3] = {0, 0, 0}, hi[3] = {1.2f, 0.6f, 1.2f};
-        ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
-        for (int f = 1; f <= 300; ++f) {
-            ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
-            if (f % 60 == 0) speed[on] = std::max(speed[on], max_speed_of(read_all(sim.get())));
-        }
-        bool ran = false;
-        for (const pf_pass_stats& s : pass_list(sim.get()))
-            ran = ran || (std::string(s.name) == "vorticity_confinement" && s.dispatches > 0);
-        EXPECT_EQ(ran, on == 1) << "its passes run exactly when it is on";
-    }
-    EXPECT_LE(speed[1], 1.5 * speed[0]) << "without " << speed[0] << " m/s";
-    EXPECT_LT(speed[1], 1e-3);
+    const auto configure = [](pf_sim* sim) { ASSERT_EQ(set_strength(sim, 1.0f), PF_OK); };
+    const RestingTank off = step_resting_tank(0u, 300, "vorticity_confinement", configure);
+    const RestingTank on = step_resting_tank(PF_FEATURE_VORTICITY_CONFINEMENT, 300, "vorticity_confinement", configure);
+    EXPECT_FALSE(off.entry_ran);
+    EXPECT_TRUE(on.entry_ran) << "its passes run exactly when it is on";
+    EXPECT_LE(on.max_speed, 1.5 * off.max_speed) << "without " << off.max_speed << " m/s";
+    EXPECT_LT(on.max_speed, 1e-3);
 }
 
 // Strength 1 (the top of the range) in a dam break at frame dt 1/30 s for 3 s: nothing

@@ -143,6 +143,19 @@ std::vector<BadScene> bad_scenes() {
          "is not listed in /features"},
         {"domain_motion_unknown_key", with(R"("features": ["domain_motion"], "domain_motion": {"spin": [1, 0, 0]})"),
          "/domain_motion/spin", "is not a known key"},
+        {"viscosity_without_feature", with(R"("features": ["emitters"], "viscosity": {"viscosity": 5})"), "/viscosity",
+         "is not listed in /features"},
+        {"viscosity_unknown_key", with(R"("features": ["viscosity"], "viscosity": {"mu": 5})"), "/viscosity/mu",
+         "is not a known key"},
+        {"viscosity_not_object", with(R"("features": ["viscosity"], "viscosity": 5)"), "/viscosity", "must be an object"},
+        {"viscosity_iterations_fraction", with(R"("features": ["viscosity"], "viscosity": {"iterations": 2.5})"),
+         "/viscosity/iterations", "must be an integer"},
+        {"viscosity_iterations_negative", with(R"("features": ["viscosity"], "viscosity": {"iterations": -1})"),
+         "/viscosity/iterations", "must be in [0, 4294967295]"},
+        {"viscosity_free_slip_number", with(R"("features": ["viscosity"], "viscosity": {"free_slip": 1})"),
+         "/viscosity/free_slip", "must be true or false"},
+        {"viscosity_beyond_float", with(R"("features": ["viscosity"], "viscosity": {"viscosity": 1e39})"),
+         "/viscosity/viscosity", "beyond float range"},
     };
 }
 
@@ -211,6 +224,30 @@ TEST(SceneLoader, EffectsSceneCarriesEveryEffectsObjects) {
             "params": {"pressure_tolerance": 0.01}})", "preset.json");
     EXPECT_EQ(b.params.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
     EXPECT_FLOAT_EQ(b.params.pressure_tolerance, 0.01f);
+}
+
+// The viscosity scene pours from its emitter with the viscosity it names; a viscosity object
+// starts from pf_default_viscosity() and takes only the keys given (the ranges are the library's
+// to check when the scene is created).
+TEST(SceneLoader, ViscositySceneCarriesItsViscosity) {
+    const pfs::Scene s = pfs::load_scene(std::string(PF_TEST_SCENES_DIR) + "/effects_viscosity.json");
+    EXPECT_EQ(s.features, uint32_t(PF_FEATURE_EMITTERS | PF_FEATURE_VISCOSITY));
+    ASSERT_EQ(s.emitters.size(), 1u);
+    EXPECT_TRUE(s.has_viscosity);
+    EXPECT_EQ(s.viscosity.struct_size, uint32_t(sizeof(pf_viscosity)));
+    EXPECT_FLOAT_EQ(s.viscosity.viscosity, 200.0f);
+    EXPECT_EQ(s.viscosity.iterations, 60u);
+    EXPECT_FLOAT_EQ(s.viscosity.tolerance, 1e-3f);
+    EXPECT_EQ(s.viscosity.free_slip, 0u);
+    const pfs::Scene b = pfs::parse_scene(
+        with(R"("features": ["viscosity"], "viscosity": {"iterations": 5000, "free_slip": true})"), "v.json");
+    const pf_viscosity d = pf_default_viscosity();
+    EXPECT_TRUE(b.has_viscosity);
+    EXPECT_EQ(b.viscosity.iterations, 5000u);  // out of range: refused later, by pf_set_viscosity
+    EXPECT_EQ(b.viscosity.free_slip, 1u);
+    EXPECT_EQ(b.viscosity.viscosity, d.viscosity);
+    EXPECT_EQ(b.viscosity.tolerance, d.tolerance);
+    EXPECT_FALSE(pfs::parse_scene(kValid, "none.json").has_viscosity);
 }
 
 TEST(SceneLoader, EdgesOfFloatRangeLoadExactly) {
