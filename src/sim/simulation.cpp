@@ -325,9 +325,7 @@ void Simulation::build_substep_table() {
         });
     }
     t.add("pressure_setup", [this, cells](const SubstepContext&) {
-        runner_->run({ProgramId::pressure_setup, stat_.pressure_setup, cells,
-                      {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
-                       {PF_SLOT_PRESSURE, &pressure_}}});
+        run_pressure_setup(*runner_, stat_.pressure_setup, pressure_);
         if (!hydrostatic_start_pending_) return;
         // One invocation per column along gravity's dominant axis (the kernel picks the same).
         const float* g = desc_.params.gravity;
@@ -346,10 +344,8 @@ void Simulation::build_substep_table() {
                                                  known && solver_residual_ <= desc_.params.pressure_tolerance,
                                                  known ? solver_residual_ : -1.0f});
     });
-    t.add("velocity_update", [this, faces](const SubstepContext&) {
-        runner_->run({ProgramId::velocity_update, stat_.velocity_update, faces,
-                      {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_},
-                       {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
+    t.add("velocity_update", [this](const SubstepContext&) {
+        run_velocity_update(*runner_, stat_.velocity_update, pressure_);
     });
     t.add("extrapolate", [this, faces](const SubstepContext&) {
         valid_current_ = 0;
@@ -929,17 +925,25 @@ EffectBuffers Simulation::effect_buffers() const {
 void Simulation::project(PassRunner& runner, const gl::Buffer& potential, const gl::Buffer& report, StatId stat,
                          uint32_t recent_iterations, float recent_residual) const {
     const PassRunner::StatScope as_effect(runner, stat);
-    runner.run({ProgramId::pressure_setup, stat, uint64_t(cells_),
-                {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
-                 {PF_SLOT_PRESSURE, &potential}}});
+    run_pressure_setup(runner, stat, potential);
     pf_sim_params params = desc_.params;
     params.separation = 0;  // a correction of either sign, not a pressure
     solver_->solve(runner, PressureProblem{cell_type_, rhs_, potential, report, params, recent_iterations,
                                            kUnknownIterations,
                                            recent_residual >= 0.0f && recent_residual <= params.pressure_tolerance,
                                            recent_residual});
+    run_velocity_update(runner, stat, potential);
+}
+
+void Simulation::run_pressure_setup(PassRunner& runner, StatId stat, const gl::Buffer& pressure) const {
+    runner.run({ProgramId::pressure_setup, stat, uint64_t(cells_),
+                {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
+                 {PF_SLOT_PRESSURE, &pressure}}});
+}
+
+void Simulation::run_velocity_update(PassRunner& runner, StatId stat, const gl::Buffer& pressure) const {
     runner.run({ProgramId::velocity_update, stat, uint64_t(faces_),
-                {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &potential},
+                {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure},
                  {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
 }
 

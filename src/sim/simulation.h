@@ -185,6 +185,10 @@ private:
     void begin_effects_step(float frame_dt);
     // The effects' buffers and sizes for this substep.
     EffectBuffers effect_buffers() const;
+    // The projection's first and last passes with `pressure` as the pressure (the substep's, or
+    // an effect's potential): the right-hand side from the face velocities, and their update.
+    void run_pressure_setup(PassRunner& runner, StatId stat, const gl::Buffer& pressure) const;
+    void run_velocity_update(PassRunner& runner, StatId stat, const gl::Buffer& pressure) const;
     // Projector: the projection again, for an effect that changed the velocities after it.
     void project(PassRunner& runner, const gl::Buffer& potential, const gl::Buffer& report, StatId stat,
                  uint32_t recent_iterations, float recent_residual) const override;

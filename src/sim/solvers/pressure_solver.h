@@ -60,14 +60,18 @@ inline bool early_checks_worthwhile(const PressureProblem& problem) {
 // within the cap. (Issuing later active-set rounds by their own, smaller, recent need was
 // measured on the H100: it saved 5% of the time and cut those rounds short — the residual grew
 // fifteenfold.)
+// The same rule for any iterative solve (the viscosity's too): `recent` iterations needed
+// lately (kUnknownIterations: not known), whether those solves met their tolerance, the cap.
+inline uint32_t issued_iterations(uint32_t cap, uint32_t recent, bool recent_converged) {
+    if (recent == kUnknownIterations) return cap;
+    const uint64_t margin = recent_converged ? recent + (recent / 4 > 2 ? recent / 4 : 2) : recent + recent / 2 + 4;
+    return uint32_t(margin < cap ? margin : cap);
+}
 inline uint32_t issued_iterations(const PressureProblem& problem) {
-    const uint32_t cap = problem.params.pressure_iterations;
     uint32_t recent = problem.recent_iterations;
     if (recent != kUnknownIterations && problem.recent_later_iterations != kUnknownIterations)
         recent = recent > problem.recent_later_iterations ? recent : problem.recent_later_iterations;
-    if (recent == kUnknownIterations) return cap;
-    const uint64_t margin = problem.recent_converged ? recent + (recent / 4 > 2 ? recent / 4 : 2) : recent + recent / 2 + 4;
-    return uint32_t(margin < cap ? margin : cap);
+    return issued_iterations(problem.params.pressure_iterations, recent, problem.recent_converged);
 }
 
 class PressureSolver {

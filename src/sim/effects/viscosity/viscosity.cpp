@@ -76,13 +76,6 @@ void ViscosityEffect::begin_frame(const FrameInfo& frame) {
     }
 }
 
-uint32_t ViscosityEffect::issued_iterations() const {
-    const uint32_t cap = settings_.iterations;
-    if (recent_ == kUnknown) return cap;
-    const uint64_t margin = recent_converged_ ? recent_ + std::max(recent_ / 4, 2u) : recent_ + recent_ / 2 + 4;
-    return uint32_t(std::min<uint64_t>(margin, cap));
-}
-
 void ViscosityEffect::run(EffectStage stage, PassRunner& runner, const EffectBuffers& b) {
     if (stage == EffectStage::after_classify) {
         if (first_substep_) {

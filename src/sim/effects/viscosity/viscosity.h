@@ -33,7 +33,7 @@ public:
     // Learns what recent solves needed from the newest status readback.
     void begin_frame(const FrameInfo& frame) override;
     void turned_on() override {
-        recent_ = kUnknown;
+        recent_ = kUnknownIterations;
         projection_recent_ = kUnknownIterations;
         projection_residual_ = -1.0f;
         known_after_ = step_;  // the status words kept what it measured before it was turned off
@@ -46,15 +46,14 @@ public:
     // pf_set_viscosity (validated): what earlier solves needed no longer says anything.
     void set(const pf_viscosity& v) {
         settings_ = v;
-        recent_ = kUnknown;
+        recent_ = kUnknownIterations;
         known_after_ = step_;
     }
-    // Iterations to issue per solve: all of settings().iterations until a solve's need is known;
-    // then that need plus a quarter (at least 2) while solves met the tolerance, plus a half and
-    // 4 when they did not, within the cap (the pressure solvers' rule, issued_iterations in
-    // src/sim/solvers/pressure_solver.h): every issued iteration costs three dispatches even
-    // once the GPU has found convergence and emptied them.
-    uint32_t issued_iterations() const;
+    // Iterations to issue per solve: the pressure solvers' rule (issued_iterations in
+    // src/sim/solvers/pressure_solver.h) on what recent solves needed, within
+    // settings().iterations: every issued iteration costs three dispatches even once the GPU has
+    // found convergence and emptied them.
+    uint32_t issued_iterations() const { return pf::issued_iterations(settings_.iterations, recent_, recent_converged_); }
     const pf_viscosity& settings() const { return settings_; }
 
 private:
@@ -63,8 +62,7 @@ private:
     float density_ = 1000.0f;  // kg/m^3
     uint64_t cells_ = 0, nodes_ = 0;
     bool first_substep_ = true;
-    static constexpr uint32_t kUnknown = 0xffffffffu;
-    uint32_t recent_ = kUnknown;    // most iterations of a substep's solve in the newest readback
+    uint32_t recent_ = kUnknownIterations;    // most iterations of a substep's solve in the newest readback
     bool recent_converged_ = false;  // and whether all its solves met the tolerance
     uint64_t step_ = 0, known_after_ = 0;  // the current step; readbacks of steps after this one count
     uint32_t projection_recent_ = kUnknownIterations;  // the second projection's need, as recent_
