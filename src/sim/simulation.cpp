@@ -429,17 +429,21 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     }
     // Effects add accelerations (force fields, a moving frame) and impose speeds whatever was
     // measured (a wind's drag, an obstacle's surface pushing the liquid).
+    // Some are stable only below a substep length of their own (surface tension's capillary waves).
     float imposed = 0.0f;
+    double fewest = 1.0;
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (!(desc_.features & (1u << i))) continue;
         const CflBound bound = effects_[i]->cfl_bound(v_max);
         accel += bound.acceleration;
         imposed = std::max(imposed, bound.speed);
+        if (bound.max_dt > 0.0f) fewest = std::max(fewest, std::ceil(double(frame_dt) / double(bound.max_dt)));
     }
     // The speed was measured at the end of the previous step (kStatusLag): it may grow by one
     // frame of acceleration before this step ends.
     const float v_est = std::max(v_max + accel * frame_dt, imposed);
-    const double wanted = std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size));
+    const double wanted =
+        std::max(fewest, std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size)));
     const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
     if (clamped) *clamped = wanted > double(desc_.params.max_substeps);
     return k;
@@ -916,8 +920,8 @@ void Simulation::begin_effects_step(float frame_dt) {
 
 EffectBuffers Simulation::effect_buffers() const {
     const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
-    return EffectBuffers{pos_,         vel_,       face_accum_,   face_vel_,
-                         face_vel_old_, cell_type_, count_record_, status_,
+    return EffectBuffers{pos_,         vel_,       face_accum_,   face_vel_,  face_vel_old_, face_fraction_,
+                         cell_type_,   cell_count_, count_record_, status_,
                          apic ? &affine_ : nullptr, pressure_, particle_count_, uint64_t(cells_),
                          uint64_t(faces_), step_substeps_, this};
 }

@@ -48,7 +48,9 @@ struct EffectBuffers {
     const gl::Buffer& face_accum;  // P2G sums (momentum, weight) per face
     const gl::Buffer& face_vel;    // face velocities
     const gl::Buffer& face_vel_old;  // face velocities at the substep's start (after P2G)
+    const gl::Buffer& face_fraction;  // the free surface's theta per face (common/free_surface.glsl)
     const gl::Buffer& cell_type;   // AIR / FLUID / SOLID per cell
+    const gl::Buffer& cell_count;  // particles per cell (uint), from P2G
     const gl::Buffer& count_record;  // the live-count record (PF_COUNT_* in common/slots.h)
     const gl::Buffer& status;      // the step's status words (flags)
     const gl::Buffer* affine;      // APIC affine vectors while params.transfer is APIC, else nullptr
@@ -86,6 +88,7 @@ struct CflBound {
     float acceleration = 0.0f;  // m/s^2 it may add to the liquid's (summed with gravity's)
     float speed = 0.0f;         // m/s the liquid may reach through it whatever was measured (a
                                 // wind's drag, an obstacle's surface pushing it)
+    float max_dt = 0.0f;        // s: the longest substep it stays stable at (0: no limit)
 };
 
 // The bit of `stage` in Effect::stages().
