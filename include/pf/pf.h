@@ -284,10 +284,13 @@ enum {
                                          substep an implicit solve over the faces after the pressure
                                          projection, three passes per conjugate-gradient iteration, and the
                                          projection again) */
+    PF_FEATURE_SURFACE_TENSION = 1u << 8, /**< pf_set_surface_tension: the liquid's surface pulls itself
+                                               smooth and round (per substep two grid passes before the
+                                               pressure solve; it may raise the substep count) */
     PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES | PF_FEATURE_EMITTERS |
                      PF_FEATURE_SINKS | PF_FEATURE_DOMAIN_MOTION |
                      PF_FEATURE_VORTICITY_CONFINEMENT | PF_FEATURE_WHITEWATER |
-                     PF_FEATURE_VISCOSITY /**< every known feature bit */
+                     PF_FEATURE_VISCOSITY | PF_FEATURE_SURFACE_TENSION /**< every known feature bit */
 };
 
 /** @} */
@@ -1109,6 +1112,44 @@ static inline pf_viscosity pf_default_viscosity(void) {
 PF_API pf_result pf_set_viscosity(pf_sim* sim, const pf_viscosity* viscosity);
 /** The viscosity last set (pf_default_viscosity() if never). */
 PF_API pf_result pf_get_viscosity(const pf_sim* sim, pf_viscosity* out);
+
+/** Surface tension (PF_FEATURE_SURFACE_TENSION; the ghost-fluid pressure jump of Kang, Fedkiw & Liu
+ *  2000): across the free surface the pressure jumps by tension * kappa, kappa the surface's mean
+ *  curvature (twice it: 2/R on a sphere of radius R), taken from the particles' density smoothed
+ *  over about two cells, so a blob rounds up, a small drop stays round and ripples shorter than the
+ *  capillary length oscillate. Features smaller than about two cells are not resolved (kappa is
+ *  clamped to 2 / cell_size). The liquid meets walls and obstacles at a right angle. The jump is
+ *  explicit: a substep is kept at most half of Brackbill's capillary limit
+ *  sqrt(density * cell_size^3 / (4 pi tension)) (Brackbill, Kothe & Zemach 1992) long, so a large
+ *  tension on a fine grid costs substeps; where max_substeps cannot cover it, the step uses the
+ *  largest tension its substeps are stable at and raises PF_FLAG_SUBSTEPS_CLAMPED. Start from
+ *  pf_default_surface_tension(). */
+typedef struct pf_surface_tension {
+    uint32_t struct_size;         /**< sizeof(pf_surface_tension) as the caller compiled it
+                                       (pf_default_surface_tension() sets it; 0: zero-initialised, every
+                                       zero field takes its default) */
+    float tension;                /**< surface tension coefficient sigma in N/m, 0..1000; default 0.072
+                                       (water against air; at game scales a drop rounds visibly only at
+                                       tens of N/m: the capillary length sqrt(sigma / (density g)) is
+                                       2.7 mm for water) */
+} pf_surface_tension;
+
+/** Writes the default surface tension for a caller whose pf_surface_tension is struct_size bytes
+ *  (see the ABI rules at the top): the first struct_size bytes only. PF_ERROR_INVALID_ARGUMENT for a
+ *  NULL out or a struct_size below 4 or not a multiple of 4. Any thread. */
+PF_API pf_result pf_init_surface_tension(pf_surface_tension* out, uint32_t struct_size);
+/** Tension 0.072 N/m, struct_size set. */
+static inline pf_surface_tension pf_default_surface_tension(void) {
+    pf_surface_tension t;
+    pf_init_surface_tension(&t, (uint32_t)sizeof t);
+    return t;
+}
+/** Sets the surface tension for the next pf_step. It may be set while PF_FEATURE_SURFACE_TENSION is
+ *  off (it acts once it is on). PF_ERROR_INVALID_ARGUMENT for NULL or a tension not finite, below 0
+ *  or above 1000 N/m (logged; nothing changes). */
+PF_API pf_result pf_set_surface_tension(pf_sim* sim, const pf_surface_tension* tension);
+/** The surface tension last set (pf_default_surface_tension() if never). */
+PF_API pf_result pf_get_surface_tension(const pf_sim* sim, pf_surface_tension* out);
 
 /** @} */
 

@@ -17,8 +17,8 @@ from ._types import (MAX_EMITTERS, MAX_FORCE_FIELDS, MAX_OBSTACLES, MAX_SINKS, A
                      DomainMotion, Emitter, EmitterShape, Feature, Flag, ForceField, FreeSurface, ForceFieldType, GlBuffers, GpuTiming, LogLevel, Obstacle, ObstacleForce,
                      ObstacleShape, P2G, ParticleColor, ParticleParams, Pass, PressureSolver, Quality, RateUnit,
                      RenderPass, RenderTarget, Result, SimDesc, SimParams, Sink, SinkShape, SsfFilter, SsfParams,
-                     SsfPath, Stats, Transfer, Viscosity, VorticityConfinement, Whitewater, WhitewaterBuffers,
-                     WhitewaterKind)
+                     SsfPath, Stats, SurfaceTension, Transfer, Viscosity, VorticityConfinement, Whitewater,
+                     WhitewaterBuffers, WhitewaterKind)
 from .errors import PflipError
 from .simulation import PassStats, Simulation
 
@@ -45,7 +45,7 @@ __all__ = [
     "GlBuffers", "GpuTiming", "LogLevel", "MAX_FORCE_FIELDS", "MAX_OBSTACLES", "Obstacle", "ObstacleForce", "ObstacleShape", "P2G",
     "ParticleColor", "ParticleParams", "Pass", "PassStats", "PflipError", "PressureSolver", "Quality",
     "RenderPass", "RenderTarget", "Result", "SimDesc", "SimParams", "Simulation", "SsfFilter", "SsfParams",
-    "SsfPath", "Stats", "Transfer", "Viscosity", "VorticityConfinement", "Whitewater", "WhitewaterBuffers",
-    "WhitewaterKind",
+    "SsfPath", "Stats", "SurfaceTension", "Transfer", "Viscosity", "VorticityConfinement", "Whitewater",
+    "WhitewaterBuffers", "WhitewaterKind",
     "camera", "frame", "pass_name", "render_pass_name", "result_string", "version",
 ]

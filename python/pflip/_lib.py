@@ -121,6 +121,9 @@ _PROTOTYPES = {
     "pf_init_viscosity": (t.c_enum, [_P(t.Viscosity), ctypes.c_uint32]),
     "pf_set_viscosity": (t.c_enum, [_sim, _P(t.Viscosity)]),
     "pf_get_viscosity": (t.c_enum, [_sim, _P(t.Viscosity)]),
+    "pf_init_surface_tension": (t.c_enum, [_P(t.SurfaceTension), ctypes.c_uint32]),
+    "pf_set_surface_tension": (t.c_enum, [_sim, _P(t.SurfaceTension)]),
+    "pf_get_surface_tension": (t.c_enum, [_sim, _P(t.SurfaceTension)]),
     "pf_get_obstacle_force": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.ObstacleForce)]),
 }
 

@@ -61,6 +61,7 @@ _ENUM_FIELDS = {
     t.VorticityConfinement: {},
     t.Whitewater: {},
     t.Viscosity: {},
+    t.SurfaceTension: {},
 }
 
 
@@ -547,6 +548,23 @@ class Simulation:
         v = _effect_struct(t.Viscosity, self.viscosity if settings is None else settings, fields,
                            "pf_set_viscosity")
         self._call("pf_set_viscosity", ctypes.byref(v))
+
+    @property
+    def surface_tension(self):
+        """pf_get_surface_tension: the surface tension last set (a SurfaceTension)."""
+        out = t.SurfaceTension()
+        self._call("pf_get_surface_tension", ctypes.byref(out))
+        return out
+
+    def set_surface_tension(self, settings=None, **fields):
+        """pf_set_surface_tension: settings (a SurfaceTension; default: as they are now) with the
+        keyword fields set, e.g. set_surface_tension(tension=12.5). Acts while
+        Feature.SURFACE_TENSION is on (it may be set while off). A tension that is not finite, below
+        0 or above 1000 N/m raises PflipError(ERROR_INVALID_ARGUMENT) and changes nothing. A struct
+        of another kind or a field SurfaceTension lacks raises TypeError."""
+        st = _effect_struct(t.SurfaceTension, self.surface_tension if settings is None else settings, fields,
+                            "pf_set_surface_tension")
+        self._call("pf_set_surface_tension", ctypes.byref(st))
 
     @property
     def whitewater(self):

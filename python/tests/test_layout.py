@@ -164,3 +164,14 @@ def test_viscosity_layout(c_layout):
                    ["viscosity_iterations", "viscosity_residual"])
     assert c_layout[("value", "PF_FEATURE_VISCOSITY")][0] == t.Feature.VISCOSITY == 1 << 7
     assert c_layout[("value", "PF_FEATURE_ALL")][0] == t.Feature.ALL
+
+
+def test_surface_tension_layout(c_layout):
+    # pf_surface_tension as pf.h declares it: struct_size, then the tension. It adds nothing to
+    # pf_stats (the substeps it costs show in pf_stats.substeps).
+    assert c_layout[("size", "pf_surface_tension")][0] == ctypes.sizeof(t.SurfaceTension) == 8
+    assert c_layout[("field", "pf_surface_tension.tension")] == (4, 4)
+    names = [name for name, _ in t.Stats._fields_]
+    assert names[-1] == "viscosity_residual"
+    assert c_layout[("value", "PF_FEATURE_SURFACE_TENSION")][0] == t.Feature.SURFACE_TENSION == 1 << 8
+    assert c_layout[("value", "PF_FEATURE_ALL")][0] == t.Feature.ALL

@@ -91,8 +91,8 @@ void add_options(CLI::App& app, Options& o) {
         ->check(pfs::Range(1e-6f, 1.0f));
     app.add_option("--features", o.features,
                    "effects to run, overriding the scenes' (comma-separated force_fields, obstacles, emitters, "
-                   "sinks, domain_motion, vorticity_confinement, whitewater, viscosity; or all, none); the scenes' "
-                   "objects are added either way")
+                   "sinks, domain_motion, vorticity_confinement, whitewater, viscosity, surface_tension; or all, "
+                   "none); the scenes' objects are added either way")
         ->transform(FeatureList())
         ->type_name("LIST");
     static const pfs::Choices<pf_gpu_timing> kTimings = {

@@ -16,8 +16,9 @@
 // Per data series: RMS, largest and mean difference (simulation - data) at the data's times, and
 // the time shift that aligns the two best (sim_lead > 0: the simulation runs that far ahead of the
 // experiment, whose gate took time to open while the simulation starts from an instant release).
-// --scale S builds every experiment S times larger: pflip has no viscosity or surface tension, so
-// by Froude similarity only the number of 1/60 s frames per unit of dimensionless time changes.
+// --scale S builds every experiment S times larger: the runs use neither viscosity nor surface
+// tension (both off by default), so by Froude similarity only the number of 1/60 s frames per unit
+// of dimensionless time changes.
 
 #include <glad/gl.h>
 

@@ -60,7 +60,8 @@ Scene parse_scene(const std::string& text, const std::string& path) {
     p.check_keys(root, "", {"name", "description", "grid", "max_particles", "particles_per_cell",
                             "fill_jitter", "seed", "max_speed", "density", "fill", "params", "frame_dt",
                             "frames", "camera", "preset", "features", "force_fields", "obstacles", "emitters",
-                            "sinks", "domain_motion", "vorticity_confinement", "whitewater", "viscosity"});
+                            "sinks", "domain_motion", "vorticity_confinement", "whitewater", "viscosity",
+                            "surface_tension"});
 
     Scene s;
     s.path = path;

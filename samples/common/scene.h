@@ -45,6 +45,7 @@
 //                                                                   pf_whitewater (any of its fields), set once
 //   "viscosity": { "viscosity": 5.0, "iterations": 60, "tolerance": 1e-3,
 //                  "free_slip": false }                             pf_viscosity (Pa s), set once
+//   "surface_tension": { "tension": 12.5 }                         pf_surface_tension (N/m), set once
 // }
 // Effect objects start from pf_default_*() and take the keys given; the library validates them
 // when the scene is created, and an error names the object's JSON Pointer ("/emitters/1").
@@ -112,6 +113,8 @@ struct Scene {
     pf_whitewater whitewater{};
     bool has_viscosity = false;
     pf_viscosity viscosity{};
+    bool has_surface_tension = false;
+    pf_surface_tension surface_tension{};
 
     /// World-space bounds of the grid.
     vec3f domain_min() const { return origin; }

@@ -85,7 +85,8 @@ const Names<uint32_t> kFeatures = {{"force_fields", PF_FEATURE_FORCE_FIELDS},
                                    {"domain_motion", PF_FEATURE_DOMAIN_MOTION},
                                    {"vorticity_confinement", PF_FEATURE_VORTICITY_CONFINEMENT},
                                    {"whitewater", PF_FEATURE_WHITEWATER},
-                                   {"viscosity", PF_FEATURE_VISCOSITY}};
+                                   {"viscosity", PF_FEATURE_VISCOSITY},
+                                   {"surface_tension", PF_FEATURE_SURFACE_TENSION}};
 
 pf_force_field read_field(const ObjectReader& r) {
     r.p.check_keys(r.obj, r.path, {"type", "position", "vector", "strength", "radius", "drag"});
@@ -229,6 +230,13 @@ pf_viscosity read_viscosity(const ObjectReader& r) {
     return v;
 }
 
+pf_surface_tension read_surface_tension(const ObjectReader& r) {
+    r.p.check_keys(r.obj, r.path, {"tension"});
+    pf_surface_tension t = pf_default_surface_tension();
+    r.real("tension", t.tension);
+    return t;
+}
+
 } // namespace
 
 void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
@@ -281,6 +289,13 @@ void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
         s.viscosity = read_viscosity(ObjectReader{p, p.object(*it, "/viscosity"), "/viscosity"});
         s.has_viscosity = true;
     }
+    if (auto it = root.find("surface_tension"); it != root.end()) {
+        if (!(s.features & PF_FEATURE_SURFACE_TENSION))
+            p.fail("/surface_tension", "is given but \"surface_tension\" is not listed in /features");
+        s.surface_tension =
+            read_surface_tension(ObjectReader{p, p.object(*it, "/surface_tension"), "/surface_tension"});
+        s.has_surface_tension = true;
+    }
 }
 
 uint32_t parse_feature_list(const std::string& list, const char* what) {
@@ -302,7 +317,7 @@ uint32_t parse_feature_list(const std::string& list, const char* what) {
         if (!known) {
             throw Error(std::string(what) + ": unknown feature '" + name +
                         "' (force_fields, obstacles, emitters, sinks, domain_motion, vorticity_confinement, whitewater, "
-                        "viscosity, all, none)");
+                        "viscosity, surface_tension, all, none)");
         }
     }
     return bits;

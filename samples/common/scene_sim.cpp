@@ -54,6 +54,8 @@ SceneEffectIds add_scene_effects(pf_sim* sim, const Scene& s) {
         throw Error(s.path + ": /whitewater: refused by the library (the log says why)");
     if (s.has_viscosity && pf_set_viscosity(sim, &s.viscosity) != PF_OK)
         throw Error(s.path + ": /viscosity: refused by the library (the log says why)");
+    if (s.has_surface_tension && pf_set_surface_tension(sim, &s.surface_tension) != PF_OK)
+        throw Error(s.path + ": /surface_tension: refused by the library (the log says why)");
     return ids;
 }
 

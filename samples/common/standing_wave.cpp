@@ -13,7 +13,7 @@ double StandingWave::wavenumber() const { return kPi / length; }
 
 double StandingWave::omega() const {
     const double k = wavenumber();
-    return std::sqrt(gravity * k * std::tanh(k * depth));
+    return std::sqrt((gravity * k + tension * k * k * k / density) * std::tanh(k * depth));
 }
 
 double StandingWave::period() const { return 2.0 * kPi / omega(); }
@@ -36,7 +36,15 @@ std::vector<float> StandingWave::lattice(uint32_t seed, double jitter, double am
     return pos;
 }
 
-double StandingWave::wave_energy_per_mass() const { return gravity * amplitude * amplitude / (4.0 * depth); }
+double StandingWave::wave_energy_per_mass() const {
+    const double k = wavenumber();
+    return (gravity + tension * k * k / density) * amplitude * amplitude / (4.0 * depth);
+}
+
+double StandingWave::surface_energy_per_mass(double a) const {
+    const double k = wavenumber();
+    return tension * k * k * a * a / (4.0 * density * depth);
+}
 
 double mode_amplitude(const StandingWave& wave, const float* pos, size_t count) {
     const int nx = std::max(1, int(std::lround(wave.length / wave.dx)));

@@ -16,16 +16,22 @@ struct StandingWave {
     double thickness = 0.1;   // tank extent along z, m
     double dx = 0.05;         // cell size, m (the lattice puts 2 x 2 x 2 particles in a cell)
     double gravity = 9.81;    // m/s^2, along -y
+    double tension = 0.0;     // surface tension sigma, N/m (0: a pure gravity wave)
+    double density = 1000.0;  // kg/m^3
 
     double wavenumber() const;           // k = pi / length
-    double omega() const;                // linear theory: omega^2 = g k tanh(k h)
+    double omega() const;                // linear theory: omega^2 = (g k + sigma k^3 / rho) tanh(k h)
     double period() const;               // 2 pi / omega, s
     // Particles of a 2x2x2 sub-lattice per cell, each jittered by up to `jitter` of the
     // sub-cell spacing (seeded), kept where y < depth + amplitude * cos(k x) (xyz triples).
     std::vector<float> lattice(uint32_t seed, double jitter = 0.25, double amplitude_override = -1.0) const;
     // Mechanical energy of the wave above the flat tank holding the same particles, per unit
-    // mass, from linear theory's g A^2 / (4 h): the scale energy drift is measured in.
+    // mass, from linear theory's (g + sigma k^2 / rho) A^2 / (4 h): the scale energy drift is
+    // measured in.
     double wave_energy_per_mass() const;
+    // Surface energy of the mode at amplitude a above the flat surface's, per unit mass: sigma
+    // times the extra area (k a)^2 L / 4 per unit width, over the liquid's mass (linear theory).
+    double surface_energy_per_mass(double a) const;
 };
 
 // The mode's amplitude from particle positions: each column's height is its particle count at

@@ -1064,6 +1064,27 @@ void Viewer::ui_effects() {
                     double(stats_.viscosity_residual));
     }
     {
+        // Surface tension: a switch and sigma on a logarithmic slider (water's 0.072 N/m rounds
+        // nothing at game scales; tens of N/m round a 10 cm blob), and the substeps it costs: the
+        // force is explicit, so a large tension on a fine grid raises the count, and where
+        // max_substeps cannot cover it the step uses a smaller tension (SUBSTEPS_CLAMPED).
+        bool on = (features & PF_FEATURE_SURFACE_TENSION) != 0;
+        if (ImGui::Checkbox("surface tension", &on)) {
+            log_.clear();
+            report("pf_set_features",
+                   pf_set_features(sim_.get(), on ? (features | PF_FEATURE_SURFACE_TENSION)
+                                                  : (features & ~uint32_t(PF_FEATURE_SURFACE_TENSION))));
+        }
+        pf_surface_tension t = pf_default_surface_tension();
+        pfs::check(pf_get_surface_tension(sim_.get(), &t), "pf_get_surface_tension");
+        if (ImGui::SliderFloat("tension (N/m)", &t.tension, 0.01f, 1000.0f, "%.3g", ImGuiSliderFlags_Logarithmic)) {
+            log_.clear();
+            report("pf_set_surface_tension", pf_set_surface_tension(sim_.get(), &t));
+        }
+        ImGui::Text("substeps: %u%s", stats_.substeps,
+                    (stats_.flags & PF_FLAG_SUBSTEPS_CLAMPED) ? " (clamped: max substeps too few)" : "");
+    }
+    {
         // Whitewater: a switch, its two rates and its lifetimes (the look is under "look").
         bool on = (features & PF_FEATURE_WHITEWATER) != 0;
         if (ImGui::Checkbox("whitewater", &on)) {

@@ -132,6 +132,10 @@
 #define PF_SLOT_VISC_STATE 7
 #define PF_SLOT_VISC_X 0
 #define PF_SLOT_VISC_SOLID_VEL 3
+/* the surface tension's smoothed liquid fraction per cell: written by st_liquid.comp (which binds
+ * the face accumulators 4 and cell types 6), read by st_force.comp (face velocities 2, face fractions 5, cell
+ * types 6) */
+#define PF_SLOT_ST_LIQUID 3
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0
 /* highest storage slot any kernel uses, plus one: the state guard saves 0..PF_SLOT_COUNT-1 */
@@ -169,6 +173,8 @@
 #define PF_LOC_DOMAIN_ALPHA 2    /* angular acceleration (xyz) */
 /* explicit uniform location of the vorticity confinement's force kernel: epsilon */
 #define PF_LOC_VORTICITY_STRENGTH 0
+/* explicit uniform location of the surface tension's force kernel: sigma, N/m */
+#define PF_LOC_ST_TENSION 0
 /* explicit uniform locations of the whitewater kernels */
 #define PF_LOC_WW_CAPACITY 0   /* uint: particle slots */
 #define PF_LOC_WW_MOTION 1     /* vec4: frame dt, bubble buoyancy, bubble drag, spray drag */

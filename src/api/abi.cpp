@@ -15,12 +15,13 @@ static_assert(offsetof(pf_sim_params, struct_size) == 0 && offsetof(pf_sim_desc,
 static_assert(sizeof(pf_force_field) >= kForceFieldV1 && sizeof(pf_obstacle) >= kObstacleV1 && sizeof(pf_emitter) >= kEmitterV1 &&
                   sizeof(pf_sink) >= kSinkV1 && sizeof(pf_domain_motion) >= kDomainMotionV1 &&
                   sizeof(pf_vorticity_confinement) >= kVorticityConfinementV1 && sizeof(pf_whitewater) >= kWhitewaterV1 &&
-                  sizeof(pf_viscosity) >= kViscosityV1,
+                  sizeof(pf_viscosity) >= kViscosityV1 && sizeof(pf_surface_tension) >= kSurfaceTensionV1,
               "effect descriptors only grow");
 static_assert(offsetof(pf_force_field, struct_size) == 0 && offsetof(pf_obstacle, struct_size) == 0 &&
                   offsetof(pf_emitter, struct_size) == 0 && offsetof(pf_sink, struct_size) == 0 &&
                   offsetof(pf_domain_motion, struct_size) == 0 && offsetof(pf_vorticity_confinement, struct_size) == 0 &&
-                  offsetof(pf_whitewater, struct_size) == 0 && offsetof(pf_viscosity, struct_size) == 0,
+                  offsetof(pf_whitewater, struct_size) == 0 && offsetof(pf_viscosity, struct_size) == 0 &&
+                  offsetof(pf_surface_tension, struct_size) == 0,
               "struct_size leads");
 
 pf_result read_desc(const pf_sim_desc* in, pf_sim_desc& out, const Log& log) {

@@ -30,6 +30,7 @@ constexpr uint32_t kDomainMotionV1 = 56;
 constexpr uint32_t kVorticityConfinementV1 = 8;
 constexpr uint32_t kWhitewaterV1 = 60;
 constexpr uint32_t kViscosityV1 = 20;
+constexpr uint32_t kSurfaceTensionV1 = 8;
 
 template <typename T> struct AbiInfo;
 template <> struct AbiInfo<pf_sim_params> { static constexpr uint32_t v1 = kSimParamsV1; static constexpr const char* name = "pf_sim_params"; };
@@ -45,6 +46,7 @@ template <> struct AbiInfo<pf_domain_motion> { static constexpr uint32_t v1 = kD
 template <> struct AbiInfo<pf_vorticity_confinement> { static constexpr uint32_t v1 = kVorticityConfinementV1; static constexpr const char* name = "pf_vorticity_confinement"; };
 template <> struct AbiInfo<pf_whitewater> { static constexpr uint32_t v1 = kWhitewaterV1; static constexpr const char* name = "pf_whitewater"; };
 template <> struct AbiInfo<pf_viscosity> { static constexpr uint32_t v1 = kViscosityV1; static constexpr const char* name = "pf_viscosity"; };
+template <> struct AbiInfo<pf_surface_tension> { static constexpr uint32_t v1 = kSurfaceTensionV1; static constexpr const char* name = "pf_surface_tension"; };
 
 // A struct_size a caller may pass: 0, or at least 4 and a multiple of 4.
 inline bool valid_struct_size(uint32_t size) { return size == 0 || (size >= 4 && size % 4 == 0); }

@@ -920,7 +920,7 @@ void Simulation::begin_effects_step(float frame_dt) {
 
 EffectBuffers Simulation::effect_buffers() const {
     const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
-    return EffectBuffers{pos_,         vel_,       face_accum_,   face_vel_,  face_vel_old_, face_fraction_,
+    return EffectBuffers{pos_,         vel_,       face_accum_,   p2g_float_sums(), face_vel_,  face_vel_old_, face_fraction_,
                          cell_type_,   cell_count_, count_record_, status_,
                          apic ? &affine_ : nullptr, pressure_, particle_count_, uint64_t(cells_),
                          uint64_t(faces_), step_substeps_, this};

@@ -27,7 +27,8 @@ constexpr char kMagic[8] = {'p', 'f', 'l', 'i', 'p', 's', 'n', 'p'};
 // 4: the host state holds the newest status words read back, which effects learn from (2026-11-27).
 // 5: the status words gained the viscosity's four (20 words); the effects' state its settings
 // and what its recent solves needed (2026-11-27).
-constexpr uint32_t kFormat = 5;
+// 6: the effects' state holds the surface tension's settings (2026-11-27).
+constexpr uint32_t kFormat = 6;
 
 struct Header {
     char magic[8];

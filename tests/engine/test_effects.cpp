@@ -84,7 +84,8 @@ TEST_F(Effects, EachEffectAddsOnlyItsOwnPasses) {
                           Case{PF_FEATURE_EMITTERS, {"emit"}}, Case{PF_FEATURE_SINKS, {"sinks"}},
                           Case{PF_FEATURE_DOMAIN_MOTION, {"domain_motion"}},
                           Case{PF_FEATURE_VORTICITY_CONFINEMENT, {"vorticity_confinement"}},
-                          Case{PF_FEATURE_WHITEWATER, {"whitewater"}}, Case{PF_FEATURE_VISCOSITY, {"viscosity", "viscosity_projection"}}}) {
+                          Case{PF_FEATURE_WHITEWATER, {"whitewater"}}, Case{PF_FEATURE_VISCOSITY, {"viscosity", "viscosity_projection"}},
+                          Case{PF_FEATURE_SURFACE_TENSION, {"surface_tension"}}}) {
         SimPtr sim = make_scene(*this, 0);
         ASSERT_TRUE(sim);
         ASSERT_EQ(pf_set_features(sim.get(), c.feature), PF_OK) << last_log();

@@ -22,6 +22,8 @@ const gl::ProgramId kWhitewaterPrograms[] = {gl::ProgramId::ww_fraction, gl::Pro
 const gl::ProgramId kViscosityPrograms[] = {gl::ProgramId::visc_setup,       gl::ProgramId::visc_stress_start,
                                             gl::ProgramId::visc_stress,      gl::ProgramId::visc_apply_start,
                                             gl::ProgramId::visc_apply,       gl::ProgramId::visc_update};
+const gl::ProgramId kSurfaceTensionPrograms[] = {gl::ProgramId::st_liquid, gl::ProgramId::st_liquid_float,
+                                                 gl::ProgramId::st_force};
 const gl::ProgramId kSinkPrograms[] = {gl::ProgramId::sink_mark, gl::ProgramId::sink_lists, gl::ProgramId::sink_move,
                                        gl::ProgramId::sink_move_apic};
 
@@ -48,6 +50,7 @@ TEST_F(EffectsPipeline, OffEffectsBuildNothingAndTurningOneOnBuildsOnlyItsProgra
     EXPECT_EQ(built(r, kDomainPrograms), 0u);
     EXPECT_EQ(built(r, kVorticityPrograms), 0u);
     EXPECT_EQ(built(r, kViscosityPrograms), 0u);
+    EXPECT_EQ(built(r, kSurfaceTensionPrograms), 0u);
     // Objects of an effect that is off are kept on the host only.
     pf_obstacle o = pf_default_obstacle();
     o.position[0] = o.position[1] = o.position[2] = 0.4f;
@@ -80,9 +83,13 @@ TEST_F(EffectsPipeline, OffEffectsBuildNothingAndTurningOneOnBuildsOnlyItsProgra
     EXPECT_EQ(built(r, kViscosityPrograms), 0u);
     ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_VISCOSITY), PF_OK);
     EXPECT_EQ(built(r, kViscosityPrograms), std::size(kViscosityPrograms));
+    EXPECT_EQ(built(r, kSurfaceTensionPrograms), 0u);
+    ASSERT_EQ(pf_set_features(handle.get(), PF_FEATURE_SURFACE_TENSION), PF_OK);
+    EXPECT_EQ(built(r, kSurfaceTensionPrograms), std::size(kSurfaceTensionPrograms));
     const size_t all = core + std::size(kForceFieldPrograms) + std::size(kObstaclePrograms) +
                        std::size(kEmitterPrograms) + std::size(kSinkPrograms) + std::size(kDomainPrograms) +
-                       std::size(kVorticityPrograms) + std::size(kWhitewaterPrograms) + std::size(kViscosityPrograms);
+                       std::size(kVorticityPrograms) + std::size(kWhitewaterPrograms) + std::size(kViscosityPrograms) +
+                       std::size(kSurfaceTensionPrograms);
     EXPECT_EQ(r.programs_built(), all);
     // Off and on again: nothing is rebuilt.
     ASSERT_EQ(pf_set_features(handle.get(), 0), PF_OK);
@@ -146,6 +153,7 @@ TEST_F(EffectsPipeline, EveryEffectPassBindsEverySlotItsProgramUses) {
     EXPECT_NE(std::find(ran.begin(), ran.end(), "domain_motion"), ran.end());
     EXPECT_NE(std::find(ran.begin(), ran.end(), "vorticity_confinement"), ran.end());
     EXPECT_NE(std::find(ran.begin(), ran.end(), "viscosity"), ran.end());
+    EXPECT_NE(std::find(ran.begin(), ran.end(), "surface_tension"), ran.end());
 }
 
 }  // namespace

@@ -156,6 +156,18 @@ std::vector<BadScene> bad_scenes() {
          "/viscosity/free_slip", "must be true or false"},
         {"viscosity_beyond_float", with(R"("features": ["viscosity"], "viscosity": {"viscosity": 1e39})"),
          "/viscosity/viscosity", "beyond float range"},
+        {"surface_tension_without_feature",
+         with(R"("features": ["viscosity"], "surface_tension": {"tension": 12.5})"), "/surface_tension",
+         "is not listed in /features"},
+        {"surface_tension_unknown_key", with(R"("features": ["surface_tension"], "surface_tension": {"sigma": 12.5})"),
+         "/surface_tension/sigma", "is not a known key"},
+        {"surface_tension_not_object", with(R"("features": ["surface_tension"], "surface_tension": 12.5)"),
+         "/surface_tension", "must be an object"},
+        {"surface_tension_string", with(R"("features": ["surface_tension"], "surface_tension": {"tension": "12.5"})"),
+         "/surface_tension/tension", "must be a number, found string"},
+        {"surface_tension_beyond_float",
+         with(R"("features": ["surface_tension"], "surface_tension": {"tension": 1e39})"), "/surface_tension/tension",
+         "beyond float range"},
     };
 }
 
@@ -248,6 +260,32 @@ TEST(SceneLoader, ViscositySceneCarriesItsViscosity) {
     EXPECT_EQ(b.viscosity.viscosity, d.viscosity);
     EXPECT_EQ(b.viscosity.tolerance, d.tolerance);
     EXPECT_FALSE(pfs::parse_scene(kValid, "none.json").has_viscosity);
+}
+
+// The surface tension scene is a cube of liquid in zero gravity with the tension it names; a
+// surface_tension object starts from pf_default_surface_tension() and takes only the keys given
+// (the range, 0..1000 N/m, is the library's to check when the scene is created).
+TEST(SceneLoader, SurfaceTensionSceneCarriesItsTension) {
+    const pfs::Scene s = pfs::load_scene(std::string(PF_TEST_SCENES_DIR) + "/effects_surface_tension.json");
+    EXPECT_EQ(s.features, uint32_t(PF_FEATURE_SURFACE_TENSION));
+    ASSERT_EQ(s.boxes.size(), 1u);
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(s.params.gravity[a], 0.0f) << a;
+    EXPECT_FLOAT_EQ(s.cell_size, 0.01f);
+    EXPECT_TRUE(s.has_surface_tension);
+    EXPECT_EQ(s.surface_tension.struct_size, uint32_t(sizeof(pf_surface_tension)));
+    EXPECT_FLOAT_EQ(s.surface_tension.tension, 12.5f);
+    const pfs::Scene b = pfs::parse_scene(
+        with(R"("features": ["surface_tension"], "surface_tension": {"tension": 5000})"), "t.json");
+    EXPECT_TRUE(b.has_surface_tension);
+    EXPECT_EQ(b.surface_tension.tension, 5000.0f);  // out of range: refused later, by pf_set_surface_tension
+    const pfs::Scene c = pfs::parse_scene(with(R"("features": ["surface_tension"], "surface_tension": {})"), "t.json");
+    EXPECT_TRUE(c.has_surface_tension);
+    EXPECT_EQ(c.surface_tension.tension, pf_default_surface_tension().tension);
+    // The feature alone, without the object, leaves the library's default in place.
+    const pfs::Scene d = pfs::parse_scene(with(R"("features": ["surface_tension"])"), "t.json");
+    EXPECT_EQ(d.features, uint32_t(PF_FEATURE_SURFACE_TENSION));
+    EXPECT_FALSE(d.has_surface_tension);
+    EXPECT_FALSE(pfs::parse_scene(kValid, "none.json").has_surface_tension);
 }
 
 TEST(SceneLoader, EdgesOfFloatRangeLoadExactly) {

@@ -46,6 +46,7 @@ struct EffectBuffers {
     const gl::Buffer& pos;         // particle positions (vec4)
     const gl::Buffer& vel;         // particle velocities (vec4)
     const gl::Buffer& face_accum;  // P2G sums (momentum, weight) per face
+    bool p2g_float = false;        // face_accum holds floats (else fixed point at sim.inv_*_scale)
     const gl::Buffer& face_vel;    // face velocities
     const gl::Buffer& face_vel_old;  // face velocities at the substep's start (after P2G)
     const gl::Buffer& face_fraction;  // the free surface's theta per face (common/free_surface.glsl)

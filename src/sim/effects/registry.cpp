@@ -6,6 +6,7 @@
 #include "sim/effects/force_fields/force_fields.h"
 #include "sim/effects/obstacles/obstacles.h"
 #include "sim/effects/sinks/sinks.h"
+#include "sim/effects/surface_tension/surface_tension.h"
 #include "sim/effects/viscosity/viscosity.h"
 #include "sim/effects/vorticity_confinement/vorticity_confinement.h"
 #include "sim/effects/whitewater/whitewater.h"
@@ -22,6 +23,7 @@ std::unique_ptr<Effect> make_effect(uint32_t feature, const pf_sim_desc& desc) {
         case PF_FEATURE_VORTICITY_CONFINEMENT: return std::make_unique<VorticityConfinementEffect>(desc);
         case PF_FEATURE_WHITEWATER: return std::make_unique<WhitewaterEffect>(desc);
         case PF_FEATURE_VISCOSITY: return std::make_unique<ViscosityEffect>(desc);
+        case PF_FEATURE_SURFACE_TENSION: return std::make_unique<SurfaceTensionEffect>(desc);
         default: return nullptr;
     }
 }

@@ -8,7 +8,7 @@
 namespace pf {
 
 // Feature bits in the order their effects run within a stage (lowest bit first).
-constexpr uint32_t kEffectCount = 8;
+constexpr uint32_t kEffectCount = 9;
 static_assert(PF_FEATURE_ALL == (1u << kEffectCount) - 1u, "one effect per feature bit");
 
 // The slot of a feature bit's effect (the bit's position); kEffectCount for anything else.

@@ -1,0 +1,79 @@
+#include "sim/effects/surface_tension/surface_tension.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/slots.h"
+#include "gl/allocation_check.h"
+
+namespace pf {
+
+SurfaceTensionEffect::SurfaceTensionEffect(const pf_sim_desc& desc)
+    : cells_(uint64_t(desc.grid_size[0]) * desc.grid_size[1] * desc.grid_size[2]),
+      density_(desc.density > 0.0f ? desc.density : 1000.0f),
+      dx_(desc.cell_size),
+      settings_(pf_default_surface_tension()) {}
+
+pf_result SurfaceTensionEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
+    for (gl::ProgramId id : {gl::ProgramId::st_liquid, gl::ProgramId::st_liquid_float, gl::ProgramId::st_force}) {
+        if (std::string error = runner.prepare(id); !error.empty())
+            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    }
+    const uint64_t bytes = cells_ * 4;
+    if (pf_result r = gl::check_storage_block(gl, log, bytes, std::string(fn) + ": surface tension needs",
+                                              "(4 per cell)", "use a smaller grid");
+        r != PF_OK)
+        return r;
+    liquid_ = gl::Buffer(gl, size_t(bytes), GL_DYNAMIC_COPY, "surface_tension_liquid");
+    if (pf_result r = gl::check_allocated(gl, log, std::string(fn) + ": allocating the surface tension's field (" +
+                                                       std::to_string(bytes >> 20) + " MiB)");
+        r != PF_OK)
+        return r;
+    stat_ = runner.add_stat("surface_tension", PF_PASS_GRID_FORCES);
+    return PF_OK;
+}
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}
+
+CflBound SurfaceTensionEffect::cfl_bound(float speed) const {
+    (void)speed;
+    CflBound bound;
+    if (settings_.tension > 0.0f)
+        bound.max_dt = kLimitShare * float(std::sqrt(0.5 * double(density_) * double(dx_) * dx_ * dx_ /
+                                                     (2.0 * kPi * settings_.tension)));
+    return bound;
+}
+
+float SurfaceTensionEffect::stable_tension(float dt) const {
+    // The limit solved for sigma: sigma = share^2 rho_mean dx^3 / (2 pi dt^2).
+    const double share = kLimitShare;
+    const double stable = share * share * 0.5 * double(density_) * double(dx_) * dx_ * dx_ / (2.0 * kPi * double(dt) * dt);
+    return float(std::min(double(settings_.tension), stable));
+}
+
+void SurfaceTensionEffect::run(EffectStage stage, PassRunner& runner, const EffectBuffers& b) {
+    if (stage != EffectStage::after_classify || settings_.tension <= 0.0f) return;
+    runner.run({b.p2g_float ? gl::ProgramId::st_liquid_float : gl::ProgramId::st_liquid, stat_, b.cells,
+                {{PF_SLOT_FACE_ACCUM, &b.face_accum}, {PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_ST_LIQUID, &liquid_}}});
+    runner.run({gl::ProgramId::st_force, stat_, b.faces,
+                {{PF_SLOT_FACE_VEL, &b.face_vel}, {PF_SLOT_FACE_FRACTION, &b.face_fraction},
+                 {PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_ST_LIQUID, &liquid_}},
+                {},
+                {Uniform::float1(PF_LOC_ST_TENSION, stable_tension(frame_dt_ / float(b.substeps)))}});
+}
+
+pf_result SurfaceTensionEffect::restore_state(ByteReader& in, const Log& log, const char* fn) {
+    pf_surface_tension t{};
+    if (!in.get(t))
+        return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": the surface tension in the snapshot is truncated");
+    const Log silent;
+    if (validate_surface_tension(t, silent, fn) != PF_OK)
+        return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": the surface tension in the snapshot is invalid");
+    settings_ = t;
+    return PF_OK;
+}
+
+}  // namespace pf
