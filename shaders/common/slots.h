@@ -132,9 +132,11 @@
 #define PF_SLOT_VISC_STATE 7
 #define PF_SLOT_VISC_X 0
 #define PF_SLOT_VISC_SOLID_VEL 3
-/* the surface tension's smoothed liquid fraction per cell: written by st_liquid.comp (which binds
- * the face accumulators 4 and cell types 6), read by st_force.comp (face velocities 2, face fractions 5, cell
- * types 6) */
+/* the surface tension's liquid fraction per cell, raw and smoothed: the raw one written by
+ * st_fraction.comp (which binds the face accumulators 4) and read by st_liquid.comp (cell types
+ * 6), which writes the smoothed one, read by st_force.comp (face velocities 2, face fractions 5,
+ * cell types 6) */
+#define PF_SLOT_ST_FRACTION 1
 #define PF_SLOT_ST_LIQUID 3
 /* storage block of the generic fill kernel */
 #define PF_SLOT_FILL 0

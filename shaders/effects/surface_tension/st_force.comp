@@ -1,15 +1,18 @@
-// Surface tension (PF_FEATURE_SURFACE_TENSION), second pass, per face: the pressure jump
-// p_liquid - p_air = sigma kappa across the free surface, imposed the ghost-fluid way (Kang,
-// Fedkiw & Liu 2000). The surface's pressure is sigma kappa instead of 0, so sim/velocity_update.comp
-// would subtract (dt / (rho dx)) (p_hi - p_lo) / theta with sigma kappa as the AIR side's p, theta
-// from the face's fraction as there. The term sigma kappa / theta is known before the solve and the
-// update is linear in it, so it is added to the face velocity here, before the pressure setup,
-// and the projection (p = 0 at the surface) then gives exactly the jump's solution: a uniform
-// jump around a drop moves nothing, and only differences of curvature drive flow.
-// kappa = div n at a cell's centre, n the outward unit normal -grad L / |grad L| of st_liquid.comp's
-// field L at the cell's 8 corners (gradients from the 2 x 2 x 2 cells around each), taken at the
-// surface theta of the way from the FLUID centre to the AIR one and clamped to
-// kMaxCurvature / dx (a sphere one cell across: smaller features are not resolved).
+// Surface tension (PF_FEATURE_SURFACE_TENSION), third pass, per FLUID cell beside AIR: the
+// pressure jump p_liquid - p_air = sigma kappa across the free surface, imposed the ghost-fluid way
+// (Kang, Fedkiw & Liu 2000). The surface's pressure is sigma kappa instead of 0, so
+// sim/velocity_update.comp would subtract (dt / (rho dx)) (p_hi - p_lo) / theta with sigma kappa as
+// the AIR side's p, theta the face's fraction as there. That term is known before the solve and
+// the update is linear in it, so it is added to the face velocity here, before the pressure setup,
+// and the projection (p = 0 at the surface) then gives exactly the jump's solution.
+// kappa = div n at the centres of the cell's AIR neighbours, n the outward unit normal
+// -grad L / |grad L| of st_liquid.comp's field L at each centre's 8 corners (gradients from the
+// 2 x 2 x 2 cells around each), averaged, moved to the surface and clamped to kMaxCurvature / dx
+// (a sphere one cell across: smaller features are not resolved). One value per cell, on all its
+// AIR faces: a jump that differs between the faces of a cell whose surface is near its centre
+// (theta small) is divided by theta and drove a drop unstable; a uniform one moves nothing, so
+// only differences of curvature between cells drive flow. Curvature taken at the FLUID centres
+// was worse: the field saturates inside the liquid and its gradient there is noise.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_FACE_VEL) buffer FaceVel { float face_vel[]; };

@@ -16,7 +16,8 @@ SurfaceTensionEffect::SurfaceTensionEffect(const pf_sim_desc& desc)
       settings_(pf_default_surface_tension()) {}
 
 pf_result SurfaceTensionEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : {gl::ProgramId::st_liquid, gl::ProgramId::st_liquid_float, gl::ProgramId::st_force}) {
+    for (gl::ProgramId id : {gl::ProgramId::st_fraction, gl::ProgramId::st_fraction_float, gl::ProgramId::st_liquid,
+                             gl::ProgramId::st_force}) {
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
@@ -25,9 +26,10 @@ pf_result SurfaceTensionEffect::init(const gl::Api& gl, PassRunner& runner, cons
                                               "(4 per cell)", "use a smaller grid");
         r != PF_OK)
         return r;
+    fraction_ = gl::Buffer(gl, size_t(bytes), GL_DYNAMIC_COPY, "surface_tension_fraction");
     liquid_ = gl::Buffer(gl, size_t(bytes), GL_DYNAMIC_COPY, "surface_tension_liquid");
-    if (pf_result r = gl::check_allocated(gl, log, std::string(fn) + ": allocating the surface tension's field (" +
-                                                       std::to_string(bytes >> 20) + " MiB)");
+    if (pf_result r = gl::check_allocated(gl, log, std::string(fn) + ": allocating the surface tension's fields (" +
+                                                       std::to_string((2 * bytes) >> 20) + " MiB)");
         r != PF_OK)
         return r;
     stat_ = runner.add_stat("surface_tension", PF_PASS_GRID_FORCES);
@@ -56,8 +58,10 @@ float SurfaceTensionEffect::stable_tension(float dt) const {
 
 void SurfaceTensionEffect::run(EffectStage stage, PassRunner& runner, const EffectBuffers& b) {
     if (stage != EffectStage::after_classify || settings_.tension <= 0.0f) return;
-    runner.run({b.p2g_float ? gl::ProgramId::st_liquid_float : gl::ProgramId::st_liquid, stat_, b.cells,
-                {{PF_SLOT_FACE_ACCUM, &b.face_accum}, {PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_ST_LIQUID, &liquid_}}});
+    runner.run({b.p2g_float ? gl::ProgramId::st_fraction_float : gl::ProgramId::st_fraction, stat_, b.cells,
+                {{PF_SLOT_FACE_ACCUM, &b.face_accum}, {PF_SLOT_ST_FRACTION, &fraction_}}});
+    runner.run({gl::ProgramId::st_liquid, stat_, b.cells,
+                {{PF_SLOT_ST_FRACTION, &fraction_}, {PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_ST_LIQUID, &liquid_}}});
     runner.run({gl::ProgramId::st_force, stat_, b.faces,
                 {{PF_SLOT_FACE_VEL, &b.face_vel}, {PF_SLOT_FACE_FRACTION, &b.face_fraction},
                  {PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_ST_LIQUID, &liquid_}},

@@ -1,9 +1,9 @@
 // Surface tension (PF_FEATURE_SURFACE_TENSION): the pressure jump sigma * kappa across the free
 // surface, imposed the ghost-fluid way (Kang, Fedkiw & Liu 2000). Per substep, after the cells are
-// classified and before the pressure solve, two grid passes (shaders/effects/surface_tension/): a
-// smoothed liquid fraction per cell from the particle counts (st_liquid.comp), then on each face
-// between liquid and air the curvature of that field and the jump's term of the velocity update,
-// added ahead of the solve (st_force.comp). Explicit in time: the substep stays below
+// classified and before the pressure solve, three grid passes (shaders/effects/surface_tension/): a
+// liquid fraction per cell from the P2G weights (st_fraction.comp), smoothed (st_liquid.comp), then
+// per liquid cell beside air the curvature of that field and the jump's term of the velocity
+// update on its faces to air, added ahead of the solve (st_force.comp). Explicit in time: the substep stays below
 // Brackbill's capillary limit (cfl_bound). Pass list entry "surface_tension" in the
 // PF_PASS_GRID_FORCES group (docs/effects.md, docs/design.md §9.9).
 #pragma once
@@ -53,7 +53,7 @@ private:
     float dx_ = 0.0f;          // m
     float frame_dt_ = 0.0f;    // this step's, s
     pf_surface_tension settings_{};
-    gl::Buffer liquid_;  // per cell: the smoothed liquid fraction (float)
+    gl::Buffer fraction_, liquid_;  // per cell: the liquid fraction, raw and smoothed (float)
     StatId stat_ = 0;
 };
 
