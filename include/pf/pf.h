@@ -373,7 +373,8 @@ enum {
     PF_FLAG_NONFINITE = 1u << 1,       /**< a non-finite velocity was found and zeroed */
     PF_FLAG_SPEED_CLAMPED = 1u << 2,   /**< a particle exceeded max_speed and was clamped */
     PF_FLAG_SUBSTEPS_CLAMPED = 1u << 3, /**< CFL wanted more than max_substeps: particles moved more than
-                                             cfl cells per substep (the step is less accurate, docs/stability.md) */
+                                             cfl cells per substep (the step is less accurate, docs/stability.md),
+                                             or surface tension's capillary limit did (it acted weaker) */
     PF_FLAG_VOLUME_LOST = 1u << 4,     /**< liquid_volume (mass over density) fell more than
                                             params.volume_loss_limit below the particles' rest volume
                                             (count / fill_particles_per_cell cells): the liquid has

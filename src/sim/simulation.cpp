@@ -776,9 +776,10 @@ void Simulation::raise_flags(uint32_t bits) const {
                                "(PF_FLAG_P2G_OVERFLOW)"},
         {PF_FLAG_NONFINITE, "a non-finite particle velocity was found and set to 0 (PF_FLAG_NONFINITE)"},
         {PF_FLAG_SPEED_CLAMPED, "a particle exceeded desc.max_speed and was slowed to it (PF_FLAG_SPEED_CLAMPED)"},
-        {PF_FLAG_SUBSTEPS_CLAMPED, "the frame needs more than params.max_substeps CFL substeps: particles cross more "
-                                   "than params.cfl cells per substep, so the step is less accurate "
-                                   "(PF_FLAG_SUBSTEPS_CLAMPED)"},
+        {PF_FLAG_SUBSTEPS_CLAMPED, "the frame needs more than params.max_substeps substeps: particles cross more "
+                                   "than params.cfl cells per substep, so the step is less accurate, or an effect's "
+                                   "own limit (surface tension's) is longer than the substeps allow, so it acts "
+                                   "weaker (PF_FLAG_SUBSTEPS_CLAMPED)"},
         {PF_FLAG_ENERGY_GAINED, "the liquid's mechanical energy rose more than params.energy_gain_limit above its "
                                 "reference without input (pf_stats.energy_drift): the step is numerically unsound, "
                                 "typically an unconverged pressure solve; a converged solver (PF_QUALITY_BALANCED) "
@@ -920,10 +921,9 @@ void Simulation::begin_effects_step(float frame_dt) {
 
 EffectBuffers Simulation::effect_buffers() const {
     const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
-    return EffectBuffers{pos_,         vel_,       face_accum_,   p2g_float_sums(), face_vel_,  face_vel_old_, face_fraction_,
-                         cell_type_,   cell_count_, count_record_, status_,
-                         apic ? &affine_ : nullptr, pressure_, particle_count_, uint64_t(cells_),
-                         uint64_t(faces_), step_substeps_, this};
+    return EffectBuffers{pos_,       vel_,          face_accum_, p2g_float_sums(), face_vel_, face_vel_old_,
+                         face_fraction_, cell_type_, count_record_, status_,     apic ? &affine_ : nullptr,
+                         pressure_,  particle_count_, uint64_t(cells_), uint64_t(faces_), step_substeps_, this};
 }
 
 void Simulation::project(PassRunner& runner, const gl::Buffer& potential, const gl::Buffer& report, StatId stat,

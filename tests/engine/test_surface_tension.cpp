@@ -19,13 +19,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-pf_stats stats_of(pf_sim* sim) {
-    (void)read_all(sim);
-    pf_stats st{};
-    st.struct_size = sizeof st;
-    EXPECT_EQ(pf_get_stats(sim, &st), PF_OK);
-    return st;
-}
 
 // The shape of a body of particles: its centroid, and the radius that 99% of them lie within over
 // the radius of the sphere of its volume (1 for a sphere, up to the particles' last half cell;
@@ -122,7 +115,7 @@ TEST_F(SurfaceTension, CubeRelaxesTowardASphere) {
         now = shape_of(read_all(sim.get()), volume, mass);
         most_kinetic = std::max(most_kinetic, now.kinetic);
     }
-    const pf_stats st = stats_of(sim.get());
+    const pf_stats st = settled_stats(sim.get());
     std::printf("roundness %.3f -> %.3f, most kinetic %.4f J of %.4f released, volume %.6f of %.6f m^3, substeps %u, "
                 "flags 0x%x\n",
                 start.roundness, now.roundness, most_kinetic, released, st.liquid_volume, volume, st.substeps, st.flags);
@@ -213,7 +206,7 @@ TEST_F(SurfaceTension, CapillaryWaveHasTheTheoreticalFrequency) {
         if (f > reference_frame) gain = std::max(gain, (e - e_ref) / e_wave);
     }
     const pfs::WaveFit fit = pfs::fit_wave(t, a);
-    const pf_stats st = stats_of(sim.get());
+    const pf_stats st = settled_stats(sim.get());
     std::printf("capillary wave: a0 %.4f m, period %.4f s (theory %.4f, %+.2f%%), loss/period %.1f%% (%u extrema), "
                 "energy gain max %.3f of the wave's, substeps %u, flags 0x%x\n",
                 a[0], fit.period, wave.period(), 100.0 * (fit.period / wave.period() - 1.0), 100.0 * fit.loss_per_period,
@@ -238,10 +231,10 @@ TEST_F(SurfaceTension, SubstepsFollowTheCapillaryLimitAndTheSmallestGridStaysSta
     ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
     ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
     const double limit = 0.5 * std::sqrt(1000.0 * 1e-6 / (4.0 * kPi * 12.5));
-    EXPECT_EQ(stats_of(sim.get()).substeps, uint32_t(std::ceil((1.0 / 60.0) / limit)));
+    EXPECT_EQ(settled_stats(sim.get()).substeps, uint32_t(std::ceil((1.0 / 60.0) / limit)));
     ASSERT_EQ(pf_set_features(sim.get(), 0), PF_OK);
     ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
-    EXPECT_LT(stats_of(sim.get()).substeps, 3u);  // at rest, without it: the CFL's one or two
+    EXPECT_LT(settled_stats(sim.get()).substeps, 3u);  // at rest, without it: the CFL's one or two
 
     SimPtr tiny = zero_g(4, 1000.0f, &d);
     ASSERT_TRUE(tiny);
@@ -258,7 +251,7 @@ TEST_F(SurfaceTension, SubstepsFollowTheCapillaryLimitAndTheSmallestGridStaysSta
     ASSERT_EQ(p.count(), pos.size() / 3);
     for (float x : p.pos) ASSERT_TRUE(std::isfinite(x) && x >= 0.0f && x <= 0.04f) << x;
     const Shape s = shape_of(p, double(p.count()) * 1e-6 / 8.0, mass);
-    const pf_stats st = stats_of(tiny.get());
+    const pf_stats st = settled_stats(tiny.get());
     std::printf("tiny drop: kinetic %.3g J (%.3g of its surface energy), substeps %u, flags 0x%x\n", s.kinetic,
                 s.kinetic / surface_energy, st.substeps, st.flags);
     EXPECT_LT(s.kinetic, 0.01 * surface_energy);

@@ -20,14 +20,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The stats once the GPU has finished every step so far (reading the particles back waits for it).
-pf_stats stats_of(pf_sim* sim) {
-    (void)read_all(sim);
-    pf_stats st{};
-    st.struct_size = sizeof st;
-    EXPECT_EQ(pf_get_stats(sim, &st), PF_OK);
-    return st;
-}
 
 class Viscosity : public GpuTest {
 protected:
@@ -66,7 +58,7 @@ std::vector<double> Viscosity::vortex_energy(float mu, uint32_t free_slip, int f
         e.push_back(kinetic_energy_per_mass(read_all(sim.get())));
     }
     if (mu > 0.0f) {
-        const pf_stats st = stats_of(sim.get());
+        const pf_stats st = settled_stats(sim.get());
         EXPECT_GT(st.viscosity_iterations, 0u);
         EXPECT_LE(st.viscosity_residual, get(sim.get()).tolerance);
     }
@@ -170,7 +162,7 @@ TEST_F(Viscosity, OnlyRemovesEnergy) {
         for (int f = 1; f <= 90; ++f) {
             ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
             if (f % 10 == 0) {
-                const pf_stats st = stats_of(sim.get());
+                const pf_stats st = settled_stats(sim.get());
                 energy[on].push_back(double(st.kinetic_energy) + st.potential_energy);
                 EXPECT_EQ(st.flags & (PF_FLAG_ENERGY_GAINED | PF_FLAG_NONFINITE), 0u) << "frame " << f;
             }
@@ -199,7 +191,7 @@ TEST_F(Viscosity, VeryViscousBlobSpreadsSlowlyAndStaysStableAtThirtyFramesASecon
         ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
         const size_t n = read_all(sim.get()).count();
         for (int f = 0; f < 90; ++f) ASSERT_EQ(pf_step(sim.get(), 1.0f / 30.0f), PF_OK);
-        EXPECT_EQ(stats_of(sim.get()).flags & (PF_FLAG_NONFINITE | PF_FLAG_SPEED_CLAMPED), 0u);
+        EXPECT_EQ(settled_stats(sim.get()).flags & (PF_FLAG_NONFINITE | PF_FLAG_SPEED_CLAMPED), 0u);
         const ParticleState p = read_all(sim.get());
         ASSERT_EQ(p.count(), n);
         float x_lo = 1e9f, x_hi = -1e9f;
@@ -241,12 +233,12 @@ TEST_F(Viscosity, ReportsIterationsAndResidual) {
     ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
     ASSERT_EQ(set(sim.get(), 100.0f, 0, 1), PF_OK);
     for (int f = 0; f < 10; ++f) ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
-    pf_stats st = stats_of(sim.get());
+    pf_stats st = settled_stats(sim.get());
     EXPECT_EQ(st.viscosity_iterations, 1u);
     EXPECT_GT(st.viscosity_residual, get(sim.get()).tolerance);
     ASSERT_EQ(set(sim.get(), 100.0f, 0, 1000), PF_OK);
     for (int f = 0; f < 5; ++f) ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
-    st = stats_of(sim.get());
+    st = settled_stats(sim.get());
     EXPECT_GT(st.viscosity_iterations, 1u);
     EXPECT_LT(st.viscosity_iterations, 1000u);
     EXPECT_LE(st.viscosity_residual, get(sim.get()).tolerance);
@@ -259,7 +251,7 @@ TEST_F(Viscosity, ReportsIterationsAndResidual) {
     EXPECT_GT(dispatches, 0u);
     EXPECT_LE(dispatches, st.substeps * 3 * (issued + 1)) << st.viscosity_iterations << " iterations";
     ASSERT_EQ(pf_set_features(sim.get(), 0u), PF_OK);
-    st = stats_of(sim.get());
+    st = settled_stats(sim.get());
     EXPECT_EQ(st.viscosity_iterations, 0u);
     EXPECT_EQ(st.viscosity_residual, 0.0f);
 }

@@ -187,4 +187,13 @@ inline ParticleState read_all(pf_sim* sim) {
     return p;
 }
 
+// The stats once the GPU has finished every step so far (reading the particles back waits for it).
+inline pf_stats settled_stats(pf_sim* sim) {
+    (void)read_all(sim);
+    pf_stats st{};
+    st.struct_size = sizeof st;
+    EXPECT_EQ(pf_get_stats(sim, &st), PF_OK);
+    return st;
+}
+
 }  // namespace pf::test

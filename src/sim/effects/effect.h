@@ -51,7 +51,6 @@ struct EffectBuffers {
     const gl::Buffer& face_vel_old;  // face velocities at the substep's start (after P2G)
     const gl::Buffer& face_fraction;  // the free surface's theta per face (common/free_surface.glsl)
     const gl::Buffer& cell_type;   // AIR / FLUID / SOLID per cell
-    const gl::Buffer& cell_count;  // particles per cell (uint), from P2G
     const gl::Buffer& count_record;  // the live-count record (PF_COUNT_* in common/slots.h)
     const gl::Buffer& status;      // the step's status words (flags)
     const gl::Buffer* affine;      // APIC affine vectors while params.transfer is APIC, else nullptr
