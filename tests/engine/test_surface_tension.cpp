@@ -89,15 +89,15 @@ protected:
     }
 };
 
-// A cube 10 cells (10 cm) on a side in a 24^3 box, sigma 12.5 N/m (its capillary time
-// sqrt(rho R^3 / sigma) is 0.1 s), for 1 s. Measured on llvmpipe: roundness 1.235 -> 1.055, the
-// most kinetic energy 0.035 J of the 0.146 J the area released, volume kept to 0.1%.
+// A cube 8 cells (8 cm) on a side in a 20^3 box, sigma 12.5 N/m (its capillary time
+// sqrt(rho R^3 / sigma) is 0.07 s), for 0.5 s. Measured on llvmpipe: roundness 1.204 -> 1.050,
+// the most kinetic energy 0.016 J of the 0.093 J the area released, volume 0.6% low.
 TEST_F(SurfaceTension, CubeRelaxesTowardASphere) {
     constexpr float kSigma = 12.5f;
     pf_sim_desc d{};
-    SimPtr sim = zero_g(24, kSigma, &d);
+    SimPtr sim = zero_g(20, kSigma, &d);
     ASSERT_TRUE(sim);
-    const float lo = 0.07f, hi = 0.17f;
+    const float lo = 0.06f, hi = 0.14f;
     const std::vector<float> pos = lattice(d, [&](const float* p) {
         return p[0] > lo && p[0] < hi && p[1] > lo && p[1] < hi && p[2] > lo && p[2] < hi;
     });
@@ -110,7 +110,7 @@ TEST_F(SurfaceTension, CubeRelaxesTowardASphere) {
     const Shape start = shape_of(read_all(sim.get()), volume, mass);
     double most_kinetic = 0;
     Shape now = start;
-    for (int f = 1; f <= 40; ++f) {
+    for (int f = 1; f <= 30; ++f) {
         ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
         now = shape_of(read_all(sim.get()), volume, mass);
         most_kinetic = std::max(most_kinetic, now.kinetic);
@@ -119,7 +119,7 @@ TEST_F(SurfaceTension, CubeRelaxesTowardASphere) {
     std::printf("roundness %.3f -> %.3f, most kinetic %.4f J of %.4f released, volume %.6f of %.6f m^3, substeps %u, "
                 "flags 0x%x\n",
                 start.roundness, now.roundness, most_kinetic, released, st.liquid_volume, volume, st.substeps, st.flags);
-    EXPECT_GT(start.roundness, 1.2);
+    EXPECT_GT(start.roundness, 1.15);
     EXPECT_LT(now.roundness, 1.1);
     // Surface energy turns into motion, never more than the area gave up.
     EXPECT_LT(most_kinetic, released);

@@ -8,7 +8,7 @@
 // kappa = div n at the centres of the cell's AIR neighbours, n the outward unit normal
 // -grad L / |grad L| of st_liquid.comp's field L at each centre's 8 corners (gradients from the
 // 2 x 2 x 2 cells around each), averaged, moved to the surface and clamped to kMaxCurvature / dx
-// (a sphere one cell across: smaller features are not resolved). One value per cell, on all its
+// (a sphere of one cell's radius: smaller features are not resolved). One value per cell, on all its
 // AIR faces: a jump that differs between the faces of a cell whose surface is near its centre
 // (theta small) is divided by theta and drove a drop unstable; a uniform one moves nothing, so
 // only differences of curvature between cells drive flow. Curvature taken at the FLUID centres
@@ -25,7 +25,7 @@ const float kMaxCurvature = 2.0;
 // Below this |grad L| (per cell, summed over a corner's four differences) a corner has no normal.
 const float kMinGradient = 4e-3;
 
-// L at c + offset, the domain's outer cells repeated beyond its walls (a mirror: no normal
+// L at cell c, the domain's outer cells repeated beyond its walls (a mirror: no normal
 // component across a wall).
 float field(ivec3 c) { return liquid[cell_index(clamp(c, ivec3(0), sim.grid.xyz - 1))]; }
 
