@@ -285,7 +285,7 @@ enum {
                                          projection, three passes per conjugate-gradient iteration, and the
                                          projection again) */
     PF_FEATURE_SURFACE_TENSION = 1u << 8, /**< pf_set_surface_tension: the liquid's surface pulls itself
-                                               smooth and round (per substep two grid passes before the
+                                               smooth and round (per substep three grid passes before the
                                                pressure solve; it may raise the substep count) */
     PF_FEATURE_ALL = PF_FEATURE_FORCE_FIELDS | PF_FEATURE_OBSTACLES | PF_FEATURE_EMITTERS |
                      PF_FEATURE_SINKS | PF_FEATURE_DOMAIN_MOTION |

@@ -649,7 +649,7 @@ class Viscosity(_Struct):
 
 class SurfaceTension(_Struct):
     """pf_surface_tension (Feature.SURFACE_TENSION): the liquid's surface pulls itself smooth and
-    round, a pressure jump of tension times the surface's curvature (two grid passes a substep; a
+    round, a pressure jump of tension times the surface's curvature (three grid passes a substep; a
     large tension on a fine grid raises the substep count). tension is the coefficient in N/m,
     0..1000 (water 0.072; at game scales a drop rounds visibly only at tens of N/m). Start from
     SurfaceTension.default(): 0.072 N/m."""
