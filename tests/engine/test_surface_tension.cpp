@@ -19,10 +19,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-
 // The shape of a body of particles: its centroid, and the radius that 99% of them lie within over
 // the radius of the sphere of its volume (1 for a sphere, up to the particles' last half cell;
-// sqrt(3) (pi / 6)^(1/3) = 1.40 for a cube).
+// a cube's corners lie at sqrt(3) (pi / 6)^(1/3) = 1.40, its 99th percentile near 1.2).
 struct Shape {
     double centre[3] = {0, 0, 0};
     double roundness = 0;    // r99 / R_equivalent
