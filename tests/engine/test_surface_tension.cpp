@@ -50,19 +50,6 @@ Shape shape_of(const ParticleState& p, double volume, double particle_mass) {
     return s;
 }
 
-// Particles on a 2 x 2 x 2 lattice per cell (jitter-free) of every cell centre inside `inside`.
-template <typename Inside> std::vector<float> lattice(const pf_sim_desc& d, Inside inside) {
-    std::vector<float> pos;
-    const float s = d.cell_size / 2;
-    for (uint32_t z = 0; z < 2 * d.grid_size[2]; ++z)
-        for (uint32_t y = 0; y < 2 * d.grid_size[1]; ++y)
-            for (uint32_t x = 0; x < 2 * d.grid_size[0]; ++x) {
-                const float p[3] = {(x + 0.5f) * s, (y + 0.5f) * s, (z + 0.5f) * s};
-                if (inside(p)) pos.insert(pos.end(), {p[0], p[1], p[2]});
-            }
-    return pos;
-}
-
 class SurfaceTension : public GpuTest {
 protected:
     // A closed box of n^3 cells of 1 cm in zero gravity with surface tension `sigma` (0: off).
@@ -97,7 +84,7 @@ TEST_F(SurfaceTension, CubeRelaxesTowardASphere) {
     SimPtr sim = zero_g(20, kSigma, &d);
     ASSERT_TRUE(sim);
     const float lo = 0.06f, hi = 0.14f;
-    const std::vector<float> pos = lattice(d, [&](const float* p) {
+    const std::vector<float> pos = lattice_particles(d, [&](const float* p) {
         return p[0] > lo && p[0] < hi && p[1] > lo && p[1] < hi && p[2] > lo && p[2] < hi;
     });
     const std::vector<float> vel(pos.size(), 0.0f);
@@ -128,18 +115,15 @@ TEST_F(SurfaceTension, CubeRelaxesTowardASphere) {
 
 // A drop 4 cells in radius in a 16^3 box at sigma 12.5 N/m, for 1 s: the jump around it is
 // uniform, so only the curvature's errors move it (parasitic currents). Measured on llvmpipe:
-// roundness at most 1.067, the most kinetic energy 3.3e-4 of the drop's surface energy (in the
-// first frames, as the lattice's steps round off), then below 1e-6 of it. With the substep at 0.95
-// of Brackbill's limit instead of half, this drop grew unstable after 0.5 s (docs/effects.md).
+// roundness at most 1.069, the most kinetic energy 4.5e-4 of the drop's surface energy (in the
+// first frames, as the lattice's steps round off), after 0.5 s 2.6e-6 of it. With the substep at the
+// whole of Brackbill's limit instead of half, this drop grew unstable after 0.5 s (docs/effects.md).
 TEST_F(SurfaceTension, SmallDropStaysRoundAndStill) {
     constexpr float kSigma = 12.5f;
     pf_sim_desc d{};
     SimPtr sim = zero_g(16, kSigma, &d);
     ASSERT_TRUE(sim);
-    const float c = 0.08f, r = 0.04f;
-    const std::vector<float> pos = lattice(d, [&](const float* p) {
-        return (p[0] - c) * (p[0] - c) + (p[1] - c) * (p[1] - c) + (p[2] - c) * (p[2] - c) < r * r;
-    });
+    const std::vector<float> pos = ball_particles(d, 0.08f, 0.04f);
     const std::vector<float> vel(pos.size(), 0.0f);
     ASSERT_EQ(pf_add_particles(sim.get(), pos.data(), vel.data(), uint32_t(pos.size() / 3)), PF_OK);
     const double volume = double(pos.size() / 3) * 1e-6 / 8.0, mass = 1e-3 / 8.0;
@@ -237,10 +221,7 @@ TEST_F(SurfaceTension, SubstepsFollowTheCapillaryLimitAndTheSmallestGridStaysSta
 
     SimPtr tiny = zero_g(4, 1000.0f, &d);
     ASSERT_TRUE(tiny);
-    const float c = 0.02f;
-    const std::vector<float> pos = lattice(d, [&](const float* p) {
-        return (p[0] - c) * (p[0] - c) + (p[1] - c) * (p[1] - c) + (p[2] - c) * (p[2] - c) < 0.015f * 0.015f;
-    });
+    const std::vector<float> pos = ball_particles(d, 0.02f, 0.015f);
     ASSERT_GT(pos.size(), 0u);
     const std::vector<float> vel(pos.size(), 0.0f);
     ASSERT_EQ(pf_add_particles(tiny.get(), pos.data(), vel.data(), uint32_t(pos.size() / 3)), PF_OK);

@@ -29,15 +29,8 @@ protected:
         pf_surface_tension t = pf_default_surface_tension();
         t.tension = kSigma;
         EXPECT_EQ(pf_set_surface_tension(handle.get(), &t), PF_OK);
-        const float c = 0.5f * float(n) * kDx, r = radius_cells * kDx, s = kDx / 2;
-        std::vector<float> pos;
-        for (uint32_t z = 0; z < 2 * n; ++z)
-            for (uint32_t y = 0; y < 2 * n; ++y)
-                for (uint32_t x = 0; x < 2 * n; ++x) {
-                    const float p[3] = {(x + 0.5f) * s, (y + 0.5f) * s, (z + 0.5f) * s};
-                    if ((p[0] - c) * (p[0] - c) + (p[1] - c) * (p[1] - c) + (p[2] - c) * (p[2] - c) < r * r)
-                        pos.insert(pos.end(), {p[0], p[1], p[2]});
-                }
+        const float c = 0.5f * float(n) * kDx;
+        const std::vector<float> pos = ball_particles(d, c, radius_cells * kDx);
         const std::vector<float> vel(pos.size(), 0.0f);
         EXPECT_EQ(pf_add_particles(handle.get(), pos.data(), vel.data(), uint32_t(pos.size() / 3)), PF_OK);
         for (int f = 0; f < 15; ++f) EXPECT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);

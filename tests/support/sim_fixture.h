@@ -187,6 +187,27 @@ inline ParticleState read_all(pf_sim* sim) {
     return p;
 }
 
+// Particles on a 2 x 2 x 2 lattice per cell (jitter-free; the grid's origin at 0): every site
+// for which inside(site) holds (xyz triples).
+template <typename Inside> std::vector<float> lattice_particles(const pf_sim_desc& d, Inside inside) {
+    std::vector<float> pos;
+    const float s = d.cell_size / 2;
+    for (uint32_t z = 0; z < 2 * d.grid_size[2]; ++z)
+        for (uint32_t y = 0; y < 2 * d.grid_size[1]; ++y)
+            for (uint32_t x = 0; x < 2 * d.grid_size[0]; ++x) {
+                const float p[3] = {(x + 0.5f) * s, (y + 0.5f) * s, (z + 0.5f) * s};
+                if (inside(p)) pos.insert(pos.end(), {p[0], p[1], p[2]});
+            }
+    return pos;
+}
+
+// The lattice's sites inside a ball of `radius` around (c, c, c).
+inline std::vector<float> ball_particles(const pf_sim_desc& d, float c, float radius) {
+    return lattice_particles(d, [&](const float* p) {
+        return (p[0] - c) * (p[0] - c) + (p[1] - c) * (p[1] - c) + (p[2] - c) * (p[2] - c) < radius * radius;
+    });
+}
+
 // The stats once the GPU has finished every step so far (reading the particles back waits for it).
 inline pf_stats settled_stats(pf_sim* sim) {
     (void)read_all(sim);

@@ -50,10 +50,9 @@ CflBound SurfaceTensionEffect::cfl_bound(float speed) const {
 }
 
 float SurfaceTensionEffect::stable_tension(float dt) const {
-    // The limit solved for sigma: sigma = share^2 rho_mean dx^3 / (2 pi dt^2).
-    const double share = kLimitShare;
-    const double stable = share * share * 0.5 * double(density_) * double(dx_) * dx_ * dx_ / (2.0 * kPi * double(dt) * dt);
-    return float(std::min(double(settings_.tension), stable));
+    // The limit goes as 1 / sqrt(sigma): the tension whose limit is dt is sigma (max_dt / dt)^2.
+    const double ratio = double(cfl_bound(0.0f).max_dt) / double(dt);
+    return float(std::min(double(settings_.tension), double(settings_.tension) * ratio * ratio));
 }
 
 void SurfaceTensionEffect::run(EffectStage stage, PassRunner& runner, const EffectBuffers& b) {
