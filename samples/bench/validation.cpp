@@ -253,6 +253,7 @@ struct Run {
     double dx = 0;
     uint32_t frames = 0, particles = 0, flags = 0;
     double wall_s = 0, substeps = 0;
+    pf_advection advection = PF_ADVECTION_EULER;  // the integrator the run used
     std::vector<double> t;                  // s, one per measurement (frame 0 is the initial state)
     std::map<std::string, std::vector<double>> measured;  // per quantity, m
     std::vector<Comparison> comparisons;    // one per series
@@ -276,7 +277,8 @@ double value_in(const Case& c, const std::string& var, double v, double scale) {
 // the first dimensionless time unit (Martin & Moyce) or of a tenth of a second (MARIN).
 double max_shift_in(const std::string& var) { return var == "t_s" ? 0.25 : 1.0; }
 
-Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, float cfl, bool verbose) {
+Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, float cfl, const pf_advection* advection,
+             bool verbose) {
     Run r;
     pf_sim_desc desc = pf_default_sim_desc();
     desc.gl_get_proc_address = pfs::get_proc;
@@ -285,6 +287,8 @@ Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, fl
     // A substep budget, not a quality choice: let the CFL condition hold at any resolution.
     desc.params.max_substeps = 64;
     if (cfl > 0) desc.params.cfl = cfl;
+    if (advection) desc.params.advection = *advection;
+    r.advection = desc.params.advection;
 
     // The experiment's last data time (s, at this scale) and the frames to cover it, plus room for
     // the alignment shift.
@@ -384,6 +388,7 @@ int run(int argc, char** argv) {
     uint32_t cells = 16;
     double scale = 1.0;
     float cfl = 0.0f;
+    pf_advection advection = PF_ADVECTION_EULER;
     std::vector<pf_quality> presets;
     std::vector<std::string> case_names;
     std::string json_path, data_path = PF_VALIDATION_DATA;
@@ -402,6 +407,10 @@ int run(int argc, char** argv) {
         ->check(CLI::Range(0.1, 100.0));
     app.add_option("--cfl", cfl, "override the presets' cfl (cells a particle may cross per substep)")
         ->check(CLI::Range(0.05f, 16.0f));
+    const CLI::Option* advection_given =
+        app.add_option("--advection", advection, "override the presets' particle integrator")
+            ->transform(pfs::NameMap(pfs::enum_choices(pfs::advection_name, PF_ADVECTION_COUNT), "advection"))
+            ->type_name("NAME");
     app.add_flag("--verbose", verbose, "pflip's info messages");
     try {
         app.parse(argc, argv);
@@ -429,7 +438,7 @@ int run(int argc, char** argv) {
     for (const Case& c : cases) {
         for (const pf_quality quality : presets) {
             const std::string pname = pfs::choice_name(pfs::preset_choices(), quality);
-            const Run r = run_case(c, quality, cells, scale, cfl, verbose);
+            const Run r = run_case(c, quality, cells, scale, cfl, advection_given->count() ? &advection : nullptr, verbose);
             std::printf("\n%s / %s: grid %ux%ux%u, dx %.4g m, %u particles, %u frames, %.2f substeps/frame, %.1f s, flags 0x%x\n",
                         c.name.c_str(), pname.c_str(), r.grid.x, r.grid.y, r.grid.z, r.dx, r.particles, r.frames,
                         r.substeps, r.wall_s, r.flags);
@@ -441,6 +450,7 @@ int run(int argc, char** argv) {
             row["cells"] = cells;
             row["scale"] = scale;
             row["cfl"] = cfl > 0 ? double(cfl) : 1.0;  // every preset's is 1
+            row["advection"] = pfs::advection_name(r.advection);
             row["grid"] = {r.grid.x, r.grid.y, r.grid.z};
             row["cell_size_m"] = r.dx;
             row["particles"] = r.particles;
