@@ -5,6 +5,9 @@
 # (clang, build-fuzz/). Arguments go to the first ctest run only.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# ctest runs one test per core, so llvmpipe gets one thread per test instead of one per core
+# each (the README's Tests section says what that saves). GPU drivers ignore it.
+export LP_NUM_THREADS="${LP_NUM_THREADS:-1}"
 stage() {  # runs one stage and says how long it took (CI time is budgeted per stage)
   local start=$SECONDS
   "$@"
