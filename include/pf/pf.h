@@ -860,8 +860,9 @@ PF_API pf_result pf_get_obstacle_force(const pf_sim* sim, uint32_t id, pf_obstac
 typedef enum pf_emitter_shape {
     PF_EMITTER_BOX = 0,           /**< new particles anywhere in the box (half_extents along the local axes) */
     PF_EMITTER_SPHERE = 1,        /**< anywhere in the ball of `radius` */
-    PF_EMITTER_DISC = 2,          /**< a nozzle: on the disc of `radius` facing local +y, spread along `velocity`
-                                       over the distance it covers in the frame, so a jet leaves it unbroken */
+    PF_EMITTER_DISC = 2,          /**< a nozzle: on the disc of `radius` facing local +y, spread over the flight
+                                       of one frame from it (at `velocity`, gravity acting, which also adds to
+                                       their velocity), so a jet leaves it unbroken, however slow */
     PF_EMITTER_SHAPE_COUNT = 3,
     PF_EMITTER_SHAPE_FORCE32 = 0x7fffffff
 } pf_emitter_shape;

@@ -1,8 +1,9 @@
 // Emitters, once per step before the first substep: invocation i writes new particle i of the
 // step's emission into slot live + i (live: the count record's word, which emit_commit then
-// raises), with the emitter's velocity, at the next point of the emitter's low-discrepancy
-// sequence mapped into its shape by volume-preserving maps, so the particles fill the shape
-// evenly (rate / volume particles per m^3 and s), as a fill does, not in random clumps. Slots at or
+// raises), with the emitter's velocity (a disc's plus what gravity added in flight, below), at
+// the next point of the emitter's low-discrepancy sequence mapped into its shape by
+// volume-preserving maps, so the particles fill the shape evenly (rate / volume particles per
+// m^3 and s), as a fill does, not in random clumps. Slots at or
 // beyond the capacity are skipped (emit_commit flags it). New particles start as plain PIC
 // under APIC (C = 0), like those of pf_add_particles.
 #include "common/sim.glsl"
@@ -43,6 +44,7 @@ void main() {
     vec4 q = emitters[PF_EMITTER_VEC4S * k + 1u];
     vec4 size = emitters[PF_EMITTER_VEC4S * k + 2u];
     vec3 v = emitters[PF_EMITTER_VEC4S * k + 3u].xyz;
+    float frame_dt = emitters[PF_EMITTER_VEC4S * k + 3u].w;
     // Each emitter's sequence has its own fixed shift, so two emitters do not stack their points.
     vec3 r = r3_point(n, uvec3(pcg_hash(u_seed ^ k), pcg_hash(u_seed ^ k ^ 0x5bd1e995u), pcg_hash(u_seed + k)));
     int shape = int(ps.w);
@@ -56,12 +58,15 @@ void main() {
         float phi = kTwoPi * r.z;
         p = size.x * pow(r.x, 1.0 / 3.0) * vec3(sin_t * cos(phi), cos_t, sin_t * sin(phi));
     } else {
-        // Uniform on the disc (local xz plane), then spread along the velocity over the distance
-        // it covers in one frame: the frame's particles leave as an unbroken jet.
+        // Uniform on the disc (local xz plane), then where it would be had it left the disc tau
+        // ago, tau spread over one frame, in free flight (the body acceleration acting): the
+        // frame's particles join the previous frame's, which the step accelerated the same way,
+        // so even a slow pour leaves as an unbroken jet.
         float rad = size.x * sqrt(r.x), phi = kTwoPi * r.y;
         p = vec3(rad * cos(phi), 0.0, rad * sin(phi));
-        float speed = length(v);
-        along = speed > 0.0 ? v * (size.w * r.z / speed) : vec3(0.0);
+        float tau = frame_dt * r.z;
+        along = v * tau + 0.5 * sim.gravity.xyz * (tau * tau);
+        v += sim.gravity.xyz * tau;
     }
     vec3 x = ps.xyz + quat_rotate(q, p) + along;
     pos[slot] = vec4(keep_in_domain(x), 0.0);

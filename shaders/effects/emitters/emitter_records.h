@@ -3,8 +3,9 @@
  * pf_emitter_shape values of pf.h (checked by static_assert). One record is 5 vec4, rewritten
  * every step that emits:
  *   [0] position.xyz, shape id       [1] rotation quaternion (x, y, z, w), unit
- *   [2] box: half extents xyz; sphere, disc: radius, 0, 0; w: disc spread (|velocity| * frame dt, m)
- *   [3] velocity.xyz of the new particles, m/s
+ *   [2] box: half extents xyz; sphere, disc: radius, 0, 0; w: unused
+ *   [3] velocity.xyz of the new particles, m/s; w: the frame's dt, s (a disc spreads its
+ *       particles over the flight of one frame)
  *   [4] x: first new particle of this emitter in the step's emission, y: how many, z: the index
  *       of its first one in the emitter's own sequence (particles it asked for before), mod 2^32
  *       (uint bits) */

@@ -81,12 +81,11 @@ void EmittersEffect::begin_frame(const FrameInfo& frame) {
         const std::array<float, 4> q = unit_quaternion(d.rotation);
         float size[3] = {d.half_extents[0], d.half_extents[1], d.half_extents[2]};
         if (d.shape != PF_EMITTER_BOX) size[0] = d.radius, size[1] = 0.0f, size[2] = 0.0f;
-        const float speed = std::sqrt(d.velocity[0] * d.velocity[0] + d.velocity[1] * d.velocity[1] + d.velocity[2] * d.velocity[2]);
         const float record[PF_EMITTER_VEC4S * 4] = {
             d.position[0],  d.position[1],  d.position[2],  float(d.shape),           //
             q[0],    q[1],    q[2],    q[3],              //
-            size[0],        size[1],        size[2],        speed * frame.frame_dt,   //
-            d.velocity[0],  d.velocity[1],  d.velocity[2],  0.0f,                     //
+            size[0],        size[1],        size[2],        0.0f,                     //
+            d.velocity[0],  d.velocity[1],  d.velocity[2],  frame.frame_dt,           //
             uint_bits(total_), uint_bits(n), uint_bits(uint32_t(e.asked)), 0.0f};
         e.asked += n;
         words_.insert(words_.end(), std::begin(record), std::end(record));
