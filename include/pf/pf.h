@@ -1216,7 +1216,8 @@ typedef struct pf_ssf_params {
     uint32_t filter_iterations;  /**< filter applications, 1..16; 0 = default 1 (bilateral) / 2 (narrow range) */
     float filter_depth_range;    /**< depth difference in metres treated as the same surface, > 0;
                                       0 = default (2 particle radii) */
-    float absorption[3];         /**< Beer-Lambert absorption per metre of liquid, RGB, >= 0 */
+    float absorption[3];         /**< Beer-Lambert absorption per metre of liquid, RGB, >= 0; default (2.5, 0.84,
+                                      0.42) (the thickness is the liquid's depth, not the summed spheres') */
     float refraction;            /**< screen-space refraction offset per unit normal, in fractions of the view */
     float fresnel_f0;            /**< reflectance at normal incidence (water 0.02), 0..1 */
     float specular;              /**< strength of the sun highlight, >= 0 */

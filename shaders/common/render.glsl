@@ -24,6 +24,8 @@ layout(std140, binding = PF_UBO_RENDER) uniform RenderUniforms {
     vec4 filter_size; // filter half-width in metres, pixels per metre at eye depth 1 (perspective) or at
                       // any depth (orthographic), -, -
     vec4 whitewater;  // sprite radius of foam (m), opacity at a sprite's centre, -, -
+    vec4 liquid;      // a particle's liquid volume over its sphere's volume (x; the summed chords
+                      // times x are metres of liquid), -, -, -
 } rnd;
 
 // Larger than any eye depth: "no scene surface here".

@@ -42,10 +42,11 @@ pf_ssf_params full_default_ssf_params() {
     pf_ssf_params p{};
     p.struct_size = uint32_t(sizeof p);
     p.filter = PF_SSF_FILTER_NARROW_RANGE;
-    // Per metre: about a metre of liquid keeps 55% red, 82% green, 90% blue (clear water, tinted).
-    p.absorption[0] = 0.6f;
-    p.absorption[1] = 0.2f;
-    p.absorption[2] = 0.1f;
+    // Per metre of liquid: a metre keeps 8% red, 43% green, 66% blue (a tinted pool's look; the
+    // shipped images' look, which summed overlapping spheres' chords with 0.6, 0.2, 0.1).
+    p.absorption[0] = 2.5f;
+    p.absorption[1] = 0.84f;
+    p.absorption[2] = 0.42f;
     p.refraction = 0.03f;
     p.fresnel_f0 = 0.02f;
     p.specular = 1.0f;

@@ -36,6 +36,7 @@ struct RenderFrame {
     const pf_render_target* target = nullptr;
     float y_sign = 1.0f;  // -1 when the engine's clip origin is GL_UPPER_LEFT
     const pf_ssf_params* ssf = nullptr;
+    double particle_volume = 0.0;  // m^3 of liquid a particle stands for (the simulation's)
     const pf_particle_params* particles = nullptr;
     int width() const { return camera->viewport[2]; }
     int height() const { return camera->viewport[3]; }

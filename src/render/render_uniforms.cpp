@@ -47,8 +47,14 @@ void fill_camera(const pf_camera& camera, float y_sign, const glm::mat4& domain_
     u.target[1] = camera.viewport[1];
 }
 
-void fill_ssf(const pf_ssf_params& p, bool has_scene_depth, bool has_environment, RenderUniforms& u) {
+void fill_ssf(const pf_ssf_params& p, bool has_scene_depth, bool has_environment, double particle_volume,
+              RenderUniforms& u) {
     u.sphere[0] = p.particle_radius;
+    // The thickness pass sums the chords of overlapping spheres, each larger than the liquid it
+    // stands for (at the default radius of half a cell and 8 a cell, 4.19 times): scaled by the
+    // ratio, a column's sum is its depth of liquid.
+    const double r = double(p.particle_radius);
+    u.liquid[0] = float(particle_volume / (4.0 / 3.0 * 3.14159265358979 * r * r * r));
     u.sphere[1] = float(p.filter_radius);
     u.sphere[2] = p.filter_depth_range;
     u.filter[0] = p.filter_world_radius;

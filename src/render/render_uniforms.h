@@ -29,8 +29,9 @@ struct RenderUniforms {
     float filter[4];       // filter half-width in metres, pixels per metre at eye depth 1 (perspective) or
                            // at any depth (orthographic), -, -
     float whitewater[4];   // sprite radius of foam in metres, opacity at a sprite's centre, -, -
+    float liquid[4];       // a particle's liquid volume over its sphere's (thickness scale), -, -, -
 };
-static_assert(sizeof(RenderUniforms) == 5 * 64 + 12 * 16, "RenderUniforms must match the std140 block");
+static_assert(sizeof(RenderUniforms) == 5 * 64 + 13 * 16, "RenderUniforms must match the std140 block");
 
 // Camera part: matrices (inverses in double precision), viewport, planes. `y_sign` is -1 when
 // the engine's clip origin is GL_UPPER_LEFT. The camera must have passed validation (the
@@ -38,8 +39,9 @@ static_assert(sizeof(RenderUniforms) == 5 * 64 + 12 * 16, "RenderUniforms must m
 // the identity otherwise).
 void fill_camera(const pf_camera& camera, float y_sign, const glm::mat4& domain_to_world, RenderUniforms& u);
 // Liquid look; `params` has its defaults resolved; `has_scene_depth` / `has_environment` say
-// which engine textures were given.
-void fill_ssf(const pf_ssf_params& params, bool has_scene_depth, bool has_environment, RenderUniforms& u);
+// which engine textures were given; `particle_volume` (m^3) is the liquid a particle stands for.
+void fill_ssf(const pf_ssf_params& params, bool has_scene_depth, bool has_environment, double particle_volume,
+              RenderUniforms& u);
 // Debug view colours; `params` has its defaults resolved.
 void fill_particles(const pf_particle_params& params, RenderUniforms& u);
 

@@ -98,6 +98,7 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
     frame.camera = &camera;
     frame.target = &target;
     frame.ssf = &params;
+    frame.particle_volume = sim_.particle_volume();
     if ((sim_.features() & PF_FEATURE_WHITEWATER) && params.skip_whitewater == 0)
         return render(frame, {RenderLayerId::liquid_surface, RenderLayerId::whitewater});
     return render(frame, {RenderLayerId::liquid_surface});

@@ -722,8 +722,10 @@ void Simulation::restart_energy_reference() {
     energy_epoch_step_ = steps_ + 1;
 }
 
-double Simulation::particle_mass() const {
-    return double(desc_.density) * std::pow(double(desc_.cell_size), 3) / desc_.fill_particles_per_cell;
+double Simulation::particle_mass() const { return double(desc_.density) * particle_volume(); }
+
+double Simulation::particle_volume() const {
+    return std::pow(double(desc_.cell_size), 3) / desc_.fill_particles_per_cell;
 }
 
 double Simulation::lowest_potential_per_particle() const {

@@ -84,6 +84,8 @@ public:
     void clear_flags();
 
     const pf_sim_desc& desc() const { return desc_; }
+    // m^3 of liquid a particle stands for at rest density.
+    double particle_volume() const;
     const pf_sim_params& params() const { return desc_.params; }
     const Log& log() const { return log_; }
     const gl::Api& api() const { return gl_; }

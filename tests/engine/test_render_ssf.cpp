@@ -222,6 +222,35 @@ TEST_F(RenderSsf, ThickerLiquidAbsorbsMore) {
     EXPECT_GT(thick[2] / thick[0], 1.5 * thin[2] / thin[0]) << "thicker liquid must be more tinted";
 }
 
+// The thickness that absorbs is the depth of liquid, not the summed chords of the overlapping
+// spheres: a slab of 8 layers at the fill's spacing (8 particles a cell of 0.1 m: 0.05 m apart)
+// holds 0.4 m of liquid along the view. With only absorption acting (no Fresnel, highlight or
+// refraction) the light through it is exp(-a T), so T = -ln(red) / a inside the slab's image.
+// Measured: 0.395 m (0.989 of the depth). Before the sum was scaled by a particle's volume over
+// its sphere's, it read 1.63 m (4.08 times; the volumes' ratio is 4.19), which this test
+// failed on. Bound: 10%.
+TEST_F(RenderSsf, ThicknessIsTheDepthOfLiquid) {
+    EngineTarget t(96, 96, GL_RGBA16F);
+    const int vp[4] = {0, 0, 96, 96};
+    const TestCamera c = camera(vp);
+    pf_ssf_params p = pf_default_ssf_params();
+    const float a = 2.0f;
+    p.absorption[0] = p.absorption[1] = p.absorption[2] = a;
+    p.fresnel_f0 = 0.0f;
+    p.specular = 0.0f;
+    p.refraction = 0.0f;
+    add(slab(8, 0.0f));
+    t.write_color(uniform_color(t.width, t.height, 1.0f, 1.0f, 1.0f));
+    t.write_depth(std::vector<float>(size_t(t.width) * t.height, 1.0f));
+    const pf_render_target target{t.fbo, t.color, t.depth, 0};
+    ASSERT_EQ(pf_render_ssf(sim_.get(), &c.cam, &target, &p), PF_OK) << last_log();
+    const std::array<double, 3> mean = mean_rgb(t.read_color(), t.width, 40, 56, 44, 56);  // inside the slab's image
+    const double depth = 8 * 0.05;
+    const double thickness = -std::log(mean[0]) / a;
+    RecordProperty("thickness_over_depth", std::to_string(thickness / depth));
+    EXPECT_NEAR(thickness / depth, 1.0, 0.10) << "thickness " << thickness << " m, liquid " << depth << " m";
+}
+
 // Float targets show every NaN/Inf: none for spheres crossing the near plane, behind the
 // camera, around the camera, far away, tiny or large, with every filter, path and a cube map.
 TEST_F(RenderSsf, OutputIsFiniteEverywhere) {

@@ -53,8 +53,9 @@ void ssf_shade(ivec2 p, out vec4 color, out float window) {
     // Refraction: look up the scene behind, displaced along the normal's screen direction.
     vec2 uv = (vec2(p) + 0.5) * rnd.viewport.zw + rnd.absorption.w * vec2(n_eye.x, n_eye.y * rnd.surface.w);
     vec3 behind = textureLod(u_scene_color, clamp(uv, vec2(0.0), vec2(1.0)), 0.0).rgb;
-    // The thickness has half the resolution: filtered between its texels.
-    float thickness = textureLod(u_thickness, (vec2(p) + 0.5) * rnd.viewport.zw, 0.0).r;
+    // The thickness (half resolution, filtered between its texels) sums the chords of
+    // overlapping spheres: scaled to the depth of liquid they stand for.
+    float thickness = rnd.liquid.x * textureLod(u_thickness, (vec2(p) + 0.5) * rnd.viewport.zw, 0.0).r;
     vec3 transmitted = behind * exp(-rnd.absorption.rgb * thickness);
 
     // World space: normals go through the inverse transpose of inv_view, i.e. view^T.

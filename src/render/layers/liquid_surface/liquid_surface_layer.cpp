@@ -52,7 +52,7 @@ pf_result LiquidSurfaceLayer::prepare(RenderContext& c, const RenderFrame& f) {
 }
 
 void LiquidSurfaceLayer::fill(const RenderFrame& f, RenderUniforms& u) const {
-    fill_ssf(*f.ssf, f.target->scene_depth != 0, f.target->environment_cubemap != 0, u);
+    fill_ssf(*f.ssf, f.target->scene_depth != 0, f.target->environment_cubemap != 0, f.particle_volume, u);
 }
 
 std::vector<RenderPass> LiquidSurfaceLayer::passes(const RenderFrame& f) {
