@@ -9,7 +9,9 @@
 // measured, 0.061 of the wave's), the 3D one 3 cells thick (measured 2026-11-26: loss 5.3-8.1%
 // a period, period within 0.7%, energy rise at most 0.008 of the wave's) and the marker-cell
 // surface 1 cell thick (measured 2026-11-26: loss 21-30% a period, period 2.5-3.2% long, energy
-// rise at most 0.029 of the wave's); the 2-cell tank runs in the long mode only.
+// rise at most 0.029 of the wave's); the 2-cell tank runs in the long mode only, and since
+// 2026-11-27 the 3D tank and the marker-cell surface leave the accurate preset to the 1-cell
+// tank in the fast mode.
 //
 // Measured on llvmpipe (3 periods, 2026-11-25): on the code before issue 17 the fast preset's
 // energy rose to 91 times the wave's energy (2 cells thick) and the balanced preset lost 45% of
@@ -67,7 +69,8 @@ protected:
     // surface: PF_FREE_SURFACE_COUNT keeps the preset's own.
     WaveRun run_wave(pf_quality quality, uint32_t thickness_cells, double periods, const char* label,
                      pf_free_surface surface = PF_FREE_SURFACE_COUNT);
-    void check_presets(uint32_t thickness);
+    // Every preset, or (with_accurate false) the fast and balanced ones.
+    void check_presets(uint32_t thickness, bool with_accurate = true);
 };
 
 WaveRun Waves::run_wave(pf_quality quality, uint32_t thickness_cells, double periods, const char* label,
@@ -126,8 +129,9 @@ void expect_wave(const WaveRun& r, const std::string& label, double loss_bound, 
     EXPECT_FALSE(r.flags & PF_FLAG_ENERGY_GAINED) << label;
 }
 
-void Waves::check_presets(uint32_t thickness) {
+void Waves::check_presets(uint32_t thickness, bool with_accurate) {
     for (size_t i = 0; i < std::size(kPresets); ++i) {
+        if (!with_accurate && kPresets[i] == PF_QUALITY_ACCURATE) continue;
         const std::string label = std::string(kPresetNames[i]) + "_" + std::to_string(thickness);
         const WaveRun r = run_wave(kPresets[i], thickness, periods_to_run(), label.c_str());
         const bool apic_long = kPresets[i] == PF_QUALITY_ACCURATE && long_mode();
@@ -143,13 +147,17 @@ TEST_F(Waves, ThinTankTwoCells) {
     if (!long_mode()) GTEST_SKIP() << "the long mode's (PF_STABILITY_LONG); CI runs the 1-cell tank";
     check_presets(2);
 }
-TEST_F(Waves, Tank3D) { check_presets(long_mode() ? 8 : 3); }
+// CI's fast mode leaves the accurate preset (APIC and separation's rounds, the dearest on
+// llvmpipe) to the thin tank above, as it does for the marker-cell surface below: CI was over
+// its 30 minutes.
+TEST_F(Waves, Tank3D) { check_presets(long_mode() ? 8 : 3, long_mode()); }
 
 // The marker-cell free surface (the original's, opt-in), every preset, 2 cells thick (1 in CI's
-// fast mode).
+// fast mode, without the accurate preset).
 TEST_F(Waves, MarkerCellSurfaceAddsNoEnergy) {
     const uint32_t thickness = long_mode() ? 2 : 1;
     for (size_t i = 0; i < std::size(kPresets); ++i) {
+        if (!long_mode() && kPresets[i] == PF_QUALITY_ACCURATE) continue;
         const std::string label = std::string(kPresetNames[i]) + "_marker_cell_" + std::to_string(thickness);
         const WaveRun r = run_wave(kPresets[i], thickness, periods_to_run(), label.c_str(), PF_FREE_SURFACE_MARKER_CELL);
         expect_wave(r, label, kMarkerCellLossPerPeriodBound, kMarkerCellPeriodErrorBound);
