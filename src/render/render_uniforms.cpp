@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
 
 namespace pf {
 
@@ -54,7 +55,7 @@ void fill_ssf(const pf_ssf_params& p, bool has_scene_depth, bool has_environment
     // stands for (at the default radius of half a cell and 8 a cell, 4.19 times): scaled by the
     // ratio, a column's sum is its depth of liquid.
     const double r = double(p.particle_radius);
-    u.liquid[0] = float(particle_volume / (4.0 / 3.0 * 3.14159265358979 * r * r * r));
+    u.liquid[0] = float(particle_volume / (4.0 / 3.0 * glm::pi<double>() * r * r * r));
     u.sphere[1] = float(p.filter_radius);
     u.sphere[2] = p.filter_depth_range;
     u.filter[0] = p.filter_world_radius;

@@ -891,7 +891,7 @@ pf_result Simulation::set_features(uint32_t features, const char* fn) {
 void Simulation::begin_effects_step(float frame_dt) {
     bool work = false, changes = false;
     uint64_t added = 0;
-    const FrameInfo frame{frame_dt, steps_, std::pow(double(desc_.cell_size), 3) / desc_.fill_particles_per_cell,
+    const FrameInfo frame{frame_dt, steps_, particle_volume(),
                           status_words_.data(), status_step_};
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (!(desc_.features & (1u << i))) continue;

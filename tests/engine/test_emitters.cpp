@@ -24,6 +24,26 @@ pf_sim_desc still_desc() {
     return d;
 }
 
+// A grid with emitters on under the balanced preset (gravity on).
+pf_sim_desc balanced_desc(uint32_t nx, uint32_t ny, uint32_t nz, float cell) {
+    pf_sim_desc d = test_desc(nx, ny, nz, cell);
+    d.features = PF_FEATURE_EMITTERS;
+    EXPECT_EQ(pf_quality_params(PF_QUALITY_BALANCED, &d.params), PF_OK);
+    return d;
+}
+
+// A disc nozzle at (x, y, z) pouring straight down at `speed` m/s, `rate` m^3/s.
+pf_emitter downward_disc(float x, float y, float z, float radius, float speed, float rate) {
+    pf_emitter e = pf_default_emitter();
+    e.shape = PF_EMITTER_DISC;
+    e.position[0] = x, e.position[1] = y, e.position[2] = z;
+    e.radius = radius;
+    e.velocity[1] = -speed;
+    e.rate = rate;
+    e.rate_unit = PF_RATE_VOLUME_PER_SECOND;
+    return e;
+}
+
 // Rotates v by the unit quaternion q (x, y, z, w).
 void rotate(const float q[4], const double v[3], double out[3]) {
     const double x = q[0], y = q[1], z = q[2], w = q[3];
@@ -145,23 +165,16 @@ TEST_F(Emitters, DiscNozzleShootsAnUnbrokenJetAtItsVelocity) {
 // 0.10 times the flux and 2.07 to 2.25 times it between (clumps with gaps; a viscous pour
 // broke into beads). Asserted: every band within 0.25 and 2 times the flux.
 TEST_F(Emitters, SlowPourUnderGravityLeavesAsOneStream) {
-    pf_sim_desc d = test_desc(12, 40, 12, 0.002f);
-    d.features = PF_FEATURE_EMITTERS;
-    ASSERT_EQ(pf_quality_params(PF_QUALITY_BALANCED, &d.params), PF_OK);
+    const pf_sim_desc d = balanced_desc(12, 40, 12, 0.002f);
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
-    pf_emitter e = pf_default_emitter();
-    e.shape = PF_EMITTER_DISC;
-    e.position[0] = 0.012f, e.position[1] = 0.07f, e.position[2] = 0.012f;
-    e.radius = 0.005f;
-    const double speed = 0.1, g = -double(d.params.gravity[1]);
-    e.velocity[1] = -float(speed);
-    e.rate = float(3.14159265358979 * 0.005 * 0.005 * speed);
-    e.rate_unit = PF_RATE_VOLUME_PER_SECOND;
+    const double speed = 0.1, radius = 0.005, g = -double(d.params.gravity[1]);
+    const pf_emitter e = downward_disc(0.012f, 0.07f, 0.012f, float(radius), float(speed),
+                                       float(3.14159265358979 * radius * radius * speed));
     ASSERT_EQ(pf_add_emitter(sim.get(), &e, nullptr), PF_OK) << last_log();
     for (int f = 0; f < 10; ++f) ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
     const ParticleState p = read_all(sim.get());
-    const double band = 0.002, per_second = double(e.rate) / (std::pow(0.002, 3) / d.fill_particles_per_cell);
+    const double band = d.cell_size, per_second = double(e.rate) / (std::pow(double(d.cell_size), 3) / d.fill_particles_per_cell);
     for (double top = 0.004; top < 0.030 - 1e-9; top += band) {
         size_t n = 0;
         for (size_t i = 0; i < p.count(); ++i) {
@@ -182,18 +195,10 @@ TEST_F(Emitters, SlowPourUnderGravityLeavesAsOneStream) {
 // The depth from the particles' mean height (a uniform layer's mean height is half its depth)
 // agrees within 5% too (measured +1.7%).
 TEST_F(Emitters, VolumeRateFillsATankWithThatVolume) {
-    pf_sim_desc d = test_desc(12, 24, 12, 0.025f);
-    d.features = PF_FEATURE_EMITTERS;
-    ASSERT_EQ(pf_quality_params(PF_QUALITY_BALANCED, &d.params), PF_OK);
+    const pf_sim_desc d = balanced_desc(12, 24, 12, 0.025f);
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
-    pf_emitter e = pf_default_emitter();
-    e.shape = PF_EMITTER_DISC;
-    e.position[0] = 0.15f, e.position[1] = 0.5f, e.position[2] = 0.15f;
-    e.radius = 0.05f;
-    e.velocity[1] = -1.0f;
-    e.rate = 0.004f;
-    e.rate_unit = PF_RATE_VOLUME_PER_SECOND;
+    const pf_emitter e = downward_disc(0.15f, 0.5f, 0.15f, 0.05f, 1.0f, 0.004f);
     uint32_t id = 0;
     ASSERT_EQ(pf_add_emitter(sim.get(), &e, &id), PF_OK) << last_log();
     for (int f = 0; f < 120; ++f) ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);

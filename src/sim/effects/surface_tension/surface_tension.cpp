@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include <glm/gtc/constants.hpp>
+
 #include "common/slots.h"
 #include "gl/allocation_check.h"
 
@@ -36,16 +38,12 @@ pf_result SurfaceTensionEffect::init(const gl::Api& gl, PassRunner& runner, cons
     return PF_OK;
 }
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
-
 CflBound SurfaceTensionEffect::cfl_bound(float speed) const {
     (void)speed;
     CflBound bound;
     if (settings_.tension > 0.0f)
         bound.max_dt = kLimitShare * float(std::sqrt(0.5 * double(density_) * double(dx_) * dx_ * dx_ /
-                                                     (2.0 * kPi * settings_.tension)));
+                                                     (2.0 * glm::pi<double>() * settings_.tension)));
     return bound;
 }
 
