@@ -1,7 +1,7 @@
 // Velocity update: subtracts the pressure gradient on faces next to FLUID cells (p = 0 at the
 // free surface, theta of the way from a FLUID centre to an AIR one: the gradient there is
-// divided by theta, common/free_surface.glsl) and marks them valid; wall faces are 0
-// (free-slip) and valid; faces between two AIR cells are reset to 0 and left invalid for
+// divided by theta, common/free_surface.glsl) and marks them valid; wall faces keep what
+// grid_forces and wall_release.comp gave them (0, or liquid leaving the wall) and are valid; faces between two AIR cells are reset to 0 and left invalid for
 // extrapolation. SOLID cells (obstacles) are walls
 // too: a face between a SOLID cell and another keeps the obstacle's normal velocity that
 // obstacle_faces set (free-slip) and is valid; a face inside a solid (two SOLID cells) is reset
@@ -21,7 +21,6 @@ void main() {
     ivec3 f;
     decode_face(id, axis, f);
     if (face_is_wall(axis, f)) {
-        face_vel[id] = 0.0;
         valid[id] = 1u;
         return;
     }

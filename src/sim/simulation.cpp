@@ -137,9 +137,10 @@ pf_result Simulation::init() {
                       r.add_stat("advect", PF_PASS_ADVECT),
                       r.add_stat("metrics", PF_PASS_VELOCITY_UPDATE),
                       r.add_stat("hydrostatic_start", PF_PASS_PRESSURE_SETUP),
-                      r.add_stat("free_surface", PF_PASS_CLASSIFY)};
+                      r.add_stat("free_surface", PF_PASS_CLASSIFY),
+                      r.add_stat("wall_release", PF_PASS_PRESSURE_SETUP)};
     const ProgramId needed[] = {ProgramId::fill, ProgramId::classify, ProgramId::free_surface,
-                                ProgramId::pressure_setup, ProgramId::velocity_update, ProgramId::extrapolate,
+                                ProgramId::wall_release, ProgramId::pressure_setup, ProgramId::velocity_update, ProgramId::extrapolate,
                                 ProgramId::metrics, ProgramId::metrics_finish, ProgramId::hydrostatic_start};
     for (ProgramId id : needed) {
         if (std::string error = r.prepare(id); !error.empty())
@@ -324,6 +325,13 @@ void Simulation::build_substep_table() {
                                    {pos_, cell_type_, cell_count_, pressure_, face_fraction_, cells, particle_count_});
         });
     }
+    // After every force on the faces and the obstacles' SOLID cells: which walls let go.
+    const uint32_t* n = desc_.grid_size;
+    const uint64_t wall_cells = uint64_t(n[1]) * n[2] + uint64_t(n[0]) * n[2] + uint64_t(n[0]) * n[1];
+    t.add("wall_release", [this, wall_cells](const SubstepContext&) {
+        runner_->run({ProgramId::wall_release, stat_.wall_release, wall_cells,
+                      {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_}}});
+    });
     t.add("pressure_setup", [this, cells](const SubstepContext&) {
         run_pressure_setup(*runner_, stat_.pressure_setup, pressure_);
         if (!hydrostatic_start_pending_) return;

@@ -230,6 +230,7 @@ private:
         StatId metrics;  // once per step, in the PF_PASS_VELOCITY_UPDATE group
         StatId hydrostatic_start;  // after particles were added, in the PF_PASS_PRESSURE_SETUP group
         StatId free_surface;  // the ghost-fluid words, in the PF_PASS_CLASSIFY group
+        StatId wall_release;  // walls that let go of their liquid, in the PF_PASS_PRESSURE_SETUP group
     };
 
     gl::MemoryTally memory_;  // declared before every buffer: it outlives them (gl_.userptr points here)

@@ -54,12 +54,13 @@ SimPtr make_scene(Effects& t, uint32_t features) {
     return sim;
 }
 
-// The core step's list, in order: the core passes, the hydrostatic start and the metrics, then
+// The core step's list, in order: the core passes, the metrics, the hydrostatic start, the free
+// surface and the wall release, then
 // the default P2G scheme's sort, the default solver's entries (MGPCG and its V-cycle), then the
 // volume correction's.
 const std::vector<std::string> kCoreList = {"clear",       "p2g", "grid_forces", "classify", "pressure_setup",
                                             "velocity_update", "extrapolate", "g2p", "advect", "metrics",
-                                            "hydrostatic_start", "free_surface", "p2g_tile_sort", "mgpcg", "mgpcg/precondition",
+                                            "hydrostatic_start", "free_surface", "wall_release", "p2g_tile_sort", "mgpcg", "mgpcg/precondition",
                                             "volume_correction_setup", "volume_correction_solve",
                                             "volume_correction_move"};
 

@@ -55,9 +55,9 @@ TEST(SubstepTable, ReplaceKeepsThePlaceAndRunStartsAtTheNamedEntry) {
 
 class SubstepStages : public GpuTest {};
 
-const Names kCore = {"p2g",            "grid_forces",    "classify",        "free_surface", "volume_correction",
-                     "pressure_setup", "pressure_solve", "velocity_update", "extrapolate",  "g2p",
-                     "advect"};
+const Names kCore = {"p2g",          "grid_forces",    "classify",       "free_surface",    "volume_correction",
+                     "wall_release", "pressure_setup", "pressure_solve", "velocity_update", "extrapolate",
+                     "g2p",          "advect"};
 
 TEST_F(SubstepStages, TheDefaultSubstepIsTheCoreStagesInOrder) {
     SimPtr handle = create(test_desc(12, 10, 8));
@@ -75,7 +75,7 @@ TEST_F(SubstepStages, ParametersAndEffectsGiveTheirEntriesTheirPlaces) {
     // Emitters and sinks run once per step, outside the substep.
     EXPECT_EQ(sim.substep_stage_names(),
               (Names{"p2g", "grid_forces", "force_fields/grid_forces", "domain_motion/grid_forces", "classify",
-                     "obstacles/classify", "free_surface", "volume_correction", "pressure_setup", "pressure_solve",
+                     "obstacles/classify", "free_surface", "volume_correction", "wall_release", "pressure_setup", "pressure_solve",
                      "velocity_update", "obstacles/velocity_update", "extrapolate", "g2p", "advect",
                      "obstacles/advect"}));
     // Turned off again: the core table.

@@ -223,6 +223,36 @@ std::vector<double> divergence(const Grid& grid, const std::vector<uint8_t>& typ
     return div;
 }
 
+void wall_release(const Grid& grid, const std::vector<uint8_t>& type, const std::vector<double>& last_pressure,
+                  glm::dvec3 gravity, double density, std::vector<double>& vel) {
+    const double holding = 0.1 * density * glm::length(gravity) * grid.dx;
+    const glm::ivec3 n = grid.cell_dims();
+    for (int k = 0; k < n.z; ++k)
+        for (int j = 0; j < n.y; ++j)
+            for (int i = 0; i < n.x; ++i) {
+                const int c = grid.cell_index(i, j, k);
+                if (type[c] != FLUID || last_pressure[c] > holding) continue;
+                const glm::ivec3 ijk(i, j, k);
+                bool air = false;
+                for (int a = 0; a < 3; ++a)
+                    for (int s = -1; s <= 1; s += 2) {
+                        glm::ivec3 q = ijk;
+                        q[a] += s;
+                        if (q[a] >= 0 && q[a] < n[a]) air = air || type[grid.cell_index(q.x, q.y, q.z)] == AIR;
+                    }
+                if (!air) continue;
+                for (int a = 0; a < 3; ++a) {
+                    if (n[a] < 2) continue;
+                    glm::ivec3 hi = ijk;
+                    hi[a] += 1;
+                    const int low_face = grid.face_index(a, ijk.x, ijk.y, ijk.z);
+                    const int high_face = grid.face_index(a, hi.x, hi.y, hi.z);
+                    if (ijk[a] == 0 && gravity[a] > 0.0) vel[low_face] = std::max(vel[high_face], 0.0);
+                    else if (hi[a] == n[a] && gravity[a] < 0.0) vel[high_face] = std::min(vel[low_face], 0.0);
+                }
+            }
+}
+
 std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
                                  const std::vector<double>& vel, double density, double dt) {
     std::vector<double> b = divergence(grid, type, vel);
@@ -395,8 +425,7 @@ VelocityUpdate velocity_update(const Grid& grid, const std::vector<uint8_t>& typ
     const double scale = dt / (density * grid.dx);
     for (int c = 0; c < 3; ++c)
         for_each_face(grid, c, [&](int i, int j, int k, int id) {
-            if (grid.is_wall_face(c, i, j, k)) {
-                out.vel[id] = 0.0;
+            if (grid.is_wall_face(c, i, j, k)) {  // keeps its value (0, or released by wall_release)
                 out.valid[id] = 1;
                 return;
             }

@@ -97,6 +97,12 @@ GridForces grid_forces(const Grid& grid, const P2GResult& p2g_result, glm::dvec3
 std::vector<double> divergence(const Grid& grid, const std::vector<uint8_t>& type,
                                const std::vector<double>& vel);
 
+// §2 wall release: a FLUID cell touching AIR whose last pressure is at most 0.1·ρ|g|dx gives each of
+// its domain walls that gravity pulls the liquid away from the part of its opposite face's velocity
+// that leaves the wall (grids one cell thick along an axis keep their walls there).
+void wall_release(const Grid& grid, const std::vector<uint8_t>& type, const std::vector<double>& last_pressure,
+                  glm::dvec3 gravity, double density, std::vector<double>& vel);
+
 // §4.5: b = -div·ρ·dx/dt for FLUID cells, 0 elsewhere.
 std::vector<double> pressure_rhs(const Grid& grid, const std::vector<uint8_t>& type,
                                  const std::vector<double>& vel, double density, double dt);
@@ -146,7 +152,7 @@ std::vector<double> multigrid_vcycle(const Grid& grid, const std::vector<uint8_t
 std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uint8_t>& type,
                                          const std::vector<double>& rhs, const std::vector<double>& theta = {});
 
-// §4.7: wall faces 0 and valid; faces between a SOLID cell and another keep their velocity (the
+// §4.7: wall faces keep their velocity (0, or what wall_release gave them) and are valid; faces between a SOLID cell and another keep their velocity (the
 // obstacle's) and are valid, faces between two SOLID cells become 0 and invalid; other interior
 // faces with a FLUID side get the pressure gradient (divided by theta between FLUID and AIR) and
 // are valid; faces between two AIR cells become 0 and invalid.
