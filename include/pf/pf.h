@@ -1234,6 +1234,9 @@ typedef struct pf_ssf_params {
     uint32_t skip_whitewater;    /**< nonzero: pf_render_ssf leaves whitewater out (an engine drawing it itself
                                       from pf_get_whitewater_buffers); default 0: drawn while
                                       PF_FEATURE_WHITEWATER is on */
+    float spray_radius_scale;    /**< radius of spray (a particle with fewer than half a cell's rest count of
+                                      particles in its cell and the six beside it) over particle_radius, in
+                                      (0, 1]; 1 draws spray like the rest; 0 = default 0.5 */
 } pf_ssf_params;
 
 /** What colours the debug sprites of pf_render_particles. */

@@ -425,6 +425,7 @@ class SsfParams(_Struct):
         ("whitewater_radius", ctypes.c_float),
         ("whitewater_opacity", ctypes.c_float),
         ("skip_whitewater", ctypes.c_uint32),
+        ("spray_radius_scale", ctypes.c_float),
     ]
 
 

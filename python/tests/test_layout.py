@@ -148,7 +148,7 @@ def test_whitewater_layout(c_layout):
     assert c_layout[("size", "pf_whitewater_buffers")][0] == ctypes.sizeof(t.WhitewaterBuffers) == 20
     check_appended(c_layout, t.Stats, "pf_stats", "gpu_particle_bytes", ["whitewater_count", "render_whitewater_gpu_ms"])
     check_appended(c_layout, t.SsfParams, "pf_ssf_params", "filter_world_radius",
-                   ["whitewater_radius", "whitewater_opacity", "skip_whitewater"])
+                   ["whitewater_radius", "whitewater_opacity", "skip_whitewater", "spray_radius_scale"])
     assert {m.name: m.value for m in t.WhitewaterKind} == {"SPRAY": 0, "FOAM": 1, "BUBBLE": 2}
     assert c_layout[("value", "PF_FEATURE_WHITEWATER")][0] == t.Feature.WHITEWATER == 1 << 6
     assert c_layout[("value", "PF_FLAG_WHITEWATER_FULL")][0] == t.Flag.WHITEWATER_FULL == 1 << 7

@@ -36,6 +36,7 @@ struct Options {
     std::vector<pfs::Size> sizes{{1280, 720}, {1920, 1080}};
     uint32_t warmup = 60;   // simulated frames before rendering
     uint32_t frames = 60;   // measured render calls per configuration
+    float spray_radius_scale = 0;  // 0: pflip's default
     std::string json_path, csv_path;
 };
 
@@ -79,6 +80,9 @@ void add_options(CLI::App& app, Options& o) {
         ->check(pfs::SizeValidator())
         ->type_name("WxH,...")
         ->capture_default_str();
+    app.add_option("--spray-radius-scale", o.spray_radius_scale,
+                   "radius of spray (isolated particles) over the particle radius, 1 = drawn whole (0 = pflip's default)")
+        ->check(pfs::Range(0.0f, 1.0f));
     app.add_option("--json", o.json_path, "write results as JSON")->type_name("PATH");
     app.add_option("--csv", o.csv_path, "write results as CSV")->type_name("PATH");
 }
@@ -114,6 +118,7 @@ void bench_scene(const Options& opt, const std::string& arg, std::vector<Measure
         look.ssf = c.ssf;
         look.ssf_params.filter = c.filter;
         look.ssf_params.path = c.path;
+        look.ssf_params.spray_radius_scale = opt.spray_radius_scale;
         pfs::RenderTimings timings;
         std::vector<double> wall;
         for (uint32_t i = 0; i < opt.frames + 8; ++i) {  // 8 extra calls let the last timings arrive

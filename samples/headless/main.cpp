@@ -64,6 +64,7 @@ struct Options {
     pf_ssf_filter filter = pf_default_ssf_params().filter;
     uint32_t filter_radius = 0;       // 0: pflip's default
     float filter_world_radius = 0;    // 0: pflip's default
+    float spray_radius_scale = 0;     // 0: pflip's default
     pf_ssf_path path = PF_SSF_PATH_COMPUTE;
     pf_depth_convention depth = PF_DEPTH_STANDARD;
     bool builtin_sky = false;
@@ -115,6 +116,9 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("--filter-world-radius", o.filter_world_radius,
                    "SSF filter's half-width in metres on the liquid (0 = pflip's default: one cell)")
         ->check(CLI::Range(0.0f, 1e6f));
+    app.add_option("--spray-radius-scale", o.spray_radius_scale,
+                   "radius of spray (isolated particles) over the particle radius, 1 = drawn whole (0 = pflip's default)")
+        ->check(CLI::Range(0.0f, 1.0f));
     app.add_option("--path", o.path, "SSF passes as compute or fragment shaders")
         ->transform(pfs::NameMap(
             pfs::Choices<pf_ssf_path>{{"compute", PF_SSF_PATH_COMPUTE}, {"raster", PF_SSF_PATH_RASTER}}, "path"))
@@ -418,6 +422,7 @@ int run(int argc, char** argv) {
         look.ssf_params.filter = opt.filter;
         look.ssf_params.filter_radius = opt.filter_radius;
         look.ssf_params.filter_world_radius = opt.filter_world_radius;
+        look.ssf_params.spray_radius_scale = opt.spray_radius_scale;
         look.ssf_params.path = opt.path;
         look.ssf_params.particle_radius = opt.radius;
         look.particle_params.particle_radius = opt.radius;

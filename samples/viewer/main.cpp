@@ -1175,6 +1175,7 @@ void Viewer::ui_rendering() {
         if (ImGui::Checkbox("whitewater layer", &whitewater)) s.skip_whitewater = whitewater ? 0u : 1u;
         ImGui::SliderFloat("whitewater radius", &s.whitewater_radius, 0.0f, scene_.cell_size, "%.4f m (0 = default)");
         ImGui::SliderFloat("whitewater opacity", &s.whitewater_opacity, 0.0f, 1.0f, "%.2f (0 = default)");
+        ImGui::SliderFloat("spray radius scale", &s.spray_radius_scale, 0.0f, 1.0f, "%.2f (0 = default 0.5, 1 = off)");
         if (ImGui::DragFloat3("light direction", s.light_direction, 0.01f, -1.0f, 1.0f, "%.2f")) {
             if (glm::length(glm::vec3(s.light_direction[0], s.light_direction[1], s.light_direction[2])) < 1e-3f)
                 s.light_direction[1] = 1.0f;

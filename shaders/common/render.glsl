@@ -26,6 +26,10 @@ layout(std140, binding = PF_UBO_RENDER) uniform RenderUniforms {
     vec4 whitewater;  // sprite radius of foam (m), opacity at a sprite's centre, -, -
     vec4 liquid;      // a particle's liquid volume over its sphere's volume (x; the summed chords
                       // times x are metres of liquid), -, -, -
+    vec4 spray;       // spray's radius over a particle's, neighbourhood count below which a particle is
+                      // spray, 1 if the cell counts are current, - (common/ssf_spray.glsl)
+    vec4 grid_origin; // the simulation grid's origin (xyz, simulation coordinates) and cell size (w)
+    ivec4 grid_dims;  // the simulation grid's cells per axis (xyz), -
 } rnd;
 
 // Larger than any eye depth: "no scene surface here".

@@ -37,6 +37,8 @@
 /* and the simulation's live-count record (common/slots.h PF_COUNT_*): the dispatch covers every
  * particle slot in use, the record says how many are live (emitters and sinks decide on the GPU) */
 #define PF_SSBO_PARTICLE_COUNT 1
+/* and its particle count per cell (the spray test of common/ssf_spray.glsl) */
+#define PF_SSBO_CELL_COUNT 2
 /* invocations per workgroup of the compute splats (one particle each) */
 #define PF_SPLAT_WORKGROUP 64
 /* thickness fixed point: 2^16 per metre (15 um steps, 65 km range) */

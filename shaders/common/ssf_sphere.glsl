@@ -1,15 +1,15 @@
 // One particle's sphere as the screen-space passes see it, shared by the raster sprites
 // (render/sphere.vert + fragment shaders) and the compute splats (render/liquid_surface/ssf_splat.comp), so
 // both paths cover the same pixels with the same depths: the camera ray through a pixel
-// centre, intersected with the sphere.
+// centre, intersected with the sphere. A sphere is a vec4: eye-space centre (xyz) and radius (w;
+// common/ssf_spray.glsl gives spray a smaller one).
 #include "common/render.glsl"
 #include "common/ssf_scene.glsl"
 
 // Eye-space sphere centre of a particle position (simulation coordinates: the domain's frame,
 // placed in the world by PF_FEATURE_DOMAIN_MOTION); false when nothing of the sphere can be
 // drawn (wholly outside [near, far], or the camera inside it).
-bool sphere_visible(vec3 position, out vec3 center) {
-    float r = rnd.sphere.x;
+bool sphere_visible(vec3 position, float r, out vec3 center) {
     center = (rnd.domain_view * vec4(position, 1.0)).xyz;
     float dist = length(center);
     return !(-center.z + r < rnd.planes.x || -center.z - r > rnd.planes.y ||
@@ -19,8 +19,9 @@ bool sphere_visible(vec3 position, out vec3 center) {
 // Half size and in-plane axes of a quad through the centre, normal to the eye-centre axis,
 // that holds the sphere's projected silhouette: perspective r d / sqrt(d^2 - r^2) (the
 // section of the silhouette cone there); orthographic r, facing -z.
-void sphere_quad(vec3 center, out float half_size, out vec3 t, out vec3 b) {
-    float r = rnd.sphere.x;
+void sphere_quad(vec4 sphere, out float half_size, out vec3 t, out vec3 b) {
+    vec3 center = sphere.xyz;
+    float r = sphere.w;
     float dist = length(center);
     vec3 axis = render_orthographic() ? vec3(0.0, 0.0, 1.0) : center / dist;
     half_size = render_orthographic() ? r : r * dist / sqrt(dist * dist - r * r);
@@ -36,11 +37,11 @@ void pixel_ray(vec2 frag, out vec3 origin, out vec3 dir) {
 
 // Where the ray through pixel `frag` enters and leaves the sphere, as eye depths, and the eye
 // depth it gains per unit of its length (-dir.z); false when it misses.
-bool sphere_span(vec2 frag, vec3 center, out float front, out float back, out float per_length) {
+bool sphere_span(vec2 frag, vec4 sphere, out float front, out float back, out float per_length) {
     vec3 origin, dir;
     pixel_ray(frag, origin, dir);
     float t_front, t_back;
-    if (!sphere_hit(origin, dir, center, rnd.sphere.x, t_front, t_back)) return false;
+    if (!sphere_hit(origin, dir, sphere.xyz, sphere.w, t_front, t_back)) return false;
     front = -(origin.z + t_front * dir.z);
     back = -(origin.z + t_back * dir.z);
     per_length = -dir.z;
@@ -62,15 +63,15 @@ float span_chord(float front, float back, float per_length, float scene) {
 
 // Eye depth of the sphere's front surface seen through pixel `frag`, if the ray hits it in
 // [near, far] and in front of the engine's scene.
-bool sphere_depth_at(vec2 frag, vec3 center, out float depth) {
+bool sphere_depth_at(vec2 frag, vec4 sphere, out float depth) {
     float back, per_length;
-    return sphere_span(frag, center, depth, back, per_length) && span_front_visible(depth, scene_eye_depth(ivec2(frag)));
+    return sphere_span(frag, sphere, depth, back, per_length) && span_front_visible(depth, scene_eye_depth(ivec2(frag)));
 }
 
 // Length of the ray through pixel `frag` inside the sphere, between the near plane and the
 // nearer of the far plane and the engine's scene surface (0 when none).
-float sphere_chord_at(vec2 frag, vec3 center) {
+float sphere_chord_at(vec2 frag, vec4 sphere) {
     float front, back, per_length;
-    if (!sphere_span(frag, center, front, back, per_length)) return 0.0;
+    if (!sphere_span(frag, sphere, front, back, per_length)) return 0.0;
     return span_chord(front, back, per_length, scene_eye_depth(ivec2(frag)));
 }

@@ -9,6 +9,9 @@
 #ifndef PF_SPHERE_VALUE
 #define PF_SPHERE_VALUE 0
 #endif
+#if !PF_SPHERE_VALUE
+#include "common/ssf_spray.glsl"
+#endif
 
 layout(location = PF_ATTR_POSITION) in vec4 a_position;
 #if PF_SPHERE_VALUE
@@ -18,17 +21,22 @@ layout(location = PF_VARY_VALUE) flat out float v_value;
 #endif
 
 // eye-space point on the quad (the camera ray through the fragment passes through it), and
-// the sphere centre in eye space
+// the sphere: centre in eye space (xyz) and radius (w; the debug view's is always the full one)
 layout(location = PF_VARY_THROUGH) out vec3 v_through;
-layout(location = PF_VARY_CENTER) flat out vec3 v_center;
+layout(location = PF_VARY_CENTER) flat out vec4 v_sphere;
 
 // Outside every clip volume: the quad is dropped.
 const vec4 kCulled = vec4(2.0, 2.0, 2.0, 1.0);
 
 void main() {
+#if PF_SPHERE_VALUE
+    float r = rnd.sphere.x;
+#else
+    float r = particle_radius(a_position.xyz);
+#endif
     vec3 c;
-    bool visible = sphere_visible(a_position.xyz, c);
-    v_center = c;
+    bool visible = sphere_visible(a_position.xyz, r, c);
+    v_sphere = vec4(c, r);
 #if PF_SPHERE_VALUE
     int mode = rnd.modes.x;
     v_value = mode == PF_COLOR_SPEED_ID ? length(a_velocity.xyz)
@@ -44,7 +52,7 @@ void main() {
     }
     float half_size;
     vec3 t, b;
-    sphere_quad(c, half_size, t, b);
+    sphere_quad(v_sphere, half_size, t, b);
     vec2 corner = vec2(float(gl_VertexID & 1), float(gl_VertexID >> 1)) * 2.0 - 1.0;
     vec3 p = c + half_size * (corner.x * t + corner.y * b);
     v_through = p;

@@ -233,6 +233,8 @@ pf_result validate_render_params(const pf_ssf_params& p, const Log& log, const c
                    number_string(p.whitewater_radius));
     if (!(p.whitewater_opacity > 0.0f && p.whitewater_opacity <= 1.0f))
         return bad("params->whitewater_opacity must be in [0, 1] (0 = default), got " + number_string(p.whitewater_opacity));
+    if (!(p.spray_radius_scale > 0.0f && p.spray_radius_scale <= 1.0f))
+        return bad("params->spray_radius_scale must be in [0, 1] (0 = default), got " + number_string(p.spray_radius_scale));
     return PF_OK;
 }
 
@@ -260,6 +262,7 @@ pf_ssf_params resolve_render_params(const pf_ssf_params& in, float cell_size) {
     if (p.filter_world_radius == 0.0f) p.filter_world_radius = cell_size;
     if (p.whitewater_radius == 0.0f) p.whitewater_radius = 0.25f * cell_size;
     if (p.whitewater_opacity == 0.0f) p.whitewater_opacity = 0.5f;
+    if (p.spray_radius_scale == 0.0f) p.spray_radius_scale = 0.5f;
     if (p.filter_iterations == 0) p.filter_iterations = p.filter == PF_SSF_FILTER_NARROW_RANGE ? 2 : 1;
     if (p.filter_depth_range == 0.0f) p.filter_depth_range = 2.0f * p.particle_radius;
     return p;

@@ -37,6 +37,15 @@ struct RenderFrame {
     float y_sign = 1.0f;  // -1 when the engine's clip origin is GL_UPPER_LEFT
     const pf_ssf_params* ssf = nullptr;
     double particle_volume = 0.0;  // m^3 of liquid a particle stands for (the simulation's)
+    // The simulation's grid and particles per cell, for the spray test (common/ssf_spray.glsl).
+    struct Cells {
+        float origin[3] = {0, 0, 0};
+        float cell_size = 1.0f;
+        int32_t dims[3] = {1, 1, 1};
+        float rest_count = 8.0f;  // particles per cell at rest density
+        bool current = false;     // the counts describe the particles
+        GLuint counts = 0;        // GL buffer, one uint per cell
+    } cells;
     const pf_particle_params* particles = nullptr;
     int width() const { return camera->viewport[2]; }
     int height() const { return camera->viewport[3]; }

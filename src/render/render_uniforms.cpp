@@ -72,6 +72,18 @@ void fill_ssf(const pf_ssf_params& p, bool has_scene_depth, bool has_environment
     u.surface[2] = has_environment ? 1.0f : 0.0f;
 }
 
+void fill_spray(float spray_radius_scale, const float origin[3], float cell_size, const int32_t dims[3],
+                float rest_count, bool counts_current, RenderUniforms& u) {
+    u.spray[0] = spray_radius_scale;
+    u.spray[1] = 0.5f * rest_count;  // fewer than half a cell's rest count in seven cells: spray
+    u.spray[2] = counts_current ? 1.0f : 0.0f;
+    for (int a = 0; a < 3; ++a) {
+        u.grid_origin[a] = origin[a];
+        u.grid_dims[a] = dims[a];
+    }
+    u.grid_origin[3] = cell_size;
+}
+
 void fill_particles(const pf_particle_params& p, RenderUniforms& u) {
     u.sphere[0] = p.particle_radius;
     for (int c = 0; c < 3; ++c) {

@@ -30,8 +30,12 @@ struct RenderUniforms {
                            // at any depth (orthographic), -, -
     float whitewater[4];   // sprite radius of foam in metres, opacity at a sprite's centre, -, -
     float liquid[4];       // a particle's liquid volume over its sphere's (thickness scale), -, -, -
+    float spray[4];        // spray's radius over a particle's, neighbourhood count below which a particle is
+                           // spray, 1 if the cell counts are current, -
+    float grid_origin[4];  // simulation grid origin (xyz, simulation coordinates), cell size
+    int32_t grid_dims[4];  // simulation grid cells per axis, -
 };
-static_assert(sizeof(RenderUniforms) == 5 * 64 + 13 * 16, "RenderUniforms must match the std140 block");
+static_assert(sizeof(RenderUniforms) == 5 * 64 + 16 * 16, "RenderUniforms must match the std140 block");
 
 // Camera part: matrices (inverses in double precision), viewport, planes. `y_sign` is -1 when
 // the engine's clip origin is GL_UPPER_LEFT. The camera must have passed validation (the
@@ -42,6 +46,9 @@ void fill_camera(const pf_camera& camera, float y_sign, const glm::mat4& domain_
 // which engine textures were given; `particle_volume` (m^3) is the liquid a particle stands for.
 void fill_ssf(const pf_ssf_params& params, bool has_scene_depth, bool has_environment, double particle_volume,
               RenderUniforms& u);
+// The spray test's part: the simulation's grid, its rest count and whether its counts are current.
+void fill_spray(float spray_radius_scale, const float origin[3], float cell_size, const int32_t dims[3],
+                float rest_count, bool counts_current, RenderUniforms& u);
 // Debug view colours; `params` has its defaults resolved.
 void fill_particles(const pf_particle_params& params, RenderUniforms& u);
 

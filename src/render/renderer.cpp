@@ -99,6 +99,15 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
     frame.target = &target;
     frame.ssf = &params;
     frame.particle_volume = sim_.particle_volume();
+    const pf_sim_desc& d = sim_.desc();
+    for (int a = 0; a < 3; ++a) {
+        frame.cells.origin[a] = d.origin[a];
+        frame.cells.dims[a] = int32_t(d.grid_size[a]);
+    }
+    frame.cells.cell_size = d.cell_size;
+    frame.cells.rest_count = float(d.fill_particles_per_cell);
+    frame.cells.current = sim_.cell_counts_current();
+    frame.cells.counts = sim_.cell_count().id();
     if ((sim_.features() & PF_FEATURE_WHITEWATER) && params.skip_whitewater == 0)
         return render(frame, {RenderLayerId::liquid_surface, RenderLayerId::whitewater});
     return render(frame, {RenderLayerId::liquid_surface});

@@ -277,6 +277,7 @@ void Simulation::upload_uniforms(float dt) {
 void Simulation::run_substep(bool correct_volume) {
     update_substep_table();
     substep_.run(SubstepContext{correct_volume});
+    cell_counts_current_ = true;
 }
 
 void Simulation::update_substep_table() {
@@ -720,6 +721,7 @@ pf_result Simulation::add_particles(const float* xyz, const float* vel, uint32_t
 }
 
 void Simulation::restart_volume_reference() {
+    cell_counts_current_ = false;  // particles were added: their cells are not counted yet
     metrics_first_set_ = false;
     metrics_epoch_step_ = steps_ + 1;  // readbacks of earlier steps measured other particles
     restart_energy_reference();

@@ -86,6 +86,10 @@ public:
     const pf_sim_desc& desc() const { return desc_; }
     // m^3 of liquid a particle stands for at rest density.
     double particle_volume() const;
+    // Particles per cell of the last substep's P2G, and whether they still describe the particles
+    // (a step has run since particles were last added or a snapshot restored).
+    const gl::Buffer& cell_count() const { return cell_count_; }
+    bool cell_counts_current() const { return cell_counts_current_; }
     const pf_sim_params& params() const { return desc_.params; }
     const Log& log() const { return log_; }
     const gl::Api& api() const { return gl_; }
@@ -280,6 +284,7 @@ private:
     // The next substep starts its solve from the hydrostatic estimate (particles were added to
     // cells whose pressure is 0: creation, pf_add_particles, pf_fill_box; docs/design.md §4.5a).
     bool hydrostatic_start_pending_ = true;
+    bool cell_counts_current_ = false;  // cell_count() describes the particles (see its accessor)
     SimUniforms uniform_data_{};
 
     // status (flags, max speed) read back a few steps late, behind fences

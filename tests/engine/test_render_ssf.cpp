@@ -74,6 +74,66 @@ TEST_F(RenderSsf, LiquidExactlyWhereSpheresProjectAndNothingElseChanges) {
     }
 }
 
+// A particle with hardly any liquid around it is drawn as spray: at spray_radius_scale of the
+// radius (default 0.5) once a step has counted the particles per cell, whole before that; a dense
+// block keeps the full radius. Liquid appears exactly where those spheres project, on both paths.
+TEST_F(RenderSsf, IsolatedParticlesAreDrawnAsSpray) {
+    std::vector<float> xyz;  // a 2 x 2 x 2-cell block at 8 a cell, then one particle alone
+    for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i)
+                xyz.insert(xyz.end(), {0.325f + 0.05f * float(i), 0.625f + 0.05f * float(j), 0.725f + 0.05f * float(k)});
+    xyz.insert(xyz.end(), {1.25f, 1.05f, 0.85f});
+    add(xyz);
+    EngineTarget t(320, 240, GL_RGBA8);
+    const int vp[4] = {0, 0, 320, 240};
+    const TestCamera c = camera(vp);
+    const pf_render_target target{t.fbo, t.color, t.depth, 0};
+    const double r = 0.05;  // the default radius, half of a 0.1 m cell
+    // Liquid pixels where `block` (radius r) and `lone` (radius lone_r) project, and the count of
+    // pixels that disagree with that.
+    auto mismatches = [&](pf_ssf_path path, float scale, const std::vector<float>& block, const std::vector<float>& lone,
+                          double lone_r, int* lone_pixels) {
+        t.write_color(checkerboard(t.width, t.height, 8));
+        t.write_depth(std::vector<float>(size_t(t.width) * t.height, 1.0f));
+        const std::vector<float> depth0 = t.read_depth();
+        pf_ssf_params p = pf_default_ssf_params();
+        p.path = path;
+        p.spray_radius_scale = scale;
+        EXPECT_EQ(pf_render_ssf(sim_.get(), &c.cam, &target, &p), PF_OK) << last_log();
+        const std::vector<float> depth1 = t.read_depth();
+        const SphereCoverage a = project_spheres(c, t.width, t.height, block, r);
+        const SphereCoverage b = project_spheres(c, t.width, t.height, lone, lone_r);
+        *lone_pixels = b.covered;
+        int wrong = 0;
+        for (size_t i = 0; i < depth1.size(); ++i) {
+            if (a.ambiguous[i] || b.ambiguous[i]) continue;
+            wrong += (depth1[i] != depth0[i]) != (a.depth[i] > 0.0 || b.depth[i] > 0.0);
+        }
+        return wrong;
+    };
+    const std::vector<float> block0(xyz.begin(), xyz.end() - 3), lone0(xyz.end() - 3, xyz.end());
+    int lone_pixels = 0;
+    for (pf_ssf_path path : {PF_SSF_PATH_COMPUTE, PF_SSF_PATH_RASTER}) {
+        SCOPED_TRACE("path " + std::to_string(path));
+        // Before any step the counts say nothing: every particle whole.
+        EXPECT_EQ(mismatches(path, 0.0f, block0, lone0, r, &lone_pixels), 0);
+    }
+    ASSERT_EQ(pf_step(sim_.get(), 1.0f / 240.0f), PF_OK) << last_log();
+    ParticleState now = read_all(sim_.get());
+    const std::vector<float> block(now.pos.begin(), now.pos.end() - 3), lone(now.pos.end() - 3, now.pos.end());
+    for (pf_ssf_path path : {PF_SSF_PATH_COMPUTE, PF_SSF_PATH_RASTER}) {
+        SCOPED_TRACE("path " + std::to_string(path));
+        int whole = 0, spray = 0, quarter = 0;
+        EXPECT_EQ(mismatches(path, 1.0f, block, lone, r, &whole), 0) << "spray_radius_scale 1: all whole";
+        EXPECT_EQ(mismatches(path, 0.0f, block, lone, 0.5 * r, &spray), 0) << "default: spray at half the radius";
+        EXPECT_EQ(mismatches(path, 0.25f, block, lone, 0.25 * r, &quarter), 0) << "a quarter of the radius";
+        EXPECT_GT(whole, 100);
+        EXPECT_LT(spray, whole / 3);
+        EXPECT_GT(quarter, 0);
+    }
+}
+
 // pf_stats.gpu_memory_bytes counts the renderer's screen-sized textures once a render call has
 // made them: 48 bytes a texel over the ten that do not copy the engine's depth (two RGBA16F,
 // eight 32-bit), at the viewport's size; the particle part stays as it was.

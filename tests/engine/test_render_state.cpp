@@ -177,6 +177,10 @@ TEST_F(RenderState, BadArgumentsAreRefusedAndDrawNothing) {
                 [](pf_ssf_params& p) { p.filter_world_radius = -0.1f; });
     with_params("NaN world filter radius", "params->filter_world_radius",
                 [](pf_ssf_params& p) { p.filter_world_radius = NAN; });
+    with_params("negative spray scale", "params->spray_radius_scale",
+                [](pf_ssf_params& p) { p.spray_radius_scale = -0.5f; });
+    with_params("spray scale 1.5", "params->spray_radius_scale", [](pf_ssf_params& p) { p.spray_radius_scale = 1.5f; });
+    with_params("NaN spray scale", "params->spray_radius_scale", [](pf_ssf_params& p) { p.spray_radius_scale = NAN; });
     with_target("framebuffer not an FBO", "target->framebuffer", {12345, t.color, t.depth, 0});
     with_target("incomplete framebuffer", "target->framebuffer", {empty_fbo, t.color, t.depth, 0});
     with_target("no scene colour", "target->scene_color", {t.fbo, 0, t.depth, 0});

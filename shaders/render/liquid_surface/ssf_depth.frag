@@ -4,12 +4,12 @@
 // test LESS) keeps the nearest sphere.
 #include "common/ssf_sphere.glsl"
 
-layout(location = PF_VARY_CENTER) flat in vec3 v_center;
+layout(location = PF_VARY_CENTER) flat in vec4 v_sphere;
 layout(location = 0) out float o_depth;
 
 void main() {
     float depth;
-    if (!sphere_depth_at(gl_FragCoord.xy, v_center, depth)) discard;
+    if (!sphere_depth_at(gl_FragCoord.xy, v_sphere, depth)) discard;
     o_depth = depth;
     gl_FragDepth = (depth - rnd.planes.x) / (rnd.planes.y - rnd.planes.x);
 }

@@ -7,6 +7,7 @@
 // raster because fragment work is slow on compute-heavy GPUs (H100).
 #include "common/slots.h"
 #include "common/ssf_sphere.glsl"
+#include "common/ssf_spray.glsl"
 
 layout(local_size_x = PF_SPLAT_WORKGROUP) in;
 layout(std430, binding = PF_SSBO_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
@@ -25,11 +26,14 @@ vec2 eye_to_pixel(vec3 p) {
 void main() {
     uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * uint(PF_SPLAT_WORKGROUP);
     if (i >= min(u_count, count_record[PF_COUNT_LIVE])) return;
+    vec3 position = pos[i].xyz;
+    float radius = particle_radius(position);
     vec3 center;
-    if (!sphere_visible(pos[i].xyz, center)) return;
+    if (!sphere_visible(position, radius, center)) return;
+    vec4 sphere = vec4(center, radius);
     float half_size;
     vec3 t, b;
-    sphere_quad(center, half_size, t, b);
+    sphere_quad(sphere, half_size, t, b);
     // Pixel bounds of the quad's corners (all in front of the camera: the quad is culled
     // otherwise, as the raster sprites are).
     vec2 lo = vec2(1e30), hi = vec2(-1e30);
@@ -46,7 +50,7 @@ void main() {
     for (int y = first.y; y <= last.y; ++y) {
         for (int x = first.x; x <= last.x; ++x) {
             float depth;
-            if (sphere_depth_at(vec2(x, y) + 0.5, center, depth))
+            if (sphere_depth_at(vec2(x, y) + 0.5, sphere, depth))
                 imageAtomicMin(io_depth_bits, ivec2(x, y), floatBitsToUint(depth));
         }
     }
@@ -55,7 +59,7 @@ void main() {
     ivec2 t_last = min(ivec2(ceil((hi - 1.0) * 0.5)), imageSize(io_thickness_bits) - 1);
     for (int y = t_first.y; y <= t_last.y; ++y) {
         for (int x = t_first.x; x <= t_last.x; ++x) {
-            float chord = sphere_chord_at(thickness_frag(vec2(x, y) + 0.5), center);
+            float chord = sphere_chord_at(thickness_frag(vec2(x, y) + 0.5), sphere);
             if (chord > 0.0) imageAtomicAdd(io_thickness_bits, ivec2(x, y), uint(chord * PF_THICKNESS_FIXED_SCALE + 0.5));
         }
     }

@@ -4,11 +4,11 @@
 // splats), at half resolution: the ray through each thickness texel's centre.
 #include "common/ssf_sphere.glsl"
 
-layout(location = PF_VARY_CENTER) flat in vec3 v_center;
+layout(location = PF_VARY_CENTER) flat in vec4 v_sphere;
 layout(location = 0) out float o_thickness;
 
 void main() {
-    float chord = sphere_chord_at(thickness_frag(gl_FragCoord.xy), v_center);
+    float chord = sphere_chord_at(thickness_frag(gl_FragCoord.xy), v_sphere);
     if (chord <= 0.0) discard;
     o_thickness = chord;
 }

@@ -5,7 +5,7 @@
 #include "common/render.glsl"
 
 layout(location = PF_VARY_THROUGH) in vec3 v_through;
-layout(location = PF_VARY_CENTER) flat in vec3 v_center;
+layout(location = PF_VARY_CENTER) flat in vec4 v_sphere;
 layout(location = PF_VARY_VALUE) flat in float v_value;
 layout(location = 0) out vec4 o_color;
 
@@ -13,10 +13,10 @@ void main() {
     vec3 origin, dir;
     camera_ray(v_through, origin, dir);
     float t_front, t_back;
-    if (!sphere_hit(origin, dir, v_center, rnd.sphere.x, t_front, t_back)) discard;
+    if (!sphere_hit(origin, dir, v_sphere.xyz, v_sphere.w, t_front, t_back)) discard;
     vec3 hit = origin + t_front * dir;
     if (-hit.z < rnd.planes.x || -hit.z > rnd.planes.y) discard;
-    vec3 normal = (hit - v_center) / rnd.sphere.x;
+    vec3 normal = (hit - v_sphere.xyz) / v_sphere.w;
     float t = clamp((v_value - rnd.color_low.w) / (rnd.color_high.w - rnd.color_low.w), 0.0, 1.0);
     vec3 base = rnd.modes.x == PF_COLOR_UNIFORM_ID ? rnd.color_low.rgb : mix(rnd.color_low.rgb, rnd.color_high.rgb, t);
     float light = 0.3 + 0.7 * max(dot(normal, -dir), 0.0);

@@ -53,6 +53,8 @@ pf_result LiquidSurfaceLayer::prepare(RenderContext& c, const RenderFrame& f) {
 
 void LiquidSurfaceLayer::fill(const RenderFrame& f, RenderUniforms& u) const {
     fill_ssf(*f.ssf, f.target->scene_depth != 0, f.target->environment_cubemap != 0, f.particle_volume, u);
+    fill_spray(f.ssf->spray_radius_scale, f.cells.origin, f.cells.cell_size, f.cells.dims, f.cells.rest_count,
+               f.cells.current, u);
 }
 
 std::vector<RenderPass> LiquidSurfaceLayer::passes(const RenderFrame& f) {
@@ -100,6 +102,7 @@ void LiquidSurfaceLayer::thickness(RenderContext& c, const RenderFrame& f) {
     gl.BlendFunc(GL_ONE, GL_ONE);
     c.bind_texture(PF_TEX_SCENE_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_depth), false);
     gl.UseProgram(thickness_);
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_CELL_COUNT, f.cells.counts);  // spray's radius
     c.draw_spheres();
     gl.Disable(GL_BLEND);
 }
@@ -114,6 +117,7 @@ void LiquidSurfaceLayer::depth(RenderContext& c, const RenderFrame& f) {
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LESS);
     gl.UseProgram(depth_);
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_CELL_COUNT, f.cells.counts);  // spray's radius
     c.draw_spheres();
     gl.Disable(GL_DEPTH_TEST);
 }
@@ -130,6 +134,7 @@ void LiquidSurfaceLayer::splat(RenderContext& c, const RenderFrame& f) {
     c.sim().gl_buffers(b);
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_POS, b.positions);
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_COUNT, b.draw_indirect);
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_CELL_COUNT, f.cells.counts);
     c.bind_texture(PF_TEX_SCENE_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_depth), false);
     c.dispatch_particles(splat_);
 }
