@@ -5,7 +5,9 @@
 // pool's camera and measure the RMS and 95th-percentile angle between the normal the rendered
 // depth implies and straight up, with the median GPU ms of each render pass over the calls.
 // Looks: "default" (pf_default_ssf_params) and "bilateral_8px" (the look before issue 19: the
-// bilateral filter, 8 pixels wide whatever the distance). Output: a table, optionally JSON.
+// bilateral filter, 8 pixels wide whatever the distance). With --dam-break, also the dam break of
+// surface_metric.h at those sizes: its roughness (the angle between each pixel's normal and its
+// neighbourhood's mean). Output: a table, optionally JSON.
 
 #include <glad/gl.h>
 
@@ -30,6 +32,7 @@ constexpr float kBox = 1.6f;  // metres, as the engine test's pool
 
 struct Options {
     std::vector<uint32_t> cells{32, 72, 144};
+    std::vector<uint32_t> dam_break_cells;  // none unless asked
     std::vector<pfs::Size> sizes{{1280, 720}, {1920, 1080}};
     uint32_t settle = 20;  // frames simulated before measuring
     uint32_t frames = 30;  // timed render calls per configuration
@@ -93,45 +96,42 @@ private:
     GLuint fbo_ = 0, tex_[2] = {};
 };
 
-ojson measure_pool(const Options& opt, uint32_t cells) {
-    pf_sim_desc d = pfs::pool_desc(cells, kBox);
-    d.gl_get_proc_address = pfs::get_proc;
-    d.logger = pfs::stderr_logger(false);
-    pf_sim* raw = nullptr;
-    pfs::check(pf_create(&d, &raw), "pf_create");
-    pfs::SimPtr sim(raw);
-    const float lo[3] = {0.0f, 0.0f, 0.0f}, hi[3] = {kBox, float(pfs::kPoolDepth) * kBox, kBox};
-    pfs::check(pf_fill_box(sim.get(), lo, hi, nullptr), "pf_fill_box");
-    for (uint32_t f = 0; f < opt.settle; ++f) pfs::check(pf_step(sim.get(), 1.0f / 60.0f), "pf_step");
+// The scene's depth at width x height through its camera, measured: the pool's normal error or
+// the dam break's roughness.
+using Metric = pfs::NormalError (*)(const std::vector<float>& depth, const std::vector<uint8_t>& liquid, int w, int h,
+                                   const glm::dmat4& view, const glm::dmat4& proj);
+using CameraFor = pf_camera (*)(int w, int h, glm::dmat4& view, glm::dmat4& proj);
+
+// Every size and look of one settled simulation: the metric of its first render, the median GPU
+// ms per pass over the timed calls.
+ojson measure(const Options& opt, pf_sim* sim, const char* scene, uint32_t cells, CameraFor camera_for, Metric metric) {
     pf_stats st{};
     st.struct_size = sizeof st;  // every field, render_whitewater_gpu_ms included
-    st.struct_size = sizeof st;
-    pf_get_stats(sim.get(), &st);
-    std::printf("\n[pool %u^3] %u particles, %u frames settled\n", cells, st.particle_count, opt.settle);
+    pf_get_stats(sim, &st);
     ojson rows = ojson::array();
     for (const auto& [w, h] : opt.sizes) {
         Target t{int(w), int(h)};
         glm::dmat4 view, proj;
-        const pf_camera camera = pfs::pool_camera(kBox, int(w), int(h), view, proj);
+        const pf_camera camera = camera_for(int(w), int(h), view, proj);
         const pf_render_target target = t.target();
         for (const Look& look : looks()) {
             pfs::RenderTimings timings;
             pfs::NormalError e;
             for (uint32_t i = 0; i < opt.frames + 8; ++i) {  // 8 extra calls let the last timings arrive
                 t.clear();
-                pfs::check(pf_render_ssf(sim.get(), &camera, &target, &look.params), "pf_render_ssf");
+                pfs::check(pf_render_ssf(sim, &camera, &target, &look.params), "pf_render_ssf");
                 if (i == 0) {
                     const std::vector<float> depth = t.read_depth();
                     std::vector<uint8_t> liquid(depth.size());
                     for (size_t k = 0; k < depth.size(); ++k) liquid[k] = depth[k] != 1.0f;
-                    e = pfs::normal_error(depth, liquid, int(w), int(h), view, proj, PF_DEPTH_STANDARD,
-                                          {0.0, 1.0, 0.0}, 3);
+                    e = metric(depth, liquid, int(w), int(h), view, proj);
                 }
-                pf_get_stats(sim.get(), &st);
+                pf_get_stats(sim, &st);
                 timings.add(st);
             }
             const pfs::RenderTimings::Result r = timings.summary(opt.frames);
             ojson j;
+            j["scene"] = scene;
             j["cells"] = cells;
             j["particles"] = st.particle_count;
             j["size"] = {w, h};
@@ -151,6 +151,43 @@ ojson measure_pool(const Options& opt, uint32_t cells) {
     return rows;
 }
 
+pfs::SimPtr create_sim(pf_sim_desc d) {
+    d.gl_get_proc_address = pfs::get_proc;
+    d.logger = pfs::stderr_logger(false);
+    pf_sim* raw = nullptr;
+    pfs::check(pf_create(&d, &raw), "pf_create");
+    return pfs::SimPtr(raw);
+}
+
+ojson measure_pool(const Options& opt, uint32_t cells) {
+    pfs::SimPtr sim = create_sim(pfs::pool_desc(cells, kBox));
+    const float lo[3] = {0.0f, 0.0f, 0.0f}, hi[3] = {kBox, float(pfs::kPoolDepth) * kBox, kBox};
+    pfs::check(pf_fill_box(sim.get(), lo, hi, nullptr), "pf_fill_box");
+    for (uint32_t f = 0; f < opt.settle; ++f) pfs::check(pf_step(sim.get(), 1.0f / 60.0f), "pf_step");
+    std::printf("\n[pool %u^3] %u frames settled\n", cells, opt.settle);
+    return measure(
+        opt, sim.get(), "pool", cells,
+        [](int w, int h, glm::dmat4& view, glm::dmat4& proj) { return pfs::pool_camera(kBox, w, h, view, proj); },
+        [](const std::vector<float>& depth, const std::vector<uint8_t>& liquid, int w, int h, const glm::dmat4& view,
+           const glm::dmat4& proj) {
+            return pfs::normal_error(depth, liquid, w, h, view, proj, PF_DEPTH_STANDARD, {0.0, 1.0, 0.0}, 3);
+        });
+}
+
+ojson measure_dam_break(const Options& opt, uint32_t cells) {
+    pfs::SimPtr sim = create_sim(pfs::dam_break_desc(cells));
+    const float lo[3] = {0.0f, 0.0f, 0.0f};
+    pfs::check(pf_fill_box(sim.get(), lo, pfs::kDamBreakColumn, nullptr), "pf_fill_box");
+    for (int f = 0; f < pfs::kDamBreakFrames; ++f) pfs::check(pf_step(sim.get(), 1.0f / 60.0f), "pf_step");
+    std::printf("\n[dam break, %u cells along x] %d frames after the release\n", cells, pfs::kDamBreakFrames);
+    return measure(opt, sim.get(), "dam_break", cells, pfs::dam_break_camera,
+                   [](const std::vector<float>& depth, const std::vector<uint8_t>& liquid, int w, int h,
+                      const glm::dmat4& view, const glm::dmat4& proj) {
+                       return pfs::normal_roughness(depth, liquid, w, h, view, proj, PF_DEPTH_STANDARD, 3,
+                                                    pfs::roughness_window(w));
+                   });
+}
+
 int run(int argc, char** argv) {
     Options opt;
     CLI::App app{"pf_surface_bench: smoothness and cost of pflip's rendered liquid surface on a resting pool "
@@ -162,6 +199,10 @@ int run(int argc, char** argv) {
         ->delimiter(',')
         ->check(pfs::Range(8u, 256u))
         ->capture_default_str();
+    app.add_option("--dam-break", opt.dam_break_cells, "also the dam break at these cells along x, comma-separated "
+                                                       "(128: 1.2M particles, 256: 9.4M)")
+        ->delimiter(',')
+        ->check(pfs::Range(16u, 512u));
     app.add_option("--sizes", opt.sizes, "render sizes, comma-separated")
         ->delimiter(',')
         ->check(pfs::SizeValidator())
@@ -186,6 +227,9 @@ int run(int argc, char** argv) {
     root["results"] = ojson::array();
     for (uint32_t cells : opt.cells) {
         for (ojson& row : measure_pool(opt, cells)) root["results"].push_back(row);
+    }
+    for (uint32_t cells : opt.dam_break_cells) {
+        for (ojson& row : measure_dam_break(opt, cells)) root["results"].push_back(row);
     }
     if (!opt.json_path.empty()) std::ofstream(opt.json_path) << root.dump(2) << "\n";
     return 0;

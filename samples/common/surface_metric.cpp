@@ -15,11 +15,14 @@ pf_sim_desc pool_desc(uint32_t cells, float box) {
     return d;
 }
 
-pf_camera pool_camera(float box, int width, int height, glm::dmat4& view, glm::dmat4& proj) {
-    const glm::dvec3 at(0.5 * box, kPoolDepth * box, 0.5 * box);
+namespace {
+
+// A perspective camera at `eye` looking at `at`, standard depth convention, near 0.1 m, far 10 m.
+pf_camera look_at_camera(glm::dvec3 eye, glm::dvec3 at, double fovy_deg, int width, int height, glm::dmat4& view,
+                         glm::dmat4& proj) {
     const double near_plane = 0.1, far_plane = 10.0;
-    view = glm::lookAt(at + glm::dvec3(0.0, 1.0, 1.0), at, glm::dvec3(0.0, 1.0, 0.0));
-    proj = glm::perspectiveNO(glm::radians(30.0), double(width) / height, near_plane, far_plane);
+    view = glm::lookAt(eye, at, glm::dvec3(0.0, 1.0, 0.0));
+    proj = glm::perspectiveNO(glm::radians(fovy_deg), double(width) / height, near_plane, far_plane);
     pf_camera c{};
     for (int col = 0; col < 4; ++col) {
         for (int row = 0; row < 4; ++row) {
@@ -35,13 +38,36 @@ pf_camera pool_camera(float box, int width, int height, glm::dmat4& view, glm::d
     return c;
 }
 
-NormalError normal_error(const std::vector<float>& window_depth, const std::vector<uint8_t>& liquid, int width,
-                         int height, const glm::dmat4& view, const glm::dmat4& proj, pf_depth_convention convention,
-                         glm::dvec3 true_normal, int border) {
+}  // namespace
+
+pf_camera pool_camera(float box, int width, int height, glm::dmat4& view, glm::dmat4& proj) {
+    const glm::dvec3 at(0.5 * box, kPoolDepth * box, 0.5 * box);
+    return look_at_camera(at + glm::dvec3(0.0, 1.0, 1.0), at, 30.0, width, height, view, proj);
+}
+
+pf_sim_desc dam_break_desc(uint32_t cells) {
+    pf_sim_desc d = pf_default_sim_desc();
+    d.grid_size[0] = cells;
+    d.grid_size[1] = d.grid_size[2] = cells / 2;
+    d.cell_size = 2.0f / float(cells);
+    d.max_particles = cells * (cells / 2) * (cells / 2) * 8 / 2;  // the column is under half the tank
+    return d;
+}
+
+pf_camera dam_break_camera(int width, int height, glm::dmat4& view, glm::dmat4& proj) {
+    return look_at_camera({1.4, 1.3, 2.6}, {0.6, 0.2, 0.5}, 40.0, width, height, view, proj);
+}
+
+namespace {
+
+// World-space normals of the measured pixels (those whose (2 border + 1)^2 neighbourhood is all
+// liquid), formed as the shading forms them; unmeasured pixels hold (0, 0, 0).
+std::vector<glm::dvec3> surface_normals(const std::vector<float>& window_depth, const std::vector<uint8_t>& liquid,
+                                        int width, int height, const glm::dmat4& view, const glm::dmat4& proj,
+                                        pf_depth_convention convention, int border) {
     const glm::dmat4 inv_proj = glm::inverse(proj);
     const glm::dmat3 eye_to_world = glm::transpose(glm::dmat3(view));  // view is rigid
     const bool orthographic = proj[3][3] == 1.0;
-    true_normal = glm::normalize(true_normal);
     auto at = [&](int x, int y) { return size_t(y) * size_t(width) + size_t(x); };
     auto eye = [&](int x, int y) {
         const double d = window_depth[at(x, y)];
@@ -55,7 +81,7 @@ NormalError normal_error(const std::vector<float>& window_depth, const std::vect
         const glm::dvec3 c = eye(x, y), ahead = eye(x + dx, y + dy), back = eye(x - dx, y - dy);
         return std::fabs(ahead.z - c.z) <= std::fabs(c.z - back.z) ? ahead - c : c - back;
     };
-    std::vector<double> angles;
+    std::vector<glm::dvec3> normals(size_t(width) * size_t(height), glm::dvec3(0.0));
     for (int y = border; y < height - border; ++y) {
         for (int x = border; x < width - border; ++x) {
             bool inside = true;
@@ -65,10 +91,14 @@ NormalError normal_error(const std::vector<float>& window_depth, const std::vect
             glm::dvec3 n = glm::normalize(glm::cross(tangent(x, y, 1, 0), tangent(x, y, 0, 1)));
             const glm::dvec3 to_camera = orthographic ? glm::dvec3(0.0, 0.0, 1.0) : -eye(x, y);
             if (glm::dot(n, to_camera) < 0.0) n = -n;
-            const double c = std::clamp(glm::dot(glm::normalize(eye_to_world * n), true_normal), -1.0, 1.0);
-            angles.push_back(std::acos(c) * 180.0 / M_PI);
+            normals[at(x, y)] = glm::normalize(eye_to_world * n);
         }
     }
+    return normals;
+}
+
+// RMS and 95th percentile of angles in degrees.
+NormalError summarize(std::vector<double>& angles) {
     NormalError e;
     e.pixels = int(angles.size());
     if (angles.empty()) return e;
@@ -79,6 +109,42 @@ NormalError normal_error(const std::vector<float>& window_depth, const std::vect
     std::nth_element(angles.begin(), angles.begin() + std::ptrdiff_t(k), angles.end());
     e.p95_deg = angles[k];
     return e;
+}
+
+double angle_deg(const glm::dvec3& a, const glm::dvec3& b) {
+    return std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * 180.0 / M_PI;
+}
+
+}  // namespace
+
+NormalError normal_error(const std::vector<float>& window_depth, const std::vector<uint8_t>& liquid, int width,
+                         int height, const glm::dmat4& view, const glm::dmat4& proj, pf_depth_convention convention,
+                         glm::dvec3 true_normal, int border) {
+    true_normal = glm::normalize(true_normal);
+    std::vector<double> angles;
+    for (const glm::dvec3& n : surface_normals(window_depth, liquid, width, height, view, proj, convention, border))
+        if (n != glm::dvec3(0.0)) angles.push_back(angle_deg(n, true_normal));
+    return summarize(angles);
+}
+
+NormalError normal_roughness(const std::vector<float>& window_depth, const std::vector<uint8_t>& liquid, int width,
+                             int height, const glm::dmat4& view, const glm::dmat4& proj, pf_depth_convention convention,
+                             int border, int window) {
+    const std::vector<glm::dvec3> normals =
+        surface_normals(window_depth, liquid, width, height, view, proj, convention, border);
+    std::vector<double> angles;
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const glm::dvec3& n = normals[size_t(y) * size_t(width) + size_t(x)];
+            if (n == glm::dvec3(0.0)) continue;
+            glm::dvec3 mean(0.0);
+            for (int dy = std::max(-window, -y); dy <= window && y + dy < height; ++dy)
+                for (int dx = std::max(-window, -x); dx <= window && x + dx < width; ++dx)
+                    mean += normals[size_t(y + dy) * size_t(width) + size_t(x + dx)];
+            angles.push_back(angle_deg(n, glm::normalize(mean)));
+        }
+    }
+    return summarize(angles);
 }
 
 }  // namespace pfs

@@ -3,7 +3,8 @@
 // (formed as the shading forms it) and the true normal, straight up (samples/common/
 // surface_metric.h). The pool is 16^3 or 32^3 cells of a 1.6 m box (13k or 105k particles) at
 // 320x180 or 640x360; pf_surface_bench measures the same pool at 110k, 1.2M and 10M particles at
-// 720p and 1080p (docs/rendering.md).
+// 720p and 1080p (docs/rendering.md). And a dam break, whose surface has no one true normal: how
+// much each pixel's normal turns from its neighbourhood's mean (pfs::normal_roughness).
 #include <glad/gl.h>
 
 #include <cstdio>
@@ -51,6 +52,39 @@ protected:
         for (size_t i = 0; i < depth.size(); ++i) liquid[i] = depth[i] != 1.0f;
         return pfs::normal_error(depth, liquid, width, height, view, proj, PF_DEPTH_STANDARD, {0.0, 1.0, 0.0}, 3);
     }
+
+    // The dam break (issue 19's second example; pfs::dam_break_desc's), `cells` cells along x,
+    // pfs::kDamBreakFrames after the release: a curved surface with no one true normal.
+    SimPtr dam_break(uint32_t cells) {
+        pf_sim_desc d = pfs::dam_break_desc(cells);
+        const pf_sim_desc loader = test_desc(1, 1, 1);
+        d.gl_get_proc_address = loader.gl_get_proc_address;
+        d.logger = loader.logger;
+        SimPtr sim = create(d);
+        if (!sim) return sim;
+        const float lo[3] = {0.0f, 0.0f, 0.0f};
+        EXPECT_EQ(pf_fill_box(sim.get(), lo, pfs::kDamBreakColumn, nullptr), PF_OK) << last_log();
+        for (int f = 0; f < pfs::kDamBreakFrames; ++f) EXPECT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK) << last_log();
+        return sim;
+    }
+
+    // Renders it at width x 9/16 width through pfs::dam_break_camera and measures how much each
+    // pixel's normal turns from the mean normal within pfs::roughness_window pixels.
+    pfs::NormalError roughness(pf_sim* sim, int width, const pf_ssf_params& params) {
+        const int height = width * 9 / 16;
+        EngineTarget t(width, height, GL_RGBA16F);
+        t.write_color(checkerboard(width, height, 8));
+        t.write_depth(std::vector<float>(size_t(width) * height, 1.0f));
+        glm::dmat4 view, proj;
+        const pf_camera camera = pfs::dam_break_camera(width, height, view, proj);
+        const pf_render_target target{t.fbo, t.color, t.depth, 0};
+        EXPECT_EQ(pf_render_ssf(sim, &camera, &target, &params), PF_OK) << last_log();
+        const std::vector<float> depth = t.read_depth();
+        std::vector<uint8_t> liquid(depth.size());
+        for (size_t i = 0; i < depth.size(); ++i) liquid[i] = depth[i] != 1.0f;
+        return pfs::normal_roughness(depth, liquid, width, height, view, proj, PF_DEPTH_STANDARD, 3,
+                                     pfs::roughness_window(width));
+    }
 };
 
 // The bound every count and resolution meets with the default look.
@@ -79,6 +113,35 @@ TEST_F(RenderSurface, UnfilteredSurfaceFailsTheBound) {
     const pfs::NormalError e = measure(sim.get(), 640, 360, p);
     std::printf("unfiltered: RMS %.2f deg, p95 %.2f deg over %d pixels\n", e.rms_deg, e.p95_deg, e.pixels);
     EXPECT_GT(e.rms_deg, 3.0 * kMaxRmsDegrees);
+}
+
+// The dam break's bound, with the default look at both counts and resolutions (measured on
+// llvmpipe: 5.4-8.8 degrees, docs/rendering.md); the look before issue 19 (the bilateral filter,
+// 8 pixels wide at every distance: 11.1-14.1) and no filter (21-24) exceed it.
+constexpr double kMaxDamBreakRoughnessDegrees = 10.0;
+
+TEST_F(RenderSurface, DamBreakRoughness) {
+    for (uint32_t cells : {32u, 48u}) {
+        SimPtr sim = dam_break(cells);
+        ASSERT_TRUE(sim);
+        for (int width : {320, 640}) {
+            SCOPED_TRACE(std::to_string(cells) + " cells, " + std::to_string(width) + " pixels wide");
+            pf_ssf_params p = pf_default_ssf_params();
+            const pfs::NormalError now = roughness(sim.get(), width, p);
+            p.filter = PF_SSF_FILTER_BILATERAL;
+            p.filter_radius = 8;
+            p.filter_world_radius = 1e6f;
+            const pfs::NormalError before = roughness(sim.get(), width, p);
+            p.filter = PF_SSF_FILTER_NONE;
+            const pfs::NormalError none = roughness(sim.get(), width, p);
+            std::printf("dam break, %u cells, %dx%d: default %.2f deg (p95 %.2f, %d pixels), before %.2f, none %.2f\n",
+                        cells, width, width * 9 / 16, now.rms_deg, now.p95_deg, now.pixels, before.rms_deg, none.rms_deg);
+            ASSERT_GT(now.pixels, width * width * 9 / 16 / 8) << "the liquid must fill a real part of the view";
+            EXPECT_LT(now.rms_deg, kMaxDamBreakRoughnessDegrees);
+            EXPECT_GT(before.rms_deg, kMaxDamBreakRoughnessDegrees);
+            EXPECT_GT(none.rms_deg, 2.0 * kMaxDamBreakRoughnessDegrees);
+        }
+    }
 }
 
 }  // namespace
