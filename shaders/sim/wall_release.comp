@@ -7,10 +7,10 @@
 // face's zero, which a particle touching the wall interpolates whole. Where the liquid moves into
 // the wall the face stays 0 (free-slip). Only where AIR touches the cell: a box full of liquid
 // has no pressure gauge (its pressure is known up to a constant) and nothing to let in; and only
-// ceilings: liquid slides down a side wall anyway, and letting side walls go added energy to a
-// capillary wave (docs/stability.md, case 13). Runs before the pressure
-// setup, after every force on the faces; each wall face belongs to one cell and it reads only
-// interior faces, so it races with nothing. A grid one cell thick along an axis keeps its walls.
+// ceilings: liquid slides down a side wall anyway, and letting every wall go added energy to a
+// capillary wave (docs/design.md §2). Runs before the pressure setup, after every force on the
+// faces; each wall face belongs to one cell and it reads only interior faces, so it races with
+// nothing. A grid one cell thick along an axis keeps its walls.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_FACE_VEL) buffer FaceVel { float face_vel[]; };
