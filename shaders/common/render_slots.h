@@ -39,6 +39,9 @@
 #define PF_SSBO_PARTICLE_COUNT 1
 /* and its particle count per cell (the spray test of common/ssf_spray.glsl) */
 #define PF_SSBO_CELL_COUNT 2
+/* and the live particle slots in the P2G's tile order, which the compute splat walks when
+ * PF_LOC_SPLAT_ORDERED is 1 */
+#define PF_SSBO_PARTICLE_ORDER 3
 /* invocations per workgroup of the compute splats (one particle each) */
 #define PF_SPLAT_WORKGROUP 64
 /* thickness fixed point: 2^16 per metre (15 um steps, 65 km range) */
@@ -58,6 +61,7 @@
 /* explicit uniform locations */
 #define PF_LOC_SMOOTH_DIRECTION 0 /* ivec2: (1,0) horizontal pass, (0,1) vertical pass */
 #define PF_LOC_SPLAT_COUNT 0      /* uint: particles to splat */
+#define PF_LOC_SPLAT_ORDERED 1    /* uint: 1 = walk them in PF_SSBO_PARTICLE_ORDER's order */
 
 /* compute tiles of the screen-space passes */
 #define PF_RENDER_TILE 8

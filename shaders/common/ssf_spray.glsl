@@ -21,6 +21,7 @@ float particle_radius(vec3 position) {
     ivec3 c = clamp(ivec3(floor((position - rnd.grid_origin.xyz) / rnd.grid_origin.w)), ivec3(0),
                     rnd.grid_dims.xyz - 1);
     uint sum = spray_count(c);
+    if (float(sum) >= rnd.spray.y) return r;  // most particles: their own cell decides (one read)
     for (int axis = 0; axis < 3; ++axis) {
         ivec3 d = ivec3(0);
         d[axis] = 1;

@@ -45,6 +45,7 @@ struct RenderFrame {
         float rest_count = 8.0f;  // particles per cell at rest density
         bool current = false;     // the counts describe the particles
         GLuint counts = 0;        // GL buffer, one uint per cell
+        GLuint order = 0;         // GL buffer: the live particle slots in a spatially coherent order, or 0
     } cells;
     const pf_particle_params* particles = nullptr;
     int width() const { return camera->viewport[2]; }

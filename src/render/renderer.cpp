@@ -108,6 +108,7 @@ pf_result Renderer::render_ssf(const pf_camera& camera, const pf_render_target& 
     frame.cells.rest_count = float(d.fill_particles_per_cell);
     frame.cells.current = sim_.cell_counts_current();
     frame.cells.counts = sim_.cell_count().id();
+    frame.cells.order = sim_.particle_order();
     if ((sim_.features() & PF_FEATURE_WHITEWATER) && params.skip_whitewater == 0)
         return render(frame, {RenderLayerId::liquid_surface, RenderLayerId::whitewater});
     return render(frame, {RenderLayerId::liquid_surface});

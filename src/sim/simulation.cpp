@@ -278,6 +278,7 @@ void Simulation::run_substep(bool correct_volume) {
     update_substep_table();
     substep_.run(SubstepContext{correct_volume});
     cell_counts_current_ = true;
+    counted_with_ = (desc_.features & PF_FEATURE_SINKS) ? PF_P2G_COUNT : desc_.params.p2g;
 }
 
 void Simulation::update_substep_table() {

@@ -90,6 +90,14 @@ public:
     // (a step has run since particles were last added or a snapshot restored).
     const gl::Buffer& cell_count() const { return cell_count_; }
     bool cell_counts_current() const { return cell_counts_current_; }
+    // The live particle slots in a spatially coherent order (the P2G scheme's of the last substep,
+    // whose first live-count entries are every live slot once: not after particles were added,
+    // nor with sinks, which compact the slots after the substeps), or 0.
+    GLuint particle_order() const {
+        const gl::Buffer* order = p2g_.particle_order(desc_.params);
+        const bool covers = cell_counts_current_ && counted_with_ == desc_.params.p2g;
+        return order && covers ? order->id() : 0;
+    }
     const pf_sim_params& params() const { return desc_.params; }
     const Log& log() const { return log_; }
     const gl::Api& api() const { return gl_; }
@@ -285,6 +293,8 @@ private:
     // cells whose pressure is 0: creation, pf_add_particles, pf_fill_box; docs/design.md §4.5a).
     bool hydrostatic_start_pending_ = true;
     bool cell_counts_current_ = false;  // cell_count() describes the particles (see its accessor)
+    pf_p2g counted_with_ = PF_P2G_COUNT;  // the P2G scheme of the last substep (PF_P2G_COUNT: none, or
+                                          // sinks were on, which compact the slots after it)
     SimUniforms uniform_data_{};
 
     // status (flags, max speed) read back a few steps late, behind fences

@@ -14,7 +14,9 @@ layout(std430, binding = PF_SSBO_PARTICLE_POS) readonly buffer Pos { vec4 pos[];
 layout(binding = PF_IMG_SPLAT_DEPTH, r32ui) uniform coherent uimage2D io_depth_bits;
 layout(binding = PF_IMG_SPLAT_THICKNESS, r32ui) uniform coherent uimage2D io_thickness_bits;
 layout(std430, binding = PF_SSBO_PARTICLE_COUNT) readonly buffer Count { uint count_record[]; };
+layout(std430, binding = PF_SSBO_PARTICLE_ORDER) readonly buffer Order { uint order[]; };
 layout(location = PF_LOC_SPLAT_COUNT) uniform uint u_count;  // slots covered by the dispatch
+layout(location = PF_LOC_SPLAT_ORDERED) uniform uint u_ordered;  // 1: invocation k splats order[k]
 
 // Own-texture pixel of an eye-space point (may lie outside the texture).
 vec2 eye_to_pixel(vec3 p) {
@@ -24,8 +26,11 @@ vec2 eye_to_pixel(vec3 p) {
 }
 
 void main() {
-    uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * uint(PF_SPLAT_WORKGROUP);
-    if (i >= min(u_count, count_record[PF_COUNT_LIVE])) return;
+    uint k = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * uint(PF_SPLAT_WORKGROUP);
+    uint live = min(u_count, count_record[PF_COUNT_LIVE]);
+    if (k >= live) return;
+    uint i = u_ordered != 0u ? order[k] : k;
+    if (i >= live) return;
     vec3 position = pos[i].xyz;
     float radius = particle_radius(position);
     vec3 center;

@@ -53,6 +53,9 @@ public:
     // Whether its accumulators hold floats (read by grid_forces' float permutation) rather than
     // fixed-point integers at FixedPointRange's scale.
     virtual bool float_sums() const = 0;
+    // Particle slots in a spatially coherent order (a permutation of the slots live at the last
+    // run), if the scheme sorts them; the screen-space splat walks them in it.
+    virtual const gl::Buffer* particle_order() const { return nullptr; }
 };
 
 // A new, unprepared scheme of `kind`, or nullptr for an unknown kind.

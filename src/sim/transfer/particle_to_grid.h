@@ -21,6 +21,8 @@ public:
     void run(PassRunner& runner, const pf_sim_params& params, P2gBuffers in);
     // Whether that scheme's accumulators hold floats (prepared).
     bool float_sums(const pf_sim_params& params) const { return schemes_[params.p2g]->float_sums(); }
+    // That scheme's particle order (P2gScheme::particle_order), if it has one (prepared).
+    const gl::Buffer* particle_order(const pf_sim_params& params) const { return schemes_[params.p2g]->particle_order(); }
 
     FixedPointRange& range() { return range_; }
     const FixedPointRange& range() const { return range_; }

@@ -135,6 +135,10 @@ void LiquidSurfaceLayer::splat(RenderContext& c, const RenderFrame& f) {
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_POS, b.positions);
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_COUNT, b.draw_indirect);
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_CELL_COUNT, f.cells.counts);
+    // Walked in the simulation's tile order where it has one: neighbouring invocations splat
+    // neighbouring spheres (docs/rendering.md).
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_ORDER, f.cells.order ? f.cells.order : b.positions);
+    gl.ProgramUniform1ui(splat_, PF_LOC_SPLAT_ORDERED, f.cells.order ? 1u : 0u);
     c.bind_texture(PF_TEX_SCENE_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_depth), false);
     c.dispatch_particles(splat_);
 }

@@ -17,6 +17,7 @@ public:
     // Count per tile, prefix sum, scatter, splat.
     void run(PassRunner& runner, const P2gBuffers& in) override;
     bool float_sums() const override { return false; }  // fixed point at FixedPointRange's scale
+    const gl::Buffer* particle_order() const override { return &order_; }  // grouped by tile
 
 private:
     P2gGrid grid_{};
