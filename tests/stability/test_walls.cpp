@@ -27,7 +27,9 @@ size_t hanging(const ParticleState& p, float top_quarter, float slow) {
 }
 
 TEST_P(Walls, ASurgeDoesNotHangFromTheLid) {
-    if (GetParam() == PF_QUALITY_ACCURATE && !long_mode()) GTEST_SKIP() << "accurate runs in PF_STABILITY_LONG";
+    // CI's fast mode runs the default preset (the fast one hung alike: 8 and 11 particles before
+    // the release); PF_STABILITY_LONG runs all three.
+    if (GetParam() != PF_QUALITY_BALANCED && !long_mode()) GTEST_SKIP() << "runs in PF_STABILITY_LONG";
     const pf_sim_desc d = desc(32, 16, 16, 1.0f / 16.0f);
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
