@@ -108,6 +108,7 @@ ojson measure(const Options& opt, pf_sim* sim, const char* scene, uint32_t cells
     pf_stats st{};
     st.struct_size = sizeof st;  // every field, render_whitewater_gpu_ms included
     pf_get_stats(sim, &st);
+    std::printf("  %u particles\n", st.particle_count);
     ojson rows = ojson::array();
     for (const auto& [w, h] : opt.sizes) {
         Target t{int(w), int(h)};

@@ -132,16 +132,22 @@ NormalError normal_roughness(const std::vector<float>& window_depth, const std::
                              int border, int window) {
     const std::vector<glm::dvec3> normals =
         surface_normals(window_depth, liquid, width, height, view, proj, convention, border);
+    // Summed-area table of the normals (unmeasured pixels add 0): each window's sum in four reads.
+    const size_t w1 = size_t(width) + 1;
+    std::vector<glm::dvec3> table(w1 * (size_t(height) + 1), glm::dvec3(0.0));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            table[(y + 1) * w1 + (x + 1)] = normals[size_t(y) * size_t(width) + size_t(x)] + table[y * w1 + (x + 1)] +
+                                            table[(y + 1) * w1 + x] - table[y * w1 + x];
     std::vector<double> angles;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             const glm::dvec3& n = normals[size_t(y) * size_t(width) + size_t(x)];
             if (n == glm::dvec3(0.0)) continue;
-            glm::dvec3 mean(0.0);
-            for (int dy = std::max(-window, -y); dy <= window && y + dy < height; ++dy)
-                for (int dx = std::max(-window, -x); dx <= window && x + dx < width; ++dx)
-                    mean += normals[size_t(y + dy) * size_t(width) + size_t(x + dx)];
-            angles.push_back(angle_deg(n, glm::normalize(mean)));
+            const size_t x0 = size_t(std::max(x - window, 0)), x1 = size_t(std::min(x + window, width - 1)) + 1;
+            const size_t y0 = size_t(std::max(y - window, 0)), y1 = size_t(std::min(y + window, height - 1)) + 1;
+            const glm::dvec3 sum = table[y1 * w1 + x1] - table[y0 * w1 + x1] - table[y1 * w1 + x0] + table[y0 * w1 + x0];
+            angles.push_back(angle_deg(n, glm::normalize(sum)));
         }
     }
     return summarize(angles);
