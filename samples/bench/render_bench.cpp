@@ -37,6 +37,7 @@ struct Options {
     uint32_t warmup = 60;   // simulated frames before rendering
     uint32_t frames = 60;   // measured render calls per configuration
     float spray_radius_scale = 0;  // 0: pflip's default
+    bool compute_only = false;     // no raster path, no particle view
     std::string json_path, csv_path;
 };
 
@@ -83,6 +84,7 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("--spray-radius-scale", o.spray_radius_scale,
                    "radius of spray (isolated particles) over the particle radius, 1 = drawn whole (0 = pflip's default)")
         ->check(pfs::Range(0.0f, 1.0f));
+    app.add_flag("--compute-only", o.compute_only, "only the compute path's configurations (no raster path, no particle view)");
     app.add_option("--json", o.json_path, "write results as JSON")->type_name("PATH");
     app.add_option("--csv", o.csv_path, "write results as CSV")->type_name("PATH");
 }
@@ -91,8 +93,9 @@ std::vector<Config> configs(const Options& o) {
     std::vector<Config> c;
     for (const auto& [w, h] : o.sizes) {
         for (pf_ssf_filter f : {PF_SSF_FILTER_BILATERAL, PF_SSF_FILTER_NARROW_RANGE, PF_SSF_FILTER_NONE})
-            for (pf_ssf_path p : {PF_SSF_PATH_COMPUTE, PF_SSF_PATH_RASTER}) c.push_back({w, h, true, f, p});
-        c.push_back({w, h, false, PF_SSF_FILTER_NONE, PF_SSF_PATH_COMPUTE});
+            for (pf_ssf_path p : {PF_SSF_PATH_COMPUTE, PF_SSF_PATH_RASTER})
+                if (p == PF_SSF_PATH_COMPUTE || !o.compute_only) c.push_back({w, h, true, f, p});
+        if (!o.compute_only) c.push_back({w, h, false, PF_SSF_FILTER_NONE, PF_SSF_PATH_COMPUTE});
     }
     return c;
 }
