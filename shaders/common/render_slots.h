@@ -18,7 +18,8 @@
 #define PF_TEX_ENVIRONMENT 4   /* the engine's environment cube map */
 #define PF_TEX_SHADED_COLOR 5  /* shaded liquid colour, alpha 1 where there is liquid */
 #define PF_TEX_SHADED_DEPTH 6  /* liquid window depth in the engine's convention */
-#define PF_RENDER_TEX_UNITS 7
+#define PF_TEX_SCENE_DEPTH_TILES 7  /* the nearest scene eye depth per PF_RENDER_TILE tile */
+#define PF_RENDER_TEX_UNITS 8
 
 /* image units (compute path) */
 #define PF_IMG_SMOOTH_OUT 0
@@ -30,6 +31,7 @@
 #define PF_IMG_THICKNESS 3
 #define PF_IMG_SCENE_COLOR 0      /* the scene copy's outputs: rgba16f colour, r32f window depth */
 #define PF_IMG_SCENE_DEPTH 1
+#define PF_IMG_SCENE_DEPTH_TILES 2 /* and the nearest eye depth of each PF_RENDER_TILE tile (r32f) */
 #define PF_RENDER_IMAGE_UNITS 4
 
 /* storage block of the compute splats: the simulation's particle positions */
@@ -42,6 +44,13 @@
 /* and the live particle slots in the P2G's tile order, which the compute splat walks when
  * PF_LOC_SPLAT_ORDERED is 1 */
 #define PF_SSBO_PARTICLE_ORDER 3
+/* the liquid surface's tile list (compute path): a glDrawArraysIndirect record (uints 0-3: 6
+ * vertices, one instance per tile), a glDispatchComputeIndirect record (uints 4-6: one workgroup per
+ * tile), then from uint PF_TILES_HEADER the PF_RENDER_TILE tiles holding liquid (x | y << 16),
+ * which the splat resolve lists and SHADE and RESOLVE cover instead of the whole screen */
+#define PF_SSBO_LIQUID_TILES 4
+#define PF_TILES_DISPATCH 4
+#define PF_TILES_HEADER 8
 /* invocations per workgroup of the compute splats (one particle each) */
 #define PF_SPLAT_WORKGROUP 64
 /* thickness fixed point: 2^16 per metre (15 um steps, 65 km range) */

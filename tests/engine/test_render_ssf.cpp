@@ -290,25 +290,33 @@ TEST_F(RenderSsf, ThickerLiquidAbsorbsMore) {
 // its sphere's, it read 1.63 m (4.08 times; the volumes' ratio is 4.19), which this test
 // failed on. Bound: 10%.
 TEST_F(RenderSsf, ThicknessIsTheDepthOfLiquid) {
-    EngineTarget t(96, 96, GL_RGBA16F);
-    const int vp[4] = {0, 0, 96, 96};
-    const TestCamera c = camera(vp);
-    pf_ssf_params p = pf_default_ssf_params();
-    const float a = 2.0f;
-    p.absorption[0] = p.absorption[1] = p.absorption[2] = a;
-    p.fresnel_f0 = 0.0f;
-    p.specular = 0.0f;
-    p.refraction = 0.0f;
     add(slab(8, 0.0f));
-    t.write_color(uniform_color(t.width, t.height, 1.0f, 1.0f, 1.0f));
-    t.write_depth(std::vector<float>(size_t(t.width) * t.height, 1.0f));
-    const pf_render_target target{t.fbo, t.color, t.depth, 0};
-    ASSERT_EQ(pf_render_ssf(sim_.get(), &c.cam, &target, &p), PF_OK) << last_log();
-    const std::array<double, 3> mean = mean_rgb(t.read_color(), t.width, 40, 56, 44, 56);  // inside the slab's image
-    const double depth = 8 * 0.05;
-    const double thickness = -std::log(mean[0]) / a;
-    RecordProperty("thickness_over_depth", std::to_string(thickness / depth));
-    EXPECT_NEAR(thickness / depth, 1.0, 0.10) << "thickness " << thickness << " m, liquid " << depth << " m";
+    // Spheres about 3 px across, whose thickness the compute splat adds texel by texel; 6 px, summed
+    // per workgroup in shared memory first (PF_SPLAT_SHARED); 24 px, too many texels for that, so
+    // added texel by texel again (ssf_splat.comp).
+    for (int size : {64, 128, 480}) {
+        SCOPED_TRACE("viewport " + std::to_string(size));
+        EngineTarget t(size, size, GL_RGBA16F);
+        const int vp[4] = {0, 0, size, size};
+        const TestCamera c = camera(vp);
+        pf_ssf_params p = pf_default_ssf_params();
+        const float a = 2.0f;
+        p.absorption[0] = p.absorption[1] = p.absorption[2] = a;
+        p.fresnel_f0 = 0.0f;
+        p.specular = 0.0f;
+        p.refraction = 0.0f;
+        t.write_color(uniform_color(t.width, t.height, 1.0f, 1.0f, 1.0f));
+        t.write_depth(std::vector<float>(size_t(t.width) * t.height, 1.0f));
+        const pf_render_target target{t.fbo, t.color, t.depth, 0};
+        ASSERT_EQ(pf_render_ssf(sim_.get(), &c.cam, &target, &p), PF_OK) << last_log();
+        // Inside the slab's image.
+        const std::array<double, 3> mean =
+            mean_rgb(t.read_color(), t.width, size * 40 / 96, size * 56 / 96, size * 44 / 96, size * 56 / 96);
+        const double depth = 8 * 0.05;
+        const double thickness = -std::log(mean[0]) / a;
+        RecordProperty("thickness_over_depth_" + std::to_string(size), std::to_string(thickness / depth));
+        EXPECT_NEAR(thickness / depth, 1.0, 0.10) << "thickness " << thickness << " m, liquid " << depth << " m";
+    }
 }
 
 // Float targets show every NaN/Inf: none for spheres crossing the near plane, behind the
@@ -367,7 +375,7 @@ TEST_F(RenderSsf, ViewportSizeMayChangeBetweenCalls) {
     add(xyz);
     EngineTarget t(256, 160, GL_RGBA8);
     const pf_render_target target{t.fbo, t.color, t.depth, 0};
-    const int viewports[][4] = {{0, 0, 64, 64}, {20, 10, 200, 120}, {0, 0, 256, 160}, {100, 50, 64, 64}};
+    const int viewports[][4] = {{0, 0, 64, 64}, {20, 10, 200, 120}, {0, 0, 256, 160}, {100, 50, 64, 64}, {3, 5, 203, 117}};
     for (const auto& vp : viewports) {
         SCOPED_TRACE("viewport " + std::to_string(vp[2]) + "x" + std::to_string(vp[3]));
         t.write_color(checkerboard(t.width, t.height, 8));

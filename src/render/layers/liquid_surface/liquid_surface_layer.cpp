@@ -1,7 +1,10 @@
 #include "render/layers/liquid_surface/liquid_surface_layer.h"
 
+#include <cmath>
 #include <string>
 #include <utility>
+
+#include <glm/gtc/type_ptr.hpp>
 
 #include "common/render_slots.h"
 #include "gl/allocation_check.h"
@@ -15,6 +18,28 @@ static_assert(PF_SSF_FILTER_NARROW_RANGE == PF_SSF_FILTER_NARROW_RANGE_ID, "filt
 
 using gl::ProgramId;
 
+namespace {
+// Diameter on screen (pixels) of a sphere from which the compute splat sums thickness per
+// workgroup (ssf_splat.comp, PF_SPLAT_SHARED). On the H100 (docs/rendering.md) spheres 5.0 px
+// across gained (dam_break_1m at 720p), 3.7 px lost (dam_break_10m at 1080p).
+constexpr double kSharedThicknessDiameter = 4.5;
+
+// Diameter in pixels of a liquid sphere at the simulation grid's centre.
+double sphere_diameter_px(const RenderFrame& f, const glm::mat4& domain_to_world) {
+    const pf_camera& cam = *f.camera;
+    const bool ortho = cam.proj[3] == 0.0f && cam.proj[7] == 0.0f && cam.proj[11] == 0.0f && cam.proj[15] != 0.0f;
+    // proj[1][1] maps eye y over depth (or eye y, orthographic) to NDC y: half the height in pixels.
+    const double per_metre = std::fabs(double(cam.proj[5])) * 0.5 * double(f.height());
+    const double diameter = 2.0 * double(f.ssf->particle_radius) * per_metre;
+    if (ortho) return diameter;
+    glm::vec4 centre(1.0f);
+    for (int a = 0; a < 3; ++a) centre[a] = f.cells.origin[a] + 0.5f * f.cells.cell_size * float(f.cells.dims[a]);
+    const glm::vec4 eye = glm::make_mat4(cam.view) * domain_to_world * centre;
+    const double depth = -double(eye.z);
+    return depth > double(f.ssf->particle_radius) ? diameter / depth : 1e30;
+}
+}  // namespace
+
 pf_result LiquidSurfaceLayer::prepare(RenderContext& c, const RenderFrame& f) {
     const pf_ssf_params& params = *f.ssf;
     const bool compute = params.path == PF_SSF_PATH_COMPUTE;
@@ -24,12 +49,15 @@ pf_result LiquidSurfaceLayer::prepare(RenderContext& c, const RenderFrame& f) {
     thickness_ = depth_ = splat_clear_ = splat_ = splat_resolve_ = smooth_ = 0;
     for (auto [id, out] : {std::pair{ProgramId::ssf_scene_copy, &scene_copy_},
                            std::pair{compute ? ProgramId::ssf_shade_cs : ProgramId::ssf_shade_fs, &shade_},
-                           std::pair{ProgramId::ssf_resolve, &resolve_}}) {
+                           std::pair{compute ? ProgramId::ssf_resolve_tiles : ProgramId::ssf_resolve, &resolve_}}) {
         if (pf_result r = c.program(id, f.fn, *out); r != PF_OK) return r;
     }
+    const bool shared = compute && sphere_diameter_px(f, c.sim().domain_to_world()) >= kSharedThicknessDiameter;
     const std::vector<std::pair<ProgramId, GLuint*>> splatting =
         compute ? std::vector<std::pair<ProgramId, GLuint*>>{{ProgramId::ssf_splat_clear_cs, &splat_clear_},
-                                                             {ProgramId::ssf_splat_cs, &splat_},
+                                                             {shared ? ProgramId::ssf_splat_shared_cs
+                                                                     : ProgramId::ssf_splat_cs,
+                                                              &splat_},
                                                              {ProgramId::ssf_splat_resolve_cs, &splat_resolve_}}
                 : std::vector<std::pair<ProgramId, GLuint*>>{{ProgramId::ssf_thickness, &thickness_},
                                                              {ProgramId::ssf_depth, &depth_}};
@@ -46,6 +74,11 @@ pf_result LiquidSurfaceLayer::prepare(RenderContext& c, const RenderFrame& f) {
     if (!targets_) targets_ = std::make_unique<SsfTargets>(gl);
     gl.ActiveTexture(GL_TEXTURE0 + PF_TEX_SCENE_COLOR);  // ensure() binds on the active unit
     targets_->ensure(w, h, f.target->scene_depth != 0);
+    if (compute) {
+        const size_t tiles = size_t(SsfTargets::reduced(w, PF_RENDER_TILE)) * size_t(SsfTargets::reduced(h, PF_RENDER_TILE));
+        const size_t bytes = (PF_TILES_HEADER + tiles) * sizeof(uint32_t);
+        if (liquid_tiles_.bytes() < bytes) liquid_tiles_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "ssf_liquid_tiles");
+    }
     return gl::check_allocated(gl, c.log(),
                                std::string(f.fn) + ": allocating " + std::to_string(w) + "x" + std::to_string(h) +
                                    " render targets");
@@ -82,6 +115,8 @@ void LiquidSurfaceLayer::scene_copy(RenderContext& c, const RenderFrame& f) {
     if (f.target->scene_depth != 0) {
         gl.BindImageTexture(PF_IMG_SCENE_DEPTH, targets_->texture(SsfTargets::scene_depth), 0, GL_FALSE, 0,
                             GL_WRITE_ONLY, GL_R32F);
+        gl.BindImageTexture(PF_IMG_SCENE_DEPTH_TILES, targets_->texture(SsfTargets::scene_depth_tiles), 0, GL_FALSE,
+                            0, GL_WRITE_ONLY, GL_R32F);
     }
     gl.UseProgram(scene_copy_);
     c.dispatch_screen(f.width(), f.height());
@@ -128,8 +163,10 @@ void LiquidSurfaceLayer::splat(RenderContext& c, const RenderFrame& f) {
     const GLuint thickness_bits = targets_->texture(SsfTargets::splat_thickness_bits);
     gl.BindImageTexture(PF_IMG_SPLAT_DEPTH, depth_bits, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
     gl.BindImageTexture(PF_IMG_SPLAT_THICKNESS, thickness_bits, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_LIQUID_TILES, liquid_tiles_.id());
     gl.UseProgram(splat_clear_);
     c.dispatch_screen(f.width(), f.height());
+    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);  // the emptied tile list, before the splat resolve appends
     pf_gl_buffers b{};
     c.sim().gl_buffers(b);
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_POS, b.positions);
@@ -140,6 +177,7 @@ void LiquidSurfaceLayer::splat(RenderContext& c, const RenderFrame& f) {
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_PARTICLE_ORDER, f.cells.order ? f.cells.order : b.positions);
     gl.ProgramUniform1ui(splat_, PF_LOC_SPLAT_ORDERED, f.cells.order ? 1u : 0u);
     c.bind_texture(PF_TEX_SCENE_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_depth), false);
+    c.bind_texture(PF_TEX_SCENE_DEPTH_TILES, GL_TEXTURE_2D, targets_->texture(SsfTargets::scene_depth_tiles), false);
     c.dispatch_particles(splat_);
 }
 
@@ -149,8 +187,11 @@ void LiquidSurfaceLayer::splat_resolve(RenderContext& c, const RenderFrame& f) {
                         GL_R32F);
     gl.BindImageTexture(PF_IMG_THICKNESS, targets_->texture(SsfTargets::thickness), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                         GL_R32F);
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_LIQUID_TILES, liquid_tiles_.id());
     gl.UseProgram(splat_resolve_);
     c.dispatch_screen(f.width(), f.height());
+    // The tile list is SHADE's dispatch record and RESOLVE's draw record and vertex input.
+    gl.MemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 // Alternating horizontal and vertical 1D passes, filter_iterations times, ping-ponging
@@ -193,7 +234,11 @@ void LiquidSurfaceLayer::shade(RenderContext& c, const RenderFrame& f) {
                             GL_WRITE_ONLY, GL_RGBA16F);
         gl.BindImageTexture(PF_IMG_SHADE_DEPTH, targets_->texture(SsfTargets::shaded_depth), 0, GL_FALSE, 0,
                             GL_WRITE_ONLY, GL_R32F);
-        c.dispatch_screen(f.width(), f.height());
+        // Only the tiles holding liquid (the splat resolve's list): the resolve reads no others.
+        gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_LIQUID_TILES, liquid_tiles_.id());
+        gl.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, liquid_tiles_.id());
+        gl.DispatchComputeIndirect(GLintptr(PF_TILES_DISPATCH * sizeof(uint32_t)));
+        gl.MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     } else {
         gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, targets_->framebuffer(SsfTargets::shade_fb));
         gl.Viewport(0, 0, f.width(), f.height());
@@ -214,7 +259,15 @@ void LiquidSurfaceLayer::resolve(RenderContext& c, const RenderFrame& f) {
     c.bind_texture(PF_TEX_SHADED_COLOR, GL_TEXTURE_2D, targets_->texture(SsfTargets::shaded_color), false);
     c.bind_texture(PF_TEX_SHADED_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::shaded_depth), false);
     gl.UseProgram(resolve_);
-    c.draw_fullscreen();
+    if (f.ssf->path == PF_SSF_PATH_COMPUTE) {
+        // Only the tiles the splat resolve found liquid in: on the H100 a full-screen 1080p
+        // resolve was 0.13 ms of fragment work, mostly discarded (docs/rendering.md).
+        gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_LIQUID_TILES, liquid_tiles_.id());
+        gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, liquid_tiles_.id());
+        gl.DrawArraysIndirect(GL_TRIANGLES, nullptr);
+    } else {
+        c.draw_fullscreen();
+    }
 }
 
 }  // namespace pf

@@ -5,6 +5,7 @@
 #pragma once
 #include <memory>
 
+#include "gl/buffer.h"
 #include "render/layers/liquid_surface/ssf_targets.h"
 #include "render/render_layer.h"
 
@@ -16,6 +17,7 @@ public:
     pf_result prepare(RenderContext& context, const RenderFrame& frame) override;
     void fill(const RenderFrame& frame, RenderUniforms& u) const override;
     std::vector<RenderPass> passes(const RenderFrame& frame) override;
+    // The textures; the buffers are in the simulation's memory tally (gl/memory_tally.h).
     uint64_t bytes() const override { return targets_ ? targets_->bytes() : 0; }
 
 private:
@@ -30,6 +32,9 @@ private:
     void resolve(RenderContext& c, const RenderFrame& f);
 
     std::unique_ptr<SsfTargets> targets_;
+    // Compute path: SHADE's dispatch and RESOLVE's draw records and the PF_RENDER_TILE tiles
+    // holding liquid (PF_SSBO_LIQUID_TILES), sized for the largest viewport so far.
+    gl::Buffer liquid_tiles_;
     // This frame's programs (raster or compute, by pf_ssf_path: the sprites of thickness_ and
     // depth_ or the splat; smooth_ 0 without a filter).
     GLuint scene_copy_ = 0, thickness_ = 0, depth_ = 0, splat_clear_ = 0, splat_ = 0, splat_resolve_ = 0, smooth_ = 0,

@@ -6,11 +6,12 @@ namespace pf {
 
 namespace {
 constexpr const char* kTextureLabels[SsfTargets::texture_count] = {
-    "ssf_scene_color", "ssf_scene_depth", "ssf_thickness", "ssf_raw_depth", "ssf_depth_buffer", "ssf_smooth_a",
-    "ssf_smooth_b", "ssf_shaded_color", "ssf_shaded_depth", "ssf_splat_depth_bits", "ssf_splat_thickness_bits"};
+    "ssf_scene_color",  "ssf_scene_depth",  "ssf_scene_depth_tiles", "ssf_thickness",        "ssf_raw_depth",
+    "ssf_depth_buffer", "ssf_smooth_a",     "ssf_smooth_b",          "ssf_shaded_color",     "ssf_shaded_depth",
+    "ssf_splat_depth_bits", "ssf_splat_thickness_bits"};
 constexpr const char* kFramebufferLabels[SsfTargets::framebuffer_count] = {
     "ssf_thickness_fb", "ssf_depth_fb", "ssf_smooth_a_fb", "ssf_smooth_b_fb", "ssf_shade_fb"};
-constexpr GLenum kFormats[SsfTargets::texture_count] = {GL_RGBA16F, GL_R32F,    GL_R32F,    GL_R32F,
+constexpr GLenum kFormats[SsfTargets::texture_count] = {GL_RGBA16F, GL_R32F,    GL_R32F,    GL_R32F,    GL_R32F,
                                                         GL_DEPTH_COMPONENT32F, GL_R32F, GL_R32F, GL_RGBA16F,
                                                         GL_R32F,    GL_R32UI,   GL_R32UI};
 // Bytes per texel of the formats the targets use.
@@ -21,9 +22,8 @@ uint64_t SsfTargets::bytes() const {
     uint64_t total = 0;
     for (int t = 0; t < texture_count; ++t) {
         if (textures_[t].id() == 0) continue;
-        const bool half_res = half_resolution(Texture(t));
-        total += uint64_t(half_res ? half(width_) : width_) * uint64_t(half_res ? half(height_) : height_) *
-                 texel_bytes(kFormats[t]);
+        const int d = divisor(Texture(t));
+        total += uint64_t(reduced(width_, d)) * uint64_t(reduced(height_, d)) * texel_bytes(kFormats[t]);
     }
     return total;
 }
@@ -42,8 +42,8 @@ SsfTargets::SsfTargets(const gl::Api& gl) : gl_(gl) {
 void SsfTargets::allocate(Texture t, GLenum format) {
     textures_[t] = gl::Object(gl_, gl::ObjectKind::texture);
     gl_.BindTexture(GL_TEXTURE_2D, textures_[t].id());
-    const bool half_res = half_resolution(t);
-    gl_.TexStorage2D(GL_TEXTURE_2D, 1, format, half_res ? half(width_) : width_, half_res ? half(height_) : height_);
+    const int d = divisor(t);
+    gl_.TexStorage2D(GL_TEXTURE_2D, 1, format, reduced(width_, d), reduced(height_, d));
     gl::label_object(gl_, GL_TEXTURE, textures_[t].id(), kTextureLabels[t]);
     gl_.BindTexture(GL_TEXTURE_2D, 0);
 }
@@ -73,7 +73,8 @@ void SsfTargets::ensure(int width, int height, bool scene_depth_copy) {
     width_ = width;
     height_ = height;
     for (int t = 0; t < texture_count; ++t) {
-        if (t == scene_depth ? (resized ? had_depth || scene_depth_copy : new_depth) : resized)
+        const bool of_scene_depth = t == scene_depth || t == scene_depth_tiles;
+        if (of_scene_depth ? (resized ? had_depth || scene_depth_copy : new_depth) : resized)
             allocate(Texture(t), kFormats[t]);
     }
     attach_all();

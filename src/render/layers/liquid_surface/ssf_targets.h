@@ -1,11 +1,12 @@
 // The screen-space liquid's own textures and framebuffers, of the viewport's size (the thickness
-// of half of it in each axis):
+// of half of it in each axis, the scene depth tiles of an eighth):
 // (re)allocated when the viewport size changes (the scene depth copy once a call gives a scene
 // depth), never touching an engine object.
 #pragma once
 #include <array>
 #include <cstdint>
 
+#include "common/render_slots.h"
 #include "gl/gl.h"
 #include "gl/objects.h"
 
@@ -16,6 +17,7 @@ public:
     enum Texture {
         scene_color,   // RGBA16F copy of the engine's scene colour (refraction source)
         scene_depth,   // R32F eye depth of the engine's scene depth
+        scene_depth_tiles,  // R32F its nearest eye depth per PF_RENDER_TILE tile
         thickness,     // R32F additive thickness, half resolution
         raw_depth,     // R32F nearest sphere eye depth (PF_NO_LIQUID elsewhere)
         depth_buffer,  // DEPTH_COMPONENT32F: keeps the nearest sphere in the depth pass
@@ -38,15 +40,21 @@ public:
 
     explicit SsfTargets(const gl::Api& gl);
 
-    // Makes every texture width x height, and the scene depth copy if `scene_depth` (an existing
-    // copy is kept). Binds textures on the active unit and framebuffers on GL_DRAW_FRAMEBUFFER:
-    // call under a RenderStateGuard.
+    // Makes every texture width x height (the thickness half, the scene depth tiles a tile of it),
+    // and the scene depth copy and its tiles if `scene_depth` (an existing copy is kept). Binds
+    // textures on the active unit and framebuffers on GL_DRAW_FRAMEBUFFER: call under a
+    // RenderStateGuard.
     void ensure(int width, int height, bool scene_depth);
 
     GLuint texture(Texture t) const { return textures_[t].id(); }
     // Size of the half-resolution textures for `size` pixels.
     static int half(int size) { return (size + 1) / 2; }
-    static bool half_resolution(Texture t) { return t == thickness || t == splat_thickness_bits; }
+    // Pixels per texel along each axis of texture t.
+    static int divisor(Texture t) {
+        return t == thickness || t == splat_thickness_bits ? 2 : t == scene_depth_tiles ? PF_RENDER_TILE : 1;
+    }
+    // Texels along an axis of `size` pixels at `divisor` pixels per texel.
+    static int reduced(int size, int divisor) { return (size + divisor - 1) / divisor; }
     GLuint framebuffer(Framebuffer f) const { return framebuffers_[f].id(); }
     // GPU memory of the textures made so far, bytes.
     uint64_t bytes() const;
