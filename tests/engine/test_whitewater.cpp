@@ -1,10 +1,10 @@
 // Whitewater (PF_FEATURE_WHITEWATER) against what it promises: a tank at rest makes none; a jet
 // falling into a pool makes it, every particle inside the domain with a kind and a life within
-// the set range; the count never exceeds the capacity, and a full capacity raises and logs
-// PF_FLAG_WHITEWATER_FULL; with the rates at zero every particle is gone after the longest
-// lifetime; the liquid moves bit for bit as without it (it never acts on the liquid); the
-// buffers are there only while it is on and keep their names; a snapshot keeps the parameters
-// and clears the particles; bad parameters are refused with nothing changed.
+// the set range; an obstacle stops spray at its face; the count never exceeds the capacity, and
+// a full capacity raises and logs PF_FLAG_WHITEWATER_FULL; with the rates at zero every particle
+// is gone after the longest lifetime; the liquid moves bit for bit as without it (it never acts
+// on the liquid); the buffers are there only while it is on and keep their names; a snapshot
+// keeps the parameters and clears the particles; bad parameters are refused with nothing changed.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -155,6 +155,43 @@ TEST_F(WhitewaterTest, JetIntoAPoolMakesSprayFoamAndBubbles) {
 
 // 64 slots and rates far beyond them: the count stops at exactly 64, PF_FLAG_WHITEWATER_FULL is
 // raised and logged.
+// An obstacle beside the jet stops the spray that flies at it, as the domain's walls do: after
+// every step no whitewater particle is inside the obstacle's cells (before, a particle moved into
+// them and was only dropped a step later), and spray does reach its face.
+TEST_F(WhitewaterTest, SprayStopsAtAnObstacle) {
+    SimPtr sim = pool(PF_FEATURE_WHITEWATER | PF_FEATURE_EMITTERS | PF_FEATURE_OBSTACLES);
+    ASSERT_TRUE(sim);
+    add_jet(sim.get());
+    // A wall of cells 11-12 x 7-11 x 3-12 (cell centres inside it are SOLID), 0.07 m from the jet.
+    const float lo[3] = {0.55f, 0.35f, 0.15f}, hi[3] = {0.65f, 0.6f, 0.65f};
+    pf_obstacle wall = pf_default_obstacle();
+    wall.shape = PF_OBSTACLE_BOX;
+    for (int a = 0; a < 3; ++a) {
+        wall.position[a] = 0.5f * (lo[a] + hi[a]);
+        wall.half_extents[a] = 0.5f * (hi[a] - lo[a]);
+    }
+    ASSERT_EQ(pf_add_obstacle(sim.get(), &wall, nullptr), PF_OK) << last_log();
+    uint32_t inside = 0, at_face = 0, seen = 0;
+    for (int f = 0; f < 90; ++f) {
+        ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
+        if (f < 20) continue;
+        const Whitewater w = read_whitewater(sim.get());
+        seen += w.count();
+        for (uint32_t i = 0; i < w.count(); ++i) {
+            const float* p = &w.pos[size_t(i) * 4];
+            bool in = true, before_face = p[0] >= lo[0] - 0.05f && p[0] < lo[0];
+            for (int a = 0; a < 3; ++a) in = in && p[a] >= lo[a] && p[a] < hi[a];
+            for (int a = 1; a < 3; ++a) before_face = before_face && p[a] >= lo[a] && p[a] < hi[a];
+            inside += in;
+            at_face += before_face;
+        }
+    }
+    std::printf("%u whitewater particles seen over 70 steps, %u within a cell of the obstacle's face, %u inside it\n",
+                seen, at_face, inside);
+    EXPECT_GT(at_face, 20u) << "the spray must reach the obstacle for this test to mean anything";
+    EXPECT_EQ(inside, 0u);
+}
+
 TEST_F(WhitewaterTest, CountStopsAtTheCapacityWithAFlagAndALogLine) {
     SimPtr sim = pool(PF_FEATURE_WHITEWATER | PF_FEATURE_EMITTERS);
     ASSERT_TRUE(sim);

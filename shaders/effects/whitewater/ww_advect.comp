@@ -5,7 +5,10 @@
 //   spray  (little liquid around): ballistic, v' = (v + dt g) / (1 + dt k_air);
 //   foam   (at the surface): carried by the liquid, v' = u;
 //   bubble (inside): v' = u + (v - u) exp(-k_drag dt) - dt k_buoyancy g.
-// A particle that would leave the domain stops at its wall (that velocity component zeroed).
+// A particle that would leave the domain or enter a SOLID cell (an obstacle) stops at that wall:
+// the move is taken axis by axis, an axis that would enter a SOLID cell keeps its coordinate,
+// and that velocity component is zeroed, so spray hitting an obstacle stays outside and slides
+// along it, as at the domain's walls.
 #include "effects/whitewater/whitewater.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_WW_IN_POS) readonly buffer InPos { vec4 in_pos[]; };
@@ -35,7 +38,16 @@ void main() {
         vec3 u = sample_velocity(p.xyz);
         v = kind == PF_WW_FOAM ? u : u + (v - u) * exp(-u_motion.z * dt) - dt * u_motion.y * g;
     }
-    vec3 x = p.xyz + dt * v;
+    vec3 x = p.xyz;
+    for (int a = 0; a < 3; ++a) {
+        vec3 trial = x;
+        trial[a] += dt * v[a];
+        ivec3 t = ivec3(floor(grid_coord(trial)));
+        if (cell_inside(t) && PF_CELL_KIND(cell_type[cell_index(t)]) == PF_CELL_SOLID)
+            v[a] = 0.0;
+        else
+            x = trial;
+    }
     vec3 kept = keep_in_domain(x);
     v = mix(v, vec3(0.0), notEqual(kept, x));
     if (any(isnan(kept)) || any(isnan(v))) return;
