@@ -45,12 +45,15 @@
  * PF_LOC_SPLAT_ORDERED is 1 */
 #define PF_SSBO_PARTICLE_ORDER 3
 /* the liquid surface's tile list (compute path): a glDrawArraysIndirect record (uints 0-3: 6
- * vertices, one instance per tile), a glDispatchComputeIndirect record (uints 4-6: one workgroup per
- * tile), then from uint PF_TILES_HEADER the PF_RENDER_TILE tiles holding liquid (x | y << 16),
- * which the splat resolve lists and SHADE and RESOLVE cover instead of the whole screen */
+ * vertices, one instance per tile), a glDispatchComputeIndirect record (uints 4-6: at least one
+ * workgroup per tile, in rows of at most PF_TILES_ROW), then from uint PF_TILES_HEADER the
+ * PF_RENDER_TILE tiles holding liquid (x | y << 16), which the splat resolve lists and SHADE and
+ * RESOLVE cover instead of the whole screen */
 #define PF_SSBO_LIQUID_TILES 4
 #define PF_TILES_DISPATCH 4
 #define PF_TILES_HEADER 8
+/* workgroups per row of SHADE's dispatch: GL promises 65535 along x */
+#define PF_TILES_ROW 65535u
 /* invocations per workgroup of the compute splats (one particle each) */
 #define PF_SPLAT_WORKGROUP 64
 /* thickness fixed point: 2^16 per metre (15 um steps, 65 km range) */

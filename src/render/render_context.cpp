@@ -22,6 +22,7 @@ void RenderContext::ensure_objects() {
     if (uniforms_.id()) return;
     uniforms_ = gl::Buffer(gl_, sizeof(RenderUniforms), GL_DYNAMIC_DRAW, "render_uniforms");
     vao_ = gl::Object(gl_, gl::ObjectKind::vertex_array);
+    bare_vao_ = gl::Object(gl_, gl::ObjectKind::vertex_array);
     nearest_ = gl::Object(gl_, gl::ObjectKind::sampler);
     linear_ = gl::Object(gl_, gl::ObjectKind::sampler);
     for (const gl::Object* s : {&nearest_, &linear_}) {
@@ -34,6 +35,9 @@ void RenderContext::ensure_objects() {
         gl_.SamplerParameteri(s->id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
         gl::label_object(gl_, GL_SAMPLER, s->id(), s == &linear_ ? "sampler_linear" : "sampler_nearest");
     }
+    // Draws that read no attributes (a VAO name becomes an object, which a label needs, when bound).
+    gl_.BindVertexArray(bare_vao_.id());
+    gl::label_object(gl_, GL_VERTEX_ARRAY, bare_vao_.id(), "attributeless");
     // Instanced sprites: one vec4 position and one vec4 velocity per particle.
     gl_.BindVertexArray(vao_.id());
     gl::label_object(gl_, GL_VERTEX_ARRAY, vao_.id(), "particle_sprites");
@@ -99,6 +103,18 @@ void RenderContext::draw_spheres() {
 }
 
 void RenderContext::draw_fullscreen() { gl_.DrawArrays(GL_TRIANGLES, 0, 3); }
+
+void RenderContext::draw_indirect_without_attributes(GLuint record) {
+    gl_.BindVertexArray(bare_vao_.id());
+    gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, record);
+    gl_.DrawArraysIndirect(GL_TRIANGLES, nullptr);
+    gl_.BindVertexArray(vao_.id());
+}
+
+bool RenderContext::vertex_storage_buffers() {
+    if (vertex_storage_blocks_ < 0) gl_.GetIntegerv(GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS, &vertex_storage_blocks_);
+    return vertex_storage_blocks_ > 0;
+}
 
 void RenderContext::dispatch_screen(int width, int height) {
     gl_.DispatchCompute(GLuint(ceil_div(width, PF_RENDER_TILE)), GLuint(ceil_div(height, PF_RENDER_TILE)), 1);

@@ -56,6 +56,11 @@ public:
     // One sphere sprite per live particle, as many as the GPU's count record says (no readback).
     void draw_spheres();
     void draw_fullscreen();
+    // Triangles without vertex attributes, as the glDrawArraysIndirect record at the start of
+    // `record` says (instances may outnumber the particles the sprite attributes hold).
+    void draw_indirect_without_attributes(GLuint record);
+    // Whether vertex shaders may read storage buffers here (GL 4.3 promises none).
+    bool vertex_storage_buffers();
     // One invocation per pixel, in PF_RENDER_TILE tiles, then the barriers its reader needs.
     void dispatch_screen(int width, int height);
     // One invocation per particle of `program`, then an image-access barrier.
@@ -67,7 +72,8 @@ private:
     gl::ProgramCache programs_;
     gl::TimerRing timers_;
     gl::Buffer uniforms_;
-    gl::Object vao_, nearest_, linear_;
+    gl::Object vao_, bare_vao_, nearest_, linear_;
+    int vertex_storage_blocks_ = -1;  // GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS, -1 until asked
     Handoff handoff_;
 };
 

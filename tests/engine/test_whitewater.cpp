@@ -153,17 +153,16 @@ TEST_F(WhitewaterTest, JetIntoAPoolMakesSprayFoamAndBubbles) {
     EXPECT_GT(st.whitewater_count, 100u);
 }
 
-// 64 slots and rates far beyond them: the count stops at exactly 64, PF_FLAG_WHITEWATER_FULL is
-// raised and logged.
-// An obstacle beside the jet stops the spray that flies at it, as the domain's walls do: after
-// every step no whitewater particle is inside the obstacle's cells (before, a particle moved into
-// them and was only dropped a step later), and spray does reach its face.
+// A wall of obstacle one cell thick splits the tank beside the jet: whitewater stops at it as
+// at the domain's walls. After every step no whitewater particle is inside the wall's cells or
+// beyond it (its side of the tank holds still liquid, which makes none), and spray does reach its
+// face. Before the change a particle moved into the wall and was dropped a step later.
 TEST_F(WhitewaterTest, SprayStopsAtAnObstacle) {
     SimPtr sim = pool(PF_FEATURE_WHITEWATER | PF_FEATURE_EMITTERS | PF_FEATURE_OBSTACLES);
     ASSERT_TRUE(sim);
     add_jet(sim.get());
-    // A wall of cells 11-12 x 7-11 x 3-12 (cell centres inside it are SOLID), 0.07 m from the jet.
-    const float lo[3] = {0.55f, 0.35f, 0.15f}, hi[3] = {0.65f, 0.6f, 0.65f};
+    // Cells x = 11, every y and z (cell centres inside the box are SOLID), 0.07 m from the jet.
+    const float lo[3] = {0.55f, 0.0f, 0.0f}, hi[3] = {0.6f, 1.2f, 0.8f};
     pf_obstacle wall = pf_default_obstacle();
     wall.shape = PF_OBSTACLE_BOX;
     for (int a = 0; a < 3; ++a) {
@@ -171,27 +170,28 @@ TEST_F(WhitewaterTest, SprayStopsAtAnObstacle) {
         wall.half_extents[a] = 0.5f * (hi[a] - lo[a]);
     }
     ASSERT_EQ(pf_add_obstacle(sim.get(), &wall, nullptr), PF_OK) << last_log();
-    uint32_t inside = 0, at_face = 0, seen = 0;
+    uint32_t inside = 0, beyond = 0, at_face = 0, seen = 0;
     for (int f = 0; f < 90; ++f) {
         ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
         if (f < 20) continue;
         const Whitewater w = read_whitewater(sim.get());
         seen += w.count();
         for (uint32_t i = 0; i < w.count(); ++i) {
-            const float* p = &w.pos[size_t(i) * 4];
-            bool in = true, before_face = p[0] >= lo[0] - 0.05f && p[0] < lo[0];
-            for (int a = 0; a < 3; ++a) in = in && p[a] >= lo[a] && p[a] < hi[a];
-            for (int a = 1; a < 3; ++a) before_face = before_face && p[a] >= lo[a] && p[a] < hi[a];
-            inside += in;
-            at_face += before_face;
+            const float x = w.pos[size_t(i) * 4];
+            inside += x >= lo[0] && x < hi[0];
+            beyond += x >= hi[0];
+            at_face += x >= lo[0] - 0.05f && x < lo[0];
         }
     }
-    std::printf("%u whitewater particles seen over 70 steps, %u within a cell of the obstacle's face, %u inside it\n",
-                seen, at_face, inside);
-    EXPECT_GT(at_face, 20u) << "the spray must reach the obstacle for this test to mean anything";
+    std::printf("%u whitewater particles seen over 70 steps, %u within a cell of the wall, %u inside it, %u beyond\n",
+                seen, at_face, inside, beyond);
+    EXPECT_GT(at_face, 20u) << "the spray must reach the wall for this test to mean anything";
     EXPECT_EQ(inside, 0u);
+    EXPECT_EQ(beyond, 0u);
 }
 
+// 64 slots and rates far beyond them: the count stops at exactly 64, PF_FLAG_WHITEWATER_FULL is
+// raised and logged.
 TEST_F(WhitewaterTest, CountStopsAtTheCapacityWithAFlagAndALogLine) {
     SimPtr sim = pool(PF_FEATURE_WHITEWATER | PF_FEATURE_EMITTERS);
     ASSERT_TRUE(sim);

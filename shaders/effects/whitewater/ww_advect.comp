@@ -6,9 +6,10 @@
 //   foam   (at the surface): carried by the liquid, v' = u;
 //   bubble (inside): v' = u + (v - u) exp(-k_drag dt) - dt k_buoyancy g.
 // A particle that would leave the domain or enter a SOLID cell (an obstacle) stops at that wall:
-// the move is taken axis by axis, an axis that would enter a SOLID cell keeps its coordinate,
-// and that velocity component is zeroed, so spray hitting an obstacle stays outside and slides
-// along it, as at the domain's walls.
+// the move is taken axis by axis, an axis whose end point would lie in a SOLID cell keeps its
+// coordinate, and that velocity component is zeroed, so spray hitting an obstacle stays outside
+// and slides along it, as at the domain's walls. Only end points are tested: a particle moving
+// more than a cell in a step can cross an obstacle one cell thick.
 #include "effects/whitewater/whitewater.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_WW_IN_POS) readonly buffer InPos { vec4 in_pos[]; };

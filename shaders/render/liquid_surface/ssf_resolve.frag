@@ -1,4 +1,5 @@
-// RESOLVE pass: copies the shaded liquid into the engine's target over a full-screen triangle
+// RESOLVE pass: copies the shaded liquid into the engine's target, over a full-screen triangle
+// (render/fullscreen.vert) or the liquid's tiles (render/liquid_surface/ssf_resolve_tiles.vert)
 // in the engine's viewport. Pixels without liquid are discarded, so the engine's framebuffer
 // stays untouched there; liquid pixels write colour and, through gl_FragDepth with the depth
 // test ALWAYS, the liquid's depth in the engine's convention (where the target has depth).

@@ -127,8 +127,8 @@ void main() {
         t_last = t_first - 1;
     }
     if (gl_LocalInvocationIndex == 0u) {
-        s_lo_x = s_lo_y = 0x7FFFFFFF;
-        s_hi_x = s_hi_y = -0x7FFFFFFF;
+        s_lo_x = s_lo_y = 0x7FFFFFFF;  // texels are >= 0: no sphere's texels leave span 0
+        s_hi_x = s_hi_y = -1;
     }
     barrier();
     if (all(lessThanEqual(t_first, t_last))) {

@@ -16,7 +16,7 @@ void main() {
         liquid_tiles[1] = 0u;
         liquid_tiles[2] = 0u;
         liquid_tiles[3] = 0u;
-        // Dispatch: no tiles yet, one workgroup each.
+        // Dispatch: no tiles yet (rows of workgroups, ssf_splat_resolve.comp).
         liquid_tiles[PF_TILES_DISPATCH] = 0u;
         liquid_tiles[PF_TILES_DISPATCH + 1] = 1u;
         liquid_tiles[PF_TILES_DISPATCH + 2] = 1u;

@@ -28,7 +28,9 @@ void main() {
     barrier();
     if (gl_LocalInvocationIndex == 0u && s_liquid != 0u) {
         uint slot = atomicAdd(liquid_tiles[1], 1u);
-        atomicAdd(liquid_tiles[PF_TILES_DISPATCH], 1u);
+        // SHADE's workgroups: rows of PF_TILES_ROW (the x count GL promises), enough rows.
+        atomicMax(liquid_tiles[PF_TILES_DISPATCH], min(slot + 1u, PF_TILES_ROW));
+        atomicMax(liquid_tiles[PF_TILES_DISPATCH + 1], slot / PF_TILES_ROW + 1u);
         liquid_tiles[PF_TILES_HEADER + slot] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16);
     }
 }

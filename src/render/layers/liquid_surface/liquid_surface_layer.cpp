@@ -47,9 +47,11 @@ pf_result LiquidSurfaceLayer::prepare(RenderContext& c, const RenderFrame& f) {
     // Raster path: sphere sprites for THICKNESS and DEPTH. Compute path: the splat clear, one
     // splat of both and its resolve.
     thickness_ = depth_ = splat_clear_ = splat_ = splat_resolve_ = smooth_ = 0;
+    // The tiled resolve's vertex shader reads the tile list, a storage buffer.
+    tiled_resolve_ = compute && c.vertex_storage_buffers();
     for (auto [id, out] : {std::pair{ProgramId::ssf_scene_copy, &scene_copy_},
                            std::pair{compute ? ProgramId::ssf_shade_cs : ProgramId::ssf_shade_fs, &shade_},
-                           std::pair{compute ? ProgramId::ssf_resolve_tiles : ProgramId::ssf_resolve, &resolve_}}) {
+                           std::pair{tiled_resolve_ ? ProgramId::ssf_resolve_tiles : ProgramId::ssf_resolve, &resolve_}}) {
         if (pf_result r = c.program(id, f.fn, *out); r != PF_OK) return r;
     }
     const bool shared = compute && sphere_diameter_px(f, c.sim().domain_to_world()) >= kSharedThicknessDiameter;
@@ -259,12 +261,11 @@ void LiquidSurfaceLayer::resolve(RenderContext& c, const RenderFrame& f) {
     c.bind_texture(PF_TEX_SHADED_COLOR, GL_TEXTURE_2D, targets_->texture(SsfTargets::shaded_color), false);
     c.bind_texture(PF_TEX_SHADED_DEPTH, GL_TEXTURE_2D, targets_->texture(SsfTargets::shaded_depth), false);
     gl.UseProgram(resolve_);
-    if (f.ssf->path == PF_SSF_PATH_COMPUTE) {
+    if (tiled_resolve_) {
         // Only the tiles the splat resolve found liquid in: on the H100 a full-screen 1080p
         // resolve was 0.13 ms of fragment work, mostly discarded (docs/rendering.md).
         gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_LIQUID_TILES, liquid_tiles_.id());
-        gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, liquid_tiles_.id());
-        gl.DrawArraysIndirect(GL_TRIANGLES, nullptr);
+        c.draw_indirect_without_attributes(liquid_tiles_.id());
     } else {
         c.draw_fullscreen();
     }

@@ -40,6 +40,9 @@ private:
     GLuint scene_copy_ = 0, thickness_ = 0, depth_ = 0, splat_clear_ = 0, splat_ = 0, splat_resolve_ = 0, smooth_ = 0,
            shade_ = 0, resolve_ = 0;
     SsfTargets::Texture surface_ = SsfTargets::raw_depth;  // what SMOOTH left for SHADE
+    // RESOLVE draws the liquid tiles (compute path, where vertex shaders may read storage
+    // buffers), else a full-screen triangle.
+    bool tiled_resolve_ = false;
 };
 
 }  // namespace pf
