@@ -23,6 +23,16 @@ void store(const glm::dmat4& m, float out[16]) {
 }
 }  // namespace
 
+bool camera_orthographic(const pf_camera& camera) {
+    // Perspective projections put -z into clip w (row 3 = 0 0 -1 0); orthographic ones keep w = 1.
+    return camera.proj[3] == 0.0f && camera.proj[7] == 0.0f && camera.proj[11] == 0.0f && camera.proj[15] != 0.0f;
+}
+
+float camera_pixels_per_metre(const pf_camera& camera) {
+    // proj[1][1] maps eye y over depth (or eye y, orthographic) to NDC y: half the height in pixels.
+    return std::fabs(camera.proj[5]) * 0.5f * float(camera.viewport[3]);
+}
+
 void fill_camera(const pf_camera& camera, float y_sign, const glm::mat4& domain_to_world, RenderUniforms& u) {
     std::memcpy(u.view, camera.view, sizeof(u.view));
     store(to_dmat4(camera.view) * glm::dmat4(domain_to_world), u.domain_view);
@@ -37,12 +47,8 @@ void fill_camera(const pf_camera& camera, float y_sign, const glm::mat4& domain_
     u.planes[0] = camera.near_plane;
     u.planes[1] = camera.far_plane;
     u.planes[2] = float(camera.depth_convention);
-    // Perspective projections put -z into clip w (row 3 = 0 0 -1 0); orthographic ones keep w = 1.
-    const bool ortho = camera.proj[3] == 0.0f && camera.proj[7] == 0.0f && camera.proj[11] == 0.0f &&
-                       camera.proj[15] != 0.0f;
-    u.planes[3] = ortho ? 1.0f : 0.0f;
-    // proj[1][1] maps eye y over depth (or eye y, orthographic) to NDC y: half the height in pixels.
-    u.filter[1] = std::fabs(camera.proj[5]) * 0.5f * h;
+    u.planes[3] = camera_orthographic(camera) ? 1.0f : 0.0f;
+    u.filter[1] = camera_pixels_per_metre(camera);
     u.surface[3] = y_sign;
     u.target[0] = camera.viewport[0];
     u.target[1] = camera.viewport[1];

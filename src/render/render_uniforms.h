@@ -37,6 +37,11 @@ struct RenderUniforms {
 };
 static_assert(sizeof(RenderUniforms) == 5 * 64 + 16 * 16, "RenderUniforms must match the std140 block");
 
+// Whether the camera's projection is orthographic (else perspective).
+bool camera_orthographic(const pf_camera& camera);
+// Pixels a metre spans on screen at eye depth 1 (perspective) or at any depth (orthographic).
+float camera_pixels_per_metre(const pf_camera& camera);
+
 // Camera part: matrices (inverses in double precision), viewport, planes. `y_sign` is -1 when
 // the engine's clip origin is GL_UPPER_LEFT. The camera must have passed validation (the
 // matrices are invertible). `domain_to_world` places the particles (PF_FEATURE_DOMAIN_MOTION;

@@ -21,6 +21,8 @@ layout(std430, binding = PF_SLOT_WW_OUT_VEL) writeonly buffer OutVel { vec4 out_
 layout(std430, binding = PF_SLOT_WW_STATE) buffer State { uint state[]; };
 layout(location = PF_LOC_WW_MOTION) uniform vec4 u_motion;  // dt, bubble buoyancy, bubble drag, spray drag
 
+bool solid(ivec3 c) { return cell_inside(c) && PF_CELL_KIND(cell_type[cell_index(c)]) == PF_CELL_SOLID; }
+
 void main() {
     uint i = flat_id();
     if (i >= state[PF_WW_LIVE]) return;
@@ -29,7 +31,7 @@ void main() {
     float life = p.w - dt;
     if (!(life > 0.0)) return;
     ivec3 c = ivec3(floor(grid_coord(p.xyz)));
-    if (!cell_inside(c) || PF_CELL_KIND(cell_type[cell_index(c)]) == PF_CELL_SOLID) return;
+    if (!cell_inside(c) || solid(c)) return;
     float kind = kind_for(fraction[cell_index(c)]);
     vec3 v = in_vel[i].xyz;
     vec3 g = sim.gravity.xyz;
@@ -43,8 +45,7 @@ void main() {
     for (int a = 0; a < 3; ++a) {
         vec3 trial = x;
         trial[a] += dt * v[a];
-        ivec3 t = ivec3(floor(grid_coord(trial)));
-        if (cell_inside(t) && PF_CELL_KIND(cell_type[cell_index(t)]) == PF_CELL_SOLID)
+        if (solid(ivec3(floor(grid_coord(trial)))))
             v[a] = 0.0;
         else
             x = trial;

@@ -1,6 +1,5 @@
 #include "render/layers/liquid_surface/liquid_surface_layer.h"
 
-#include <cmath>
 #include <string>
 #include <utility>
 
@@ -27,11 +26,8 @@ constexpr double kSharedThicknessDiameter = 4.5;
 // Diameter in pixels of a liquid sphere at the simulation grid's centre.
 double sphere_diameter_px(const RenderFrame& f, const glm::mat4& domain_to_world) {
     const pf_camera& cam = *f.camera;
-    const bool ortho = cam.proj[3] == 0.0f && cam.proj[7] == 0.0f && cam.proj[11] == 0.0f && cam.proj[15] != 0.0f;
-    // proj[1][1] maps eye y over depth (or eye y, orthographic) to NDC y: half the height in pixels.
-    const double per_metre = std::fabs(double(cam.proj[5])) * 0.5 * double(f.height());
-    const double diameter = 2.0 * double(f.ssf->particle_radius) * per_metre;
-    if (ortho) return diameter;
+    const double diameter = 2.0 * double(f.ssf->particle_radius) * double(camera_pixels_per_metre(cam));
+    if (camera_orthographic(cam)) return diameter;
     glm::vec4 centre(1.0f);
     for (int a = 0; a < 3; ++a) centre[a] = f.cells.origin[a] + 0.5f * f.cells.cell_size * float(f.cells.dims[a]);
     const glm::vec4 eye = glm::make_mat4(cam.view) * domain_to_world * centre;
