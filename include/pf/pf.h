@@ -632,7 +632,9 @@ typedef enum pf_gpu_timing {
     PF_GPU_TIMING_STEP = 1,    /**< one pair around the whole step: pf_stats.gpu_total_ms only, every
                                     per-pass time 0 */
     PF_GPU_TIMING_OFF = 2,     /**< none: every simulation GPU time reads 0 (dispatch counts still kept) */
-    PF_GPU_TIMING_COUNT = 3,
+    PF_GPU_TIMING_KERNELS = 3, /**< profiling: every dispatch timed and counted under a pass-list entry
+                                    "<pass>:<kernel>" added on first use (each costs a timer pair) */
+    PF_GPU_TIMING_COUNT = 4,
     PF_GPU_TIMING_FORCE32 = 0x7fffffff
 } pf_gpu_timing;
 /** Chooses what the next steps time; times measured before read 0 from now on (pf_stats.gpu_step

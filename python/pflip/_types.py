@@ -44,6 +44,7 @@ class GpuTiming(enum.IntEnum):
     PASSES = 0
     STEP = 1
     OFF = 2
+    KERNELS = 3
 
 
 class PressureSolver(enum.IntEnum):

@@ -322,7 +322,8 @@ class Simulation:
     @gpu_timing.setter
     def gpu_timing(self, value):
         """pf_set_gpu_timing: GpuTiming.PASSES (every pass group), STEP (the step as a whole:
-        stats().gpu_total_ms only) or OFF; an unknown value raises PflipError(ERROR_INVALID_ARGUMENT)."""
+        stats().gpu_total_ms only), OFF or KERNELS (profiling: every dispatch under a pass_stats()
+        entry "<pass>:<kernel>"); an unknown value raises PflipError(ERROR_INVALID_ARGUMENT)."""
         v = int(value)
         if not 0 <= v <= 0x7FFFFFFF:  # a C enum's range: the library sees the rest
             raise PflipError("pf_set_gpu_timing", t.Result.ERROR_INVALID_ARGUMENT, f"timing {value!r} is not a pf_gpu_timing")

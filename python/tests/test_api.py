@@ -184,7 +184,13 @@ def test_gpu_timing_modes(sim):
     sim.gpu_timing = pflip.GpuTiming.OFF
     st = measured()
     assert st.gpu_step == 0 and st.gpu_total_ms == 0 and st.dispatches[int(pflip.Pass.PRESSURE_SOLVE)] > 0
-    for bad in (3, -1, 1 << 40):
+    sim.gpu_timing = pflip.GpuTiming.KERNELS
+    assert sim.gpu_timing == pflip.GpuTiming.KERNELS
+    sim.step(1.0 / 60.0)
+    kernels = [p for p in sim.pass_stats() if ":" in p.name]
+    assert kernels and sum(p.dispatches for p in kernels) == sum(sim.stats().dispatches)
+    sim.gpu_timing = pflip.GpuTiming.OFF
+    for bad in (4, -1, 1 << 40):
         with pytest.raises(pflip.PflipError) as e:
             sim.gpu_timing = bad
         assert e.value.code == pflip.Result.ERROR_INVALID_ARGUMENT and e.value.function == "pf_set_gpu_timing"

@@ -96,10 +96,12 @@ void add_options(CLI::App& app, Options& o) {
         ->transform(FeatureList())
         ->type_name("LIST");
     static const pfs::Choices<pf_gpu_timing> kTimings = {
-        {"passes", PF_GPU_TIMING_PASSES}, {"step", PF_GPU_TIMING_STEP}, {"off", PF_GPU_TIMING_OFF}};
+        {"passes", PF_GPU_TIMING_PASSES}, {"step", PF_GPU_TIMING_STEP}, {"off", PF_GPU_TIMING_OFF},
+        {"kernels", PF_GPU_TIMING_KERNELS}};
     app.add_option("--gpu-timing", o.gpu_timing,
                    "what the library's timer queries measure (pf_set_gpu_timing): every pass group (the "
-                   "default, the per-pass tables), the step as a whole (the total only) or nothing (wall times only)")
+                   "default, the per-pass tables), the step as a whole (the total only), nothing (wall times only) or every "
+                   "kernel apart (profiling: one timer pair per dispatch)")
         ->transform(pfs::NameMap(kTimings, "timing"));
     app.add_option("--json", o.json_path, "write results as JSON")->type_name("PATH");
     app.add_option("--csv", o.csv_path, "write results as CSV (one row per scene and metric)")->type_name("PATH");
@@ -149,6 +151,7 @@ struct Result {
     float max_speed = 0;
     pfs::Summary solver_iterations, solver_residual;
     std::vector<std::pair<std::string, pfs::Summary>> pass_list;  // pf_get_pass_stats entries, ms per step
+    std::map<std::string, pfs::Summary> pass_list_dispatches;      // the same entries' dispatches per step
 };
 
 uint64_t cell_count(const pfs::Scene& scene) {
@@ -222,8 +225,18 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     };
     std::map<uint64_t, Gpu> gpu; // distinct gpu_step -> timings
     std::vector<double> wall, cpu, iterations, residual, dispatch_count[PF_PASS_COUNT];
-    std::map<std::string, std::vector<double>> pass_list;
+    std::map<std::string, std::vector<double>> pass_list, pass_dispatches;
     std::vector<std::string> pass_order;
+    // Each entry's dispatches in the step just taken (entries added mid-run count 0 before).
+    auto count_dispatches = [&]() {
+        uint32_t n = 0;
+        pfs::check(pf_get_pass_count(sim.get(), &n), "pf_get_pass_count");
+        for (uint32_t i = 0; i < n; ++i) {
+            pf_pass_stats ps{};
+            pfs::check(pf_get_pass_stats(sim.get(), i, &ps), "pf_get_pass_stats");
+            pass_dispatches[ps.name].push_back(ps.dispatches);
+        }
+    };
     auto collect = [&]() {
         if (st.gpu_step >= first && st.gpu_step <= last && !gpu.count(st.gpu_step)) {
             Gpu g{};
@@ -260,6 +273,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
             r.dispatches[p] = std::max(r.dispatches[p], st.dispatches[p]);
             dispatch_count[p].push_back(st.dispatches[p]);
         }
+        count_dispatches();
         collect();
         if ((i + 1) % progress_every == 0 && i + 1 < opt.steps) {
             std::printf("    %u/%u  %.2f ms/step (wall)  substeps %u\n", i + 1, opt.steps, s1 - s0, st.substeps);
@@ -307,7 +321,10 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     r.gpu_valid = r.gpu_samples > 0 && r.gpu_total.max > 0;
     r.solver_iterations = pfs::summarize(iterations);
     r.solver_residual = pfs::summarize(residual);
-    for (const std::string& name : pass_order) r.pass_list.emplace_back(name, pfs::summarize(pass_list[name]));
+    for (const std::string& name : pass_order) {
+        r.pass_list.emplace_back(name, pfs::summarize(pass_list[name]));
+        r.pass_list_dispatches[name] = pfs::summarize(pass_dispatches[name]);
+    }
 
     std::printf("  wall %.3f ms/step (median), gpu %.3f ms/step (median of %zu), substeps %.2f\n", r.wall.median,
                 r.gpu_total.median, r.gpu_samples, r.substeps.mean);
@@ -442,6 +459,9 @@ ojson result_json(const Result& r, const pfb::Ceilings& ceilings) {
     ojson list;
     for (const auto& [name, summary] : r.pass_list) list[name] = summary_json(summary);
     g["pass_list_ms_per_step"] = list;
+    ojson list_dispatches;
+    for (const auto& [name, summary] : r.pass_list_dispatches) list_dispatches[name] = summary_json(summary);
+    g["pass_list_dispatches_per_step"] = list_dispatches;
     j["gpu"] = g;
     ojson roofline;
     for (const RooflineRow& row : roofline_rows(r, ceilings)) {
@@ -560,6 +580,25 @@ void print_tables(const std::vector<Result>& results, const pfb::Ceilings& ceili
                             row.ms, row.dispatches, row.floor_ms, row.ms > 0 ? 100.0 * row.floor_ms / row.ms : 0.0,
                             row.wide_floor_ms, row.ms > 0 ? 100.0 * row.wide_floor_ms / row.ms : 0.0);
     }
+    // Kernel timing (--gpu-timing kernels): the "<pass>:<kernel>" entries, dearest first, each
+    // dispatch's mean cost against the dependent-dispatch floor.
+    for (const Result* r : ok) {
+        std::vector<std::pair<double, std::string>> kernels;
+        for (const auto& [name, summary] : r->pass_list)
+            if (name.find(':') != std::string::npos && summary.median > 0) kernels.emplace_back(summary.median, name);
+        if (kernels.empty()) continue;
+        std::sort(kernels.rbegin(), kernels.rend());
+        std::printf("\nKernels of %s (medians per step; the dependent-dispatch floor %.2f us):\n", r->name.c_str(),
+                    ceilings.dispatch_us);
+        std::printf("%-52s %10s %11s %12s %8s\n", "pass:kernel", "ms/step", "dispatches", "us/dispatch", "x floor");
+        for (const auto& [ms, name] : kernels) {
+            const auto d = r->pass_list_dispatches.find(name);
+            const double n = d != r->pass_list_dispatches.end() ? d->second.median : 0.0;
+            const double us = n > 0 ? 1e3 * ms / n : 0.0;
+            std::printf("%-52s %10.4f %11.0f %12.2f %8.2f\n", name.c_str(), ms, n, us,
+                        ceilings.dispatch_us > 0 ? us / ceilings.dispatch_us : 0.0);
+        }
+    }
     bool any_invalid = false;
     for (const Result* r : ok) any_invalid = any_invalid || !r->gpu_valid;
     if (any_invalid)
@@ -643,7 +682,9 @@ int run(int argc, char** argv) {
         settings["max_substeps_override"] = opt.max_substeps;
         settings["frame_dt_override"] = opt.frame_dt;
         settings["gpu_timing"] = opt.gpu_timing == PF_GPU_TIMING_PASSES ? "passes"
-                                 : opt.gpu_timing == PF_GPU_TIMING_STEP ? "step" : "off";
+                                 : opt.gpu_timing == PF_GPU_TIMING_STEP    ? "step"
+                                 : opt.gpu_timing == PF_GPU_TIMING_KERNELS ? "kernels"
+                                                                           : "off";
         settings["wall_time"] = "glFinish; t0; pf_step; glFinish; t1";
         settings["gpu_time"] = "pf_get_stats per-pass timer queries, each distinct gpu_step once, summed over substeps";
         j["settings"] = settings;

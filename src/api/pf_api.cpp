@@ -344,7 +344,7 @@ pf_result pf_set_gpu_timing(pf_sim* handle, pf_gpu_timing timing) {
     pf::Simulation& s = *sim->impl;
     if (pf::enum_bits(timing) >= uint32_t(PF_GPU_TIMING_COUNT))
         return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_gpu_timing: timing " + std::to_string(pf::enum_bits(timing)) +
-                                                            " is not a pf_gpu_timing (0..2)");
+                                                            " is not a pf_gpu_timing (0..3)");
     s.set_gpu_timing(timing);
     return PF_OK;
 }

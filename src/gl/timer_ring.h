@@ -45,6 +45,10 @@ public:
     void set_mode(Mode mode) {
         if (mode == mode_) return;
         mode_ = mode;
+        forget();
+    }
+    // Drops what was measured and what is in flight (the passes being timed changed).
+    void forget() {
         latest_ = Result{};
         for (Slot& s : slots_) s.pending = false;
     }

@@ -69,9 +69,20 @@ void PassRunner::end_step() {
     step_open_ = false;
 }
 
+StatId PassRunner::kernel_stat(StatId stat, gl::ProgramId program) {
+    if (stat >= stats_.size()) return stat;
+    const uint32_t key = uint32_t(stat) << 16 | uint32_t(program);
+    const auto found = kernel_stats_.find(key);
+    if (found != kernel_stats_.end()) return found->second;
+    const StatId id = add_stat(stats_[stat].name + ":" + gl::program_info(program).id, stats_[stat].group);
+    kernel_stats_.emplace(key, id);
+    return id;
+}
+
 void PassRunner::run(const Pass& pass) {
     if (!pass.indirect.buffer && pass.invocations == 0) return;
-    const StatId stat = override_ != kNoOverride ? override_ : pass.stat;
+    StatId stat = override_ != kNoOverride ? override_ : pass.stat;
+    if (kernel_timing_ && step_open_) stat = kernel_stat(stat, pass.program);
     // Outside a step (creation, pf_clear_particles) passes run untimed and uncounted.
     if (step_open_ && (!pair_open_ || open_stat_ != stat)) {
         if (pair_open_) timers_.end_pass();

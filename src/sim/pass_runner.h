@@ -13,8 +13,10 @@
 // previous texture and sampler put back right after (the engine's state is kept).
 #pragma once
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "api/log.h"
@@ -40,7 +42,8 @@ public:
 
     // Adds an entry to the statistics list (or returns the existing one of that name).
     StatId add_stat(const std::string& name, pf_pass group);
-    const std::vector<Stat>& stats() const { return stats_; }
+    // A deque: entries never move, so the names pf_get_pass_stats hands out stay valid as it grows.
+    const std::deque<Stat>& stats() const { return stats_; }
     // GPU milliseconds of entry `id` in the newest measured step (0 until one is measured).
     float gpu_ms(StatId id) const { return timers_.latest().at(id); }
     const gl::TimerRing::Result& latest_timing() const { return timers_.latest(); }
@@ -48,6 +51,13 @@ public:
     // What the next steps time (pf_set_gpu_timing).
     void set_timing(gl::TimerRing::Mode mode) { timers_.set_mode(mode); }
     gl::TimerRing::Mode timing() const { return timers_.mode(); }
+    // Per kernel (PF_GPU_TIMING_KERNELS, with Mode::passes): inside a step, each pass is counted
+    // and timed under "<entry>:<program>" (added on first use) instead of its entry.
+    void set_kernel_timing(bool on) {
+        if (on != kernel_timing_) timers_.forget();
+        kernel_timing_ = on;
+    }
+    bool kernel_timing() const { return kernel_timing_; }
 
     // Builds `id` (once) and learns which storage slots it uses. Empty string on success.
     std::string prepare(gl::ProgramId id);
@@ -104,7 +114,11 @@ private:
     GLuint uniform_slot_;
     gl::ProgramCache programs_;
     gl::TimerRing timers_;
-    std::vector<Stat> stats_;
+    std::deque<Stat> stats_;
+    // The "<entry>:<program>" entry of a pass (kernel timing), keyed by entry << 16 | program.
+    StatId kernel_stat(StatId stat, gl::ProgramId program);
+    std::unordered_map<uint32_t, StatId> kernel_stats_;
+    bool kernel_timing_ = false;
     void set_uniforms(GLuint program, size_t pid, const Uniforms& uniforms);
 
     std::vector<uint32_t> used_slots_;   // per ProgramId: bit mask of storage slots in use

@@ -1070,13 +1070,14 @@ void Simulation::set_gpu_timing(pf_gpu_timing timing) {
     runner_->set_timing(timing == PF_GPU_TIMING_OFF    ? gl::TimerRing::Mode::off
                         : timing == PF_GPU_TIMING_STEP ? gl::TimerRing::Mode::step
                                                        : gl::TimerRing::Mode::passes);
+    runner_->set_kernel_timing(timing == PF_GPU_TIMING_KERNELS);
 }
 
 pf_gpu_timing Simulation::gpu_timing() const {
     switch (runner_->timing()) {
         case gl::TimerRing::Mode::off: return PF_GPU_TIMING_OFF;
         case gl::TimerRing::Mode::step: return PF_GPU_TIMING_STEP;
-        default: return PF_GPU_TIMING_PASSES;
+        default: return runner_->kernel_timing() ? PF_GPU_TIMING_KERNELS : PF_GPU_TIMING_PASSES;
     }
 }
 

@@ -1,6 +1,7 @@
 // pf_set_gpu_timing: each mode times what pf.h says — every pass group, the step as a whole
 // (pf_stats.gpu_total_ms only), or nothing — while the dispatch counts stay; switching forgets
-// the old times; unknown modes are refused with nothing changed.
+// the old times; every kernel may be counted and timed apart; unknown modes are refused with
+// nothing changed.
 #include <string>
 
 #include "support/sim_fixture.h"
@@ -93,9 +94,62 @@ TEST_F(GpuTiming, EachModeTimesWhatItSays) {
     EXPECT_GT(again.gpu_total_ms, 0.0f);
 }
 
+// Per kernel: every dispatch is counted (and timed) under "<entry>:<kernel>", added to the pass
+// list on first use; the entries' dispatches add up to the step's, names handed out before stay
+// valid while the list grows, and switching back counts per entry again.
+TEST_F(GpuTiming, KernelsAreCountedApart) {
+    ASSERT_EQ(pf_step(sim_.get(), 1.0f / 60.0f), PF_OK);
+    const std::vector<pf_pass_stats> before = pass_list(sim_.get());
+    ASSERT_FALSE(before.empty());
+    const char* first_name = before.front().name;
+    const std::string first = first_name;
+
+    ASSERT_EQ(pf_set_gpu_timing(sim_.get(), PF_GPU_TIMING_KERNELS), PF_OK);
+    pf_gpu_timing mode = PF_GPU_TIMING_PASSES;
+    ASSERT_EQ(pf_get_gpu_timing(sim_.get(), &mode), PF_OK);
+    EXPECT_EQ(mode, PF_GPU_TIMING_KERNELS);
+    ASSERT_EQ(pf_step(sim_.get(), 1.0f / 60.0f), PF_OK);
+    pf_stats st{};
+    st.struct_size = sizeof st;
+    ASSERT_EQ(pf_get_stats(sim_.get(), &st), PF_OK);
+    uint64_t step_dispatches = 0;
+    for (int k = 0; k < PF_PASS_COUNT; ++k) step_dispatches += st.dispatches[k];
+    ASSERT_GT(step_dispatches, 0u);
+
+    const std::vector<pf_pass_stats> list = pass_list(sim_.get());
+    EXPECT_GT(list.size(), before.size());
+    EXPECT_EQ(std::string(first_name), first) << "a name handed out before the list grew";
+    uint64_t kernel_dispatches = 0, entry_dispatches = 0;
+    bool saw_solver_kernel = false;
+    for (const pf_pass_stats& s : list) {
+        const std::string name = s.name;
+        const size_t colon = name.find(':');
+        if (colon == std::string::npos) {
+            entry_dispatches += s.dispatches;
+            continue;
+        }
+        kernel_dispatches += s.dispatches;
+        // The entry it belongs to is in the list, in the same group.
+        bool parent = false;
+        for (const pf_pass_stats& p : list) parent = parent || (name.compare(0, colon, p.name) == 0 && p.group == s.group && std::string(p.name).size() == colon);
+        EXPECT_TRUE(parent) << name;
+        saw_solver_kernel = saw_solver_kernel || (s.group == PF_PASS_PRESSURE_SOLVE && s.dispatches > 0);
+    }
+    EXPECT_EQ(entry_dispatches, 0u) << "every dispatch is counted under its kernel";
+    EXPECT_EQ(kernel_dispatches, step_dispatches);
+    EXPECT_TRUE(saw_solver_kernel);
+
+    // Back to pass groups: the kernel entries stay listed but dispatch nothing.
+    ASSERT_EQ(pf_set_gpu_timing(sim_.get(), PF_GPU_TIMING_PASSES), PF_OK);
+    ASSERT_EQ(pf_step(sim_.get(), 1.0f / 60.0f), PF_OK);
+    for (const pf_pass_stats& s : pass_list(sim_.get())) {
+        if (std::string(s.name).find(':') != std::string::npos) EXPECT_EQ(s.dispatches, 0u) << s.name;
+    }
+}
+
 TEST_F(GpuTiming, UnknownModesAreRefusedAndChangeNothing) {
     ASSERT_EQ(pf_set_gpu_timing(sim_.get(), PF_GPU_TIMING_STEP), PF_OK);
-    for (uint32_t bits : {3u, 0x7fffffffu, 0xffffffffu}) {
+    for (uint32_t bits : {4u, 0x7fffffffu, 0xffffffffu}) {
         pf_gpu_timing bad;
         std::memcpy(&bad, &bits, sizeof bad);
         clear_log();
