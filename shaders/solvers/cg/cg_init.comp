@@ -22,10 +22,10 @@ layout(std430, binding = PF_SLOT_SOLVER_Z_INIT) writeonly buffer Z { float z_out
 #include "solvers/cg/cg_scalar_step.glsl"
 #include "solvers/cg/cg_start_residual.glsl"
 
-vec4 cell_contribution(int c) {
+vec4 cell_contribution(int c, ivec3 ijk) {
     float r = 0.0, z = 0.0;
     if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
-        PoissonStencil s = poisson_stencil(c);
+        PoissonStencil s = poisson_stencil_at(c, ijk);
         r = start_residual(c, s);
         z = precondition(r, s);
     } else {

@@ -34,10 +34,10 @@ float direction(int c) {
     return beta == 0.0 ? d : d + beta * p_old[c];
 }
 
-vec4 cell_contribution(int c) {
+vec4 cell_contribution(int c, ivec3 ijk) {
     float pc = 0.0, aq = 0.0;
     if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
-        PoissonStencil s = poisson_stencil(c);
+        PoissonStencil s = poisson_stencil_at(c, ijk);
         pc = direction(c);
         vec3 pair_sum = vec3(0.0);
         for (int n = 0; n < 6; ++n) {

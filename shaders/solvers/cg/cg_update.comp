@@ -21,14 +21,14 @@ layout(std430, binding = PF_SLOT_SOLVER_Z) writeonly buffer Z { float z_out[]; }
 #include "solvers/cg/cg_precondition.glsl"
 #include "solvers/cg/cg_scalar_step.glsl"
 
-vec4 cell_contribution(int c) {
+vec4 cell_contribution(int c, ivec3 ijk) {
     float rn = 0.0, z = 0.0;
     if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
         float alpha = state_float(PF_SOLVER_ALPHA);
         x[c] += alpha * p[c];
         rn = r[c] - alpha * q[c];
         r[c] = rn;
-        z = precondition(rn, poisson_stencil(c));
+        z = precondition(rn, poisson_stencil_at(c, ijk));
     }
 #if PF_PRECOND == PF_PRECOND_JACOBI
     z_out[c] = z;

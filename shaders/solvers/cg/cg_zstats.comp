@@ -15,7 +15,7 @@ layout(location = PF_LOC_SOLVER_CG_STEP) uniform uint u_cg_step;  // run by the 
 #include "solvers/common/state.glsl"
 #include "solvers/cg/cg_scalar_step.glsl"
 
-vec4 cell_contribution(int c) {
+vec4 cell_contribution(int c, ivec3 ijk) {
     if (PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) return vec4(0.0);
     float rc = r[c], zc = z[c];
     return vec4(rc * rc, rc * zc, zc, rc);

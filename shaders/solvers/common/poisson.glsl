@@ -14,7 +14,12 @@ layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // nx, ny, nz, cell
 
 #include "solvers/common/poisson_neighbours.glsl"
 
-ivec3 level_coord(int c) { return ivec3(c % u_dims.x, (c / u_dims.x) % u_dims.y, c / (u_dims.x * u_dims.y)); }
+// Two integer divisions (each a long instruction sequence on GPUs), not three plus two modulos.
+ivec3 level_coord(int c) {
+    int row = c / u_dims.x;
+    int k = row / u_dims.y;
+    return ivec3(c - row * u_dims.x, row - k * u_dims.y, k);
+}
 int level_index(ivec3 ijk) { return ijk.x + u_dims.x * (ijk.y + u_dims.y * ijk.z); }
 bool level_inside(ivec3 ijk) { return all(greaterThanEqual(ijk, ivec3(0))) && all(lessThan(ijk, u_dims.xyz)); }
 
@@ -24,10 +29,10 @@ struct PoissonStencil {
     float diag;
 };
 
-PoissonStencil poisson_stencil(int c) {
+// The same for cell c at coordinates ijk (kernels that know them need not divide again).
+PoissonStencil poisson_stencil_at(int c, ivec3 ijk) {
     PoissonStencil s;
     s.diag = 0.0;
-    ivec3 ijk = level_coord(c);
     for (int n = 0; n < 6; ++n) {
         s.nb[n] = -1;
         ivec3 q = ijk + kPoissonNeighbours[n];
@@ -41,16 +46,15 @@ PoissonStencil poisson_stencil(int c) {
     s.diag += surface_extra_diagonal(cell_type[c]);
     return s;
 }
+PoissonStencil poisson_stencil(int c) { return poisson_stencil_at(c, level_coord(c)); }
 
 // Neighbour values summed per axis pair, then across axes: mirrored inputs give bit-mirrored
 // sums (as common/sim.glsl's mirror_sum), so the solvers keep the scheme's mirror symmetry.
 float pair_total(vec3 pair_sum) { return (pair_sum.x + pair_sum.y) + pair_sum.z; }
 
 // Red-black colour of a cell: 0 when i + j + k is even.
-uint cell_color(int c) {
-    ivec3 ijk = level_coord(c);
-    return uint(ijk.x + ijk.y + ijk.z) & 1u;
-}
+uint cell_color_at(ivec3 ijk) { return uint(ijk.x + ijk.y + ijk.z) & 1u; }
+uint cell_color(int c) { return cell_color_at(level_coord(c)); }
 
 // Index of a workgroup in a (possibly 2D) dispatch: one partial sum each.
 uint workgroup_index() { return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x; }
@@ -63,11 +67,20 @@ uint workgroup_index() { return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWork
 // inputs: the solvers' convergence decisions and Krylov scalars stay mirror-exact.
 int orbit_count() { return ((u_dims.x + 1) / 2) * u_dims.y * ((u_dims.z + 1) / 2); }
 
+// The orbit's first cell (i, j, k) with i and k in the lower halves of their axes.
+ivec3 orbit_origin(int o) {
+    int hx = (u_dims.x + 1) / 2;
+    int row = o / hx;
+    int k = row / u_dims.y;
+    return ivec3(o - row * hx, row - k * u_dims.y, k);
+}
+// The coordinates of the orbit's cells: a, its x-mirror, its z-mirror, both.
+ivec3 orbit_coord(ivec3 a, int q) {
+    return ivec3((q & 1) != 0 ? u_dims.x - 1 - a.x : a.x, a.y, (q & 2) != 0 ? u_dims.z - 1 - a.z : a.z);
+}
 // The orbit's cells (i, k), (x-mirror), (z-mirror), (both); -1 where one repeats another
 // (the middle column of an odd axis).
-ivec4 orbit_cells(int o) {
-    int hx = (u_dims.x + 1) / 2;
-    ivec3 a = ivec3(o % hx, (o / hx) % u_dims.y, o / (hx * u_dims.y));
+ivec4 orbit_cells(ivec3 a) {
     int mx = u_dims.x - 1 - a.x, mz = u_dims.z - 1 - a.z;
     return ivec4(level_index(a), mx != a.x ? level_index(ivec3(mx, a.y, a.z)) : -1,
                  mz != a.z ? level_index(ivec3(a.x, a.y, mz)) : -1,

@@ -15,10 +15,10 @@ layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
 #include "solvers/common/reduce.glsl"
 #include "solvers/common/state.glsl"
 
-vec4 cell_contribution(int c) {
+vec4 cell_contribution(int c, ivec3 ijk) {
     float r = 0.0, b = 0.0;
     if (PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
-        PoissonStencil s = poisson_stencil(c);
+        PoissonStencil s = poisson_stencil_at(c, ijk);
         vec3 pair_sum = vec3(0.0);
         for (int n = 0; n < 6; ++n) {
             if (s.nb[n] >= 0) pair_sum[n / 2] += x[s.nb[n]];

@@ -10,7 +10,7 @@ layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partial
 #include "solvers/common/poisson.glsl"
 #include "solvers/common/reduce.glsl"
 
-vec4 cell_contribution(int c) {
+vec4 cell_contribution(int c, ivec3 ijk) {
     uint t = PF_CELL_KIND(cell_type[c]);
     if (t == PF_CELL_FLUID) {
         float b = rhs[c];

@@ -19,9 +19,9 @@ layout(std430, binding = PF_SLOT_MG_COARSE_E) readonly buffer CoarseE { float co
 #include "solvers/common/poisson.glsl"
 #include "solvers/mgpcg/multigrid.glsl"
 
-// e + P e_coarse at fine cell f (a FLUID cell).
-float corrected(int f) {
-    ivec3 fi = level_coord(f);
+// e + P e_coarse at fine cell f (a FLUID cell) of coordinates fi (passed in: a black cell
+// corrects its six neighbours, whose coordinates it knows without dividing).
+float corrected(int f, ivec3 fi) {
     ivec3 parent = fi >> 1;
     ivec3 other = parent + 2 * (fi & 1) - 1;  // parent - 1 for even, parent + 1 for odd indices
     other = clamp(other, ivec3(0), u_coarse_dims.xyz - 1);
@@ -40,13 +40,14 @@ void main() {
     if (f >= u_dims.w) return;
     float v = 0.0;
     if (PF_CELL_KIND(cell_type[f]) == PF_CELL_FLUID) {
-        if (cell_color(f) == 0u) {
-            v = corrected(f);
+        ivec3 fi = level_coord(f);
+        if (((fi.x + fi.y + fi.z) & 1) == 0) {
+            v = corrected(f, fi);
         } else {
             PoissonStencil s = poisson_stencil(f);
             vec3 pair_sum = vec3(0.0);
             for (int n = 0; n < 6; ++n) {
-                if (s.nb[n] >= 0) pair_sum[n / 2] += corrected(s.nb[n]);
+                if (s.nb[n] >= 0) pair_sum[n / 2] += corrected(s.nb[n], fi + kPoissonNeighbours[n]);
             }
             v = s.diag > 0.0 ? (r[f] + pair_total(pair_sum)) / s.diag : 0.0;
         }

@@ -18,11 +18,11 @@ layout(location = PF_LOC_SOLVER_CG_STEP) uniform uint u_cg_step;  // run by the 
 #include "solvers/common/state.glsl"
 #include "solvers/cg/cg_scalar_step.glsl"
 
-vec4 cell_contribution(int c) {
+vec4 cell_contribution(int c, ivec3 ijk) {
     if (PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) return vec4(0.0);
     float rc = r[c], zc;
-    if (cell_color(c) == 0u) {
-        PoissonStencil s = poisson_stencil(c);
+    if (cell_color_at(ijk) == 0u) {
+        PoissonStencil s = poisson_stencil_at(c, ijk);
         vec3 pair_sum = vec3(0.0);
         for (int n = 0; n < 6; ++n) {
             if (s.nb[n] >= 0) pair_sum[n / 2] += z[s.nb[n]];
