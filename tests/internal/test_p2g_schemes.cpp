@@ -617,6 +617,44 @@ TEST_F(P2gSchemes, TiledIsFixedPointBitForBit) {
     }
 }
 
+// The tiled splat writes every cell's count (nothing clears them between steps): cells whose
+// tile the particles have left count 0 again, also where no particle is left in the tile.
+TEST_F(P2gSchemes, TiledCountsReturnToZeroWhereParticlesLeft) {
+    pf_sim_desc d = test_desc(12, 10, 8, 0.1f);
+    d.max_particles = 4096;
+    d.params.p2g = PF_P2G_TILED;
+    SimPtr handle = create(d);
+    ASSERT_TRUE(handle);
+    Simulation& sim = *pf::entry(handle)->impl;
+    auto block = [&](float x0) {
+        std::vector<float> pos, vel;
+        for (int k = 0; k < 8; ++k)
+            for (int j = 0; j < 8; ++j)
+                for (int i = 0; i < 8; ++i) {
+                    const float p[3] = {x0 + 0.025f + 0.05f * float(i), 0.025f + 0.05f * float(j), 0.025f + 0.05f * float(k)};
+                    for (int a = 0; a < 3; ++a) pos.push_back(p[a]), vel.push_back(0.0f);
+                }
+        EXPECT_EQ(pf_add_particles(handle.get(), pos.data(), vel.data(), uint32_t(pos.size() / 3)), PF_OK);
+    };
+    auto count_in_x = [&](float lo, float hi) {
+        const std::vector<uint32_t> count = sim.read_grid(GridBuffer::cell_count);
+        uint64_t n = 0;
+        for (int k = 0; k < 8; ++k)
+            for (int j = 0; j < 10; ++j)
+                for (int i = 0; i < 12; ++i)
+                    if ((float(i) + 0.5f) * 0.1f > lo && (float(i) + 0.5f) * 0.1f < hi) n += count[size_t(i + 12 * (j + 10 * k))];
+        return n;
+    };
+    block(0.0f);  // cells 0-3 along x: the first tile column
+    ASSERT_EQ(sim.run_substep_for_test(0.001f), PF_OK);
+    EXPECT_EQ(count_in_x(0.0f, 0.4f), 512u);
+    ASSERT_EQ(pf_clear_particles(handle.get()), PF_OK);
+    block(0.8f);  // cells 8-11: the third tile column; the first holds no particle now
+    ASSERT_EQ(sim.run_substep_for_test(0.001f), PF_OK);
+    EXPECT_EQ(count_in_x(0.0f, 0.4f), 0u) << "cells the particles left keep their old counts";
+    EXPECT_EQ(count_in_x(0.8f, 1.2f), 512u);
+}
+
 // The hot cell of AHotCellOverflowsFixedPointButNotTheGather overflows the tiled scheme's sums
 // too (in shared memory first), and the flag says so.
 TEST_F(P2gSchemes, TiledFlagsTheOverflowFixedPointFlags) {

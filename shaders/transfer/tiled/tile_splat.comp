@@ -53,12 +53,21 @@ void main() {
     ivec3 t = ivec3(int(tile) % tiles.x, (int(tile) / tiles.x) % tiles.y, int(tile) / (tiles.x * tiles.y));
     ivec3 first_cell = t * PF_P2G_TILE;
     ivec3 origin = first_cell - 1;  // the window's first face sample, on every lattice
+    uint begin = tile_start[tile], end = tile_start[tile + 1u];
+    if (begin == end) {
+        // No particles (most of a tank's air): its cells count 0 and its window adds nothing.
+        for (int k = lane; k < kTileCells; k += PF_WORKGROUP_SIZE) {
+            ivec3 cell = first_cell + ivec3(k % PF_P2G_TILE, (k / PF_P2G_TILE) % PF_P2G_TILE, k / (PF_P2G_TILE * PF_P2G_TILE));
+            if (all(lessThan(cell, sim.grid.xyz))) cell_count[cell_index(cell)] = 0u;
+        }
+        return;  // the whole workgroup
+    }
     for (int k = lane; k < 3 * kWindowSamples * 2; k += PF_WORKGROUP_SIZE) s_accum[k] = 0;
     for (int k = lane; k < kTileCells; k += PF_WORKGROUP_SIZE) s_count[k] = 0u;
     if (lane == 0) s_overflow = 0u;
     barrier();
 
-    for (uint k = tile_start[tile] + uint(lane); k < tile_start[tile + 1u]; k += uint(PF_WORKGROUP_SIZE)) {
+    for (uint k = begin + uint(lane); k < end; k += uint(PF_WORKGROUP_SIZE)) {
         uint i = order[k];
         vec3 g = grid_coord(pos[i].xyz);
         vec3 v = vel[i].xyz;
