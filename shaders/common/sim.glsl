@@ -11,6 +11,7 @@ layout(std140, binding = PF_UBO_SIM) uniform SimUniforms {
 } sim;
 
 int cell_index(ivec3 c) { return c.x + sim.grid.x * (c.y + sim.grid.y * c.z); }
+ivec3 cell_coord(int c) { return unflatten(c, sim.grid.xyz); }
 
 // Half cells (2 x 2 x 2 per cell, h = floor(2 g)), x fastest: the sorted-gather P2G's buckets.
 int half_cell_index(ivec3 h) { return h.x + 2 * sim.grid.x * (h.y + 2 * sim.grid.y * h.z); }
@@ -37,10 +38,7 @@ int face_index(int axis, ivec3 f) {
 void decode_face(int id, out int axis, out ivec3 f) {
     axis = id < sim.face_count.x ? 0 : (id < sim.face_count.x + sim.face_count.y ? 1 : 2);
     int local = id - face_offset(axis);
-    ivec3 d = face_dims(axis);
-    f.x = local % d.x;
-    f.y = (local / d.x) % d.y;
-    f.z = local / (d.x * d.y);
+    f = unflatten(local, face_dims(axis));
 }
 
 // Domain walls are the boundary faces of each lattice (free-slip: normal velocity 0).

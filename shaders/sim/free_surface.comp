@@ -12,7 +12,7 @@ layout(std430, binding = PF_SLOT_FACE_FRACTION) readonly buffer Fraction { float
 void main() {
     int c = int(flat_id());
     if (c >= sim.grid.w || PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) return;
-    ivec3 ijk = ivec3(c % sim.grid.x, (c / sim.grid.x) % sim.grid.y, c / (sim.grid.x * sim.grid.y));
+    ivec3 ijk = cell_coord(c);
     float term[6];
     for (int n = 0; n < 6; ++n) {
         term[n] = 0.0;

@@ -29,7 +29,7 @@ void main() {
     vec4 particles = vec4(0.0);  // (|v|^2, -g . (x - origin), count / rest if interior, interior)
     if (id < uint(sim.grid.w) && PF_CELL_KIND(cell_type[id]) == PF_CELL_FLUID) {
         int c = int(id);
-        ivec3 ijk = ivec3(c % sim.grid.x, (c / sim.grid.x) % sim.grid.y, c / (sim.grid.x * sim.grid.y));
+        ivec3 ijk = cell_coord(c);
         float div = 0.0;
         for (int axis = 0; axis < 3; ++axis) {
             ivec3 hi = ijk;

@@ -18,7 +18,7 @@ void main() {
         pressure[c] = 0.0;
         return;
     }
-    ivec3 ijk = ivec3(c % sim.grid.x, (c / sim.grid.x) % sim.grid.y, c / (sim.grid.x * sim.grid.y));
+    ivec3 ijk = cell_coord(c);
     float div = 0.0;
     for (int axis = 0; axis < 3; ++axis) {
         ivec3 hi = ijk;

@@ -22,6 +22,6 @@ void main() {
         rhs[c] = 0.0;
         return;
     }
-    ivec3 ijk = ivec3(c % sim.grid.x, (c / sim.grid.x) % sim.grid.y, c / (sim.grid.x * sim.grid.y));
+    ivec3 ijk = cell_coord(c);
     rhs[c] = sim.volume_correction * volume_excess(ijk) * sim.dx;
 }

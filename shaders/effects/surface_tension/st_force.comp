@@ -57,7 +57,7 @@ float curvature(ivec3 c) {
 void main() {
     int id = int(flat_id());
     if (id >= sim.grid.w || PF_CELL_KIND(cell_type[id]) != PF_CELL_FLUID) return;
-    ivec3 c = ivec3(id % sim.grid.x, (id / sim.grid.x) % sim.grid.y, id / (sim.grid.x * sim.grid.y));
+    ivec3 c = cell_coord(id);
     bool air[6];
     float kappa = 0.0, faces = 0.0;
     for (int n = 0; n < 6; ++n) {

@@ -17,7 +17,7 @@ layout(std430, binding = PF_SLOT_ST_FRACTION) writeonly buffer Fraction { float 
 void main() {
     int id = int(flat_id());
     if (id >= sim.grid.w) return;
-    ivec3 c = ivec3(id % sim.grid.x, (id / sim.grid.x) % sim.grid.y, id / (sim.grid.x * sim.grid.y));
+    ivec3 c = cell_coord(id);
     float sum = 0.0;
     for (int axis = 0; axis < 3; ++axis) {
         ivec3 hi = c;

@@ -45,7 +45,7 @@ void main() {
 #if !PF_VISC_START
     g_beta = uintBitsToFloat(state[PF_VISC_BETA]);
 #endif
-    ivec3 n = ivec3(id % d.x, (id / d.x) % d.y, id / (d.x * d.y));
+    ivec3 n = unflatten(id, d);
     float c = visc_coupling();
     if (all(lessThan(n, sim.grid.xyz))) {
         vec4 s = vec4(0.0);

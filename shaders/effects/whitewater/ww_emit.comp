@@ -49,7 +49,7 @@ float potential(float value, vec2 range) { return clamp((value - range.x) / (ran
 void main() {
     int id = int(flat_id());
     if (id >= sim.grid.w) return;
-    ivec3 c = ivec3(id % sim.grid.x, (id / sim.grid.x) % sim.grid.y, id / (sim.grid.x * sim.grid.y));
+    ivec3 c = cell_coord(id);
     if (PF_CELL_KIND(cell_type[id]) != PF_CELL_FLUID) return;
     vec3 u = centre_velocity(c);
     float energy = potential(0.5 * dot(u, u), u_limits_b.xy);

@@ -10,7 +10,7 @@ layout(std430, binding = PF_SLOT_WW_FRACTION) writeonly buffer Fraction { float 
 void main() {
     int id = int(flat_id());
     if (id >= sim.grid.w) return;
-    ivec3 c = ivec3(id % sim.grid.x, (id / sim.grid.x) % sim.grid.y, id / (sim.grid.x * sim.grid.y));
+    ivec3 c = cell_coord(id);
     float liquid = 0.0, counted = 0.0;
     for (int z = -1; z <= 1; ++z)
         for (int y = -1; y <= 1; ++y)

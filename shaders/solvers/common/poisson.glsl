@@ -14,12 +14,7 @@ layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // nx, ny, nz, cell
 
 #include "solvers/common/poisson_neighbours.glsl"
 
-// Two integer divisions (each a long instruction sequence on GPUs), not three plus two modulos.
-ivec3 level_coord(int c) {
-    int row = c / u_dims.x;
-    int k = row / u_dims.y;
-    return ivec3(c - row * u_dims.x, row - k * u_dims.y, k);
-}
+ivec3 level_coord(int c) { return unflatten(c, u_dims.xyz); }
 int level_index(ivec3 ijk) { return ijk.x + u_dims.x * (ijk.y + u_dims.y * ijk.z); }
 bool level_inside(ivec3 ijk) { return all(greaterThanEqual(ijk, ivec3(0))) && all(lessThan(ijk, u_dims.xyz)); }
 
@@ -68,12 +63,7 @@ uint workgroup_index() { return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWork
 int orbit_count() { return ((u_dims.x + 1) / 2) * u_dims.y * ((u_dims.z + 1) / 2); }
 
 // The orbit's first cell (i, j, k) with i and k in the lower halves of their axes.
-ivec3 orbit_origin(int o) {
-    int hx = (u_dims.x + 1) / 2;
-    int row = o / hx;
-    int k = row / u_dims.y;
-    return ivec3(o - row * hx, row - k * u_dims.y, k);
-}
+ivec3 orbit_origin(int o) { return unflatten(o, ivec3((u_dims.x + 1) / 2, u_dims.y, u_dims.z)); }
 // The coordinates of the orbit's cells: a, its x-mirror, its z-mirror, both.
 ivec3 orbit_coord(ivec3 a, int q) {
     return ivec3((q & 1) != 0 ? u_dims.x - 1 - a.x : a.x, a.y, (q & 2) != 0 ? u_dims.z - 1 - a.z : a.z);

@@ -12,7 +12,7 @@ layout(std430, binding = PF_SLOT_MG_COARSE_TYPE) writeonly buffer CoarseType { u
 void main() {
     int c = int(flat_id());
     if (c >= u_coarse_dims.w) return;
-    ivec3 cc = ivec3(c % u_coarse_dims.x, (c / u_coarse_dims.x) % u_coarse_dims.y, c / (u_coarse_dims.x * u_coarse_dims.y));
+    ivec3 cc = unflatten(c, u_coarse_dims.xyz);
     bool air = false, fluid = false;
     for (int n = 0; n < 8; ++n) {
         ivec3 f = 2 * cc + ivec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);

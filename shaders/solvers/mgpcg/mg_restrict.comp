@@ -28,7 +28,7 @@ layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // the fine level
 void main() {
     int c = int(flat_id());
     if (c >= u_coarse_dims.w) return;
-    ivec3 cc = ivec3(c % u_coarse_dims.x, (c / u_coarse_dims.x) % u_coarse_dims.y, c / (u_coarse_dims.x * u_coarse_dims.y));
+    ivec3 cc = unflatten(c, u_coarse_dims.xyz);
     float r = 0.0;
     bool fluid = PF_CELL_KIND(coarse_type[c]) == PF_CELL_FLUID;
     if (fluid) {

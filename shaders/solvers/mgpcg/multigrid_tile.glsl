@@ -4,7 +4,7 @@
 // `shared uint s_type[]` and `shared float s_e[]` first; cells outside the level are staged as
 // SOLID, which the stencil leaves out as poisson.glsl leaves out cells past the level's edge.
 
-ivec3 tile_coord(int g, ivec3 tiles) { return ivec3(g % tiles.x, (g / tiles.x) % tiles.y, g / (tiles.x * tiles.y)); }
+ivec3 tile_coord(int g, ivec3 tiles) { return unflatten(g, tiles); }
 // Coordinates of entry i of a staged cube of edge n, and back.
 ivec3 tile_local(int i, int n) { return ivec3(i % n, (i / n) % n, i / (n * n)); }
 int tile_index(ivec3 local, int n) { return local.x + n * (local.y + n * local.z); }

@@ -45,21 +45,26 @@ void add_shared(int slot, int value) {
     if (overflowed(atomicAdd(s_accum[slot], value), value)) s_overflow = 1u;
 }
 
+// The tile's cell counts (those inside the grid): the shared counts, or 0 for an empty tile.
+void write_counts(ivec3 first_cell, int lane, bool counted) {
+    for (int k = lane; k < kTileCells; k += PF_WORKGROUP_SIZE) {
+        ivec3 cell = first_cell + ivec3(k % PF_P2G_TILE, (k / PF_P2G_TILE) % PF_P2G_TILE, k / (PF_P2G_TILE * PF_P2G_TILE));
+        if (all(lessThan(cell, sim.grid.xyz))) cell_count[cell_index(cell)] = counted ? s_count[k] : 0u;
+    }
+}
+
 void main() {
     ivec3 tiles = (sim.grid.xyz + PF_P2G_TILE - 1) / PF_P2G_TILE;
     uint tile = flat_id() / uint(PF_WORKGROUP_SIZE);
     if (tile >= uint(tiles.x * tiles.y * tiles.z)) return;  // the whole workgroup
     int lane = int(gl_LocalInvocationID.x);
-    ivec3 t = ivec3(int(tile) % tiles.x, (int(tile) / tiles.x) % tiles.y, int(tile) / (tiles.x * tiles.y));
+    ivec3 t = unflatten(int(tile), tiles);
     ivec3 first_cell = t * PF_P2G_TILE;
     ivec3 origin = first_cell - 1;  // the window's first face sample, on every lattice
     uint begin = tile_start[tile], end = tile_start[tile + 1u];
     if (begin == end) {
         // No particles (most of a tank's air): its cells count 0 and its window adds nothing.
-        for (int k = lane; k < kTileCells; k += PF_WORKGROUP_SIZE) {
-            ivec3 cell = first_cell + ivec3(k % PF_P2G_TILE, (k / PF_P2G_TILE) % PF_P2G_TILE, k / (PF_P2G_TILE * PF_P2G_TILE));
-            if (all(lessThan(cell, sim.grid.xyz))) cell_count[cell_index(cell)] = 0u;
-        }
+        write_counts(first_cell, lane, false);
         return;  // the whole workgroup
     }
     for (int k = lane; k < 3 * kWindowSamples * 2; k += PF_WORKGROUP_SIZE) s_accum[k] = 0;
@@ -103,9 +108,6 @@ void main() {
                                     w / (PF_P2G_TILE_WINDOW * PF_P2G_TILE_WINDOW));
         add_global(2 * face_index(axis, node) + (k & 1), value);
     }
-    for (int k = lane; k < kTileCells; k += PF_WORKGROUP_SIZE) {
-        ivec3 cell = first_cell + ivec3(k % PF_P2G_TILE, (k / PF_P2G_TILE) % PF_P2G_TILE, k / (PF_P2G_TILE * PF_P2G_TILE));
-        if (all(lessThan(cell, sim.grid.xyz))) cell_count[cell_index(cell)] = s_count[k];
-    }
+    write_counts(first_cell, lane, true);
     if (lane == 0 && s_overflow != 0u) atomicOr(status[PF_STATUS_FLAGS], PF_GPU_FLAG_P2G_OVERFLOW);
 }
