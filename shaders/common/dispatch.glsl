@@ -7,9 +7,9 @@ uint flat_id() {
     return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * uint(PF_WORKGROUP_SIZE);
 }
 
-// The coordinates of flat index i in a box of d (x fastest). Two integer divisions, each a long
-// instruction sequence on GPUs: the form i % d.x, (i / d.x) % d.y, i / (d.x d.y) took three and
-// two modulos (docs/performance.md, step 7).
+// The coordinates of flat index i in a box of d (x fastest), with two integer divisions (each a
+// long instruction sequence on GPUs); i % d.x, (i / d.x) % d.y, i / (d.x d.y) takes three
+// divisions and two modulos (docs/performance.md, step 7).
 ivec3 unflatten(int i, ivec3 d) {
     int row = i / d.x;
     int k = row / d.y;
