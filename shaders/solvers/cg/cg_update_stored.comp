@@ -25,7 +25,8 @@ void main() {
         x[c] += alpha * p[c];
         float rn = r[c] - alpha * q[c];
         r[c] = rn;
-        float diag = cell_color(c) == 0u ? poisson_stencil(c).diag : 0.0;
+        ivec3 ijk = level_coord(c);
+        float diag = cell_color_at(ijk) == 0u ? poisson_stencil_at(c, ijk).diag : 0.0;
         first = diag > 0.0 ? rn / diag : 0.0;
     }
     start[c] = first;  // read by the V-cycle's black half-sweep (not in this pass)

@@ -20,7 +20,8 @@ layout(location = PF_LOC_SOLVER_OMEGA) uniform float u_omega;
 void main() {
     int c = int(flat_id());
     if (c >= u_dims.w) return;
-    bool mine = cell_color(c) == u_color;
+    ivec3 ijk = level_coord(c);
+    bool mine = cell_color_at(ijk) == u_color;
 #if PF_GS_FROM_ZERO
     if (!mine || PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) {
         x[c] = 0.0;
@@ -29,7 +30,7 @@ void main() {
 #else
     if (!mine || PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) return;
 #endif
-    PoissonStencil s = poisson_stencil(c);
+    PoissonStencil s = poisson_stencil_at(c, ijk);
     vec3 pair_sum = vec3(0.0);
 #if !PF_GS_FROM_ZERO
     for (int n = 0; n < 6; ++n) {

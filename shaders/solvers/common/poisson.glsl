@@ -49,7 +49,6 @@ float pair_total(vec3 pair_sum) { return (pair_sum.x + pair_sum.y) + pair_sum.z;
 
 // Red-black colour of a cell: 0 when i + j + k is even.
 uint cell_color_at(ivec3 ijk) { return uint(ijk.x + ijk.y + ijk.z) & 1u; }
-uint cell_color(int c) { return cell_color_at(level_coord(c)); }
 
 // Index of a workgroup in a (possibly 2D) dispatch: one partial sum each.
 uint workgroup_index() { return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x; }

@@ -38,11 +38,12 @@ OwnedCell own(int c) {
     o.color = 0u;
     o.live = false;
     if (c < u_dims.w && PF_CELL_KIND(cell_type[c]) == PF_CELL_FLUID) {
-        PoissonStencil s = poisson_stencil(c);
+        ivec3 ijk = level_coord(c);
+        PoissonStencil s = poisson_stencil_at(c, ijk);
         for (int n = 0; n < 6; ++n) o.mask |= s.nb[n] >= 0 ? 1u << n : 0u;
         o.diag = s.diag;
         o.rhs = r[c];
-        o.color = cell_color(c);
+        o.color = cell_color_at(ijk);
         o.live = s.diag > 0.0;
     }
     return o;

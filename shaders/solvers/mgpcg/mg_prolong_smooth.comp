@@ -41,10 +41,10 @@ void main() {
     float v = 0.0;
     if (PF_CELL_KIND(cell_type[f]) == PF_CELL_FLUID) {
         ivec3 fi = level_coord(f);
-        if (((fi.x + fi.y + fi.z) & 1) == 0) {
+        if (cell_color_at(fi) == 0u) {
             v = corrected(f, fi);
         } else {
-            PoissonStencil s = poisson_stencil(f);
+            PoissonStencil s = poisson_stencil_at(f, fi);
             vec3 pair_sum = vec3(0.0);
             for (int n = 0; n < 6; ++n) {
                 if (s.nb[n] >= 0) pair_sum[n / 2] += corrected(s.nb[n], fi + kPoissonNeighbours[n]);

@@ -6,7 +6,7 @@
 
 ivec3 tile_coord(int g, ivec3 tiles) { return unflatten(g, tiles); }
 // Coordinates of entry i of a staged cube of edge n, and back.
-ivec3 tile_local(int i, int n) { return ivec3(i % n, (i / n) % n, i / (n * n)); }
+ivec3 tile_local(int i, int n) { return unflatten(i, ivec3(n)); }
 int tile_index(ivec3 local, int n) { return local.x + n * (local.y + n * local.z); }
 // Index offsets of the six neighbours in a staged cube of edge n, in kPoissonNeighbours' order.
 int[6] tile_steps(int n) { return int[6](-1, 1, -n, n, -n * n, n * n); }

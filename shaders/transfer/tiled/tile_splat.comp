@@ -48,7 +48,7 @@ void add_shared(int slot, int value) {
 // The tile's cell counts (those inside the grid): the shared counts, or 0 for an empty tile.
 void write_counts(ivec3 first_cell, int lane, bool counted) {
     for (int k = lane; k < kTileCells; k += PF_WORKGROUP_SIZE) {
-        ivec3 cell = first_cell + ivec3(k % PF_P2G_TILE, (k / PF_P2G_TILE) % PF_P2G_TILE, k / (PF_P2G_TILE * PF_P2G_TILE));
+        ivec3 cell = first_cell + unflatten(k, ivec3(PF_P2G_TILE));
         if (all(lessThan(cell, sim.grid.xyz))) cell_count[cell_index(cell)] = counted ? s_count[k] : 0u;
     }
 }
@@ -104,8 +104,7 @@ void main() {
         int value = s_accum[k];
         if (value == 0) continue;  // also every window sample outside its lattice
         int window_index = k / 2, axis = window_index / kWindowSamples, w = window_index % kWindowSamples;
-        ivec3 node = origin + ivec3(w % PF_P2G_TILE_WINDOW, (w / PF_P2G_TILE_WINDOW) % PF_P2G_TILE_WINDOW,
-                                    w / (PF_P2G_TILE_WINDOW * PF_P2G_TILE_WINDOW));
+        ivec3 node = origin + unflatten(w, ivec3(PF_P2G_TILE_WINDOW));
         add_global(2 * face_index(axis, node) + (k & 1), value);
     }
     write_counts(first_cell, lane, true);
