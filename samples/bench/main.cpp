@@ -227,15 +227,17 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     std::vector<double> wall, cpu, iterations, residual, dispatch_count[PF_PASS_COUNT];
     std::map<std::string, std::vector<double>> pass_list, pass_dispatches;
     std::vector<std::string> pass_order;
-    // Each entry's dispatches in the step just taken (entries added mid-run count 0 before).
-    auto count_dispatches = [&]() {
+    // The pass list as it stands (pf_get_pass_stats: no stall).
+    auto entries = [&]() {
         uint32_t n = 0;
         pfs::check(pf_get_pass_count(sim.get(), &n), "pf_get_pass_count");
-        for (uint32_t i = 0; i < n; ++i) {
-            pf_pass_stats ps{};
-            pfs::check(pf_get_pass_stats(sim.get(), i, &ps), "pf_get_pass_stats");
-            pass_dispatches[ps.name].push_back(ps.dispatches);
-        }
+        std::vector<pf_pass_stats> list(n);
+        for (uint32_t i = 0; i < n; ++i) pfs::check(pf_get_pass_stats(sim.get(), i, &list[i]), "pf_get_pass_stats");
+        return list;
+    };
+    // Each entry's dispatches in the step just taken (entries added mid-run count 0 before).
+    auto count_dispatches = [&]() {
+        for (const pf_pass_stats& ps : entries()) pass_dispatches[ps.name].push_back(ps.dispatches);
     };
     auto collect = [&]() {
         if (st.gpu_step >= first && st.gpu_step <= last && !gpu.count(st.gpu_step)) {
@@ -243,11 +245,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
             std::copy(st.gpu_ms, st.gpu_ms + PF_PASS_COUNT, g.ms);
             g.total = st.gpu_total_ms;
             gpu[st.gpu_step] = g;
-            uint32_t n = 0;
-            pfs::check(pf_get_pass_count(sim.get(), &n), "pf_get_pass_count");
-            for (uint32_t i = 0; i < n; ++i) {
-                pf_pass_stats ps{};
-                pfs::check(pf_get_pass_stats(sim.get(), i, &ps), "pf_get_pass_stats");
+            for (const pf_pass_stats& ps : entries()) {
                 if (!pass_list.count(ps.name)) pass_order.push_back(ps.name);
                 pass_list[ps.name].push_back(ps.gpu_ms);
             }
