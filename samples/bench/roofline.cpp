@@ -244,10 +244,10 @@ Traffic pass_traffic(pf_pass pass, const TrafficInputs& in) {
             t.bytes = p * (48 + (in.apic ? 48 : 0)) + f * (in.apic ? 4 : 8);
             break;
         case PF_PASS_ADVECT:
-            // position and velocity in, position out (Runge-Kutta: the face velocities in); the
-            // volume correction's move: position in and out, the potential, types and face
-            // fractions in.
-            t.bytes = p * 48 + (in.rk_advection ? 4 * f : 0);
+            // position and velocity in and out (the velocity for the walls' stop; Runge-Kutta:
+            // the face velocities in); the volume correction's move: position in and out, the
+            // potential, types and face fractions in.
+            t.bytes = p * 64 + (in.rk_advection ? 4 * f : 0);
             if (in.volume_correction) t.bytes += p * 32 + 8 * cells + 4 * f;
             break;
         default: break;

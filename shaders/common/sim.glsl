@@ -91,11 +91,31 @@ float mirror_sum(float t[8]) {
     return ((t[0] + t[1]) + (t[2] + t[3])) + ((t[4] + t[5]) + (t[6] + t[7]));
 }
 
-// Wall clamp of every advection scheme: the grid coordinate is kept in [eps, n - eps], the
-// same margin on every side (no wall bias). Positions already inside are returned unchanged.
-const float kWallMargin = 1e-3;  // cells
+// Wall clamp of every advection scheme, the same on every side (no wall bias). A position that
+// crossed a wall is put back a quarter cell inside, where pf_fill_box's outermost samples lie (8
+// a cell): parked on the wall plane, a particle interpolates almost none of the normal velocity
+// or volume correction of the face inside it, so it stays there, and such particles piled up
+// where walls meet (docs/performance.md, issue 18 step 8). "Crossed" means beyond kWallEps, so
+// that rounding near n cannot make mirrored runs differ. A position within kWallEps of the plane
+// is only kept kWallEps inside: moving it further would lift particles off the floor, a ratchet
+// that adds energy. Positions inside [kWallEps, n - kWallEps] are returned unchanged.
+const float kWallEps = 1e-3;       // cells
+const float kWallReturn = 0.25;    // cells
 vec3 keep_in_domain(vec3 x) {
     vec3 g = grid_coord(x);
-    vec3 clamped = clamp(g, vec3(kWallMargin), vec3(sim.grid.xyz) - kWallMargin);
-    return mix(x, sim.origin.xyz + clamped * sim.dx, notEqual(g, clamped));
+    vec3 n = vec3(sim.grid.xyz);
+    bvec3 crossed = notEqual(clamp(g, vec3(-kWallEps), n + kWallEps), g);
+    vec3 kept = mix(g, clamp(g, vec3(kWallReturn), n - kWallReturn), crossed);
+    kept = clamp(kept, vec3(kWallEps), n - kWallEps);
+    return mix(x, sim.origin.xyz + kept * sim.dx, notEqual(g, kept));
+}
+
+// The velocity a particle keeps after keep_in_domain returned it from beyond a wall: the wall
+// stops its motion into that wall. Kept, that motion would press the particle back every
+// substep, and a particle the pressure does not hold (one alone on the floor) would gain
+// gravity's speed for ever while the wall returns it to the same place.
+vec3 wall_stopped_velocity(vec3 x, vec3 v) {
+    vec3 g = grid_coord(x);
+    v = mix(v, max(v, vec3(0.0)), lessThan(g, vec3(-kWallEps)));
+    return mix(v, min(v, vec3(0.0)), greaterThan(g, vec3(sim.grid.xyz) + kWallEps));
 }

@@ -2,12 +2,14 @@
 // PF_RK_ORDER 2: the midpoint rule; 3: Ralston's third-order method. Every stage samples the
 // projected, extrapolated face velocity with G2P's clamped trilinear stencil (§3) at the
 // stage position, and every stage position, like the final one, goes through Euler's wall
-// clamp, so the field is only sampled inside the domain. Why: Euler with the particle's
-// velocity spirals out of a rotating flow by sqrt(1 + w^2 dt^2) per substep; these schemes
-// follow the grid's flow to O(dt^3) and O(dt^4) per substep.
+// clamp, so the field is only sampled inside the domain; a wall the final position crossed
+// stops the particle's velocity into it. Why: Euler with the particle's velocity spirals out of
+// a rotating flow by sqrt(1 + w^2 dt^2) per substep; these schemes follow the grid's flow to
+// O(dt^3) and O(dt^4) per substep.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
+layout(std430, binding = PF_SLOT_PARTICLE_VEL) buffer Vel { vec4 vel[]; };
 layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_vel[]; };
 
 #include "common/face_velocity.glsl"
@@ -28,4 +30,5 @@ void main() {
 #error PF_RK_ORDER must be 2 or 3
 #endif
     pos[i] = vec4(keep_in_domain(x), 0.0);
+    vel[i].xyz = wall_stopped_velocity(x, vel[i].xyz);
 }

@@ -420,7 +420,8 @@ void Simulation::run_advect() {
     if (desc_.params.advection == PF_ADVECTION_EULER) {
         r.run({advect, stat_.advect, np, {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}}});
     } else {
-        r.run({advect, stat_.advect, np, {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_FACE_VEL, &face_vel_}}});
+        r.run({advect, stat_.advect, np,
+               {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_}}});
     }
 }
 

@@ -544,20 +544,41 @@ void g2p_apic(const Grid& grid, Particles& particles, const std::vector<double>&
 }
 
 glm::dvec3 keep_in_domain(const Grid& grid, glm::dvec3 world_pos) {
-    const double eps = 1e-3; // cells; same on every side so the clamp is mirror symmetric
+    // cells (shaders/common/sim.glsl): a position more than eps beyond a wall returns a quarter
+    // cell inside; one nearer the plane is kept eps inside. Same on every side.
+    const double eps = 1e-3, back = 0.25;
     const glm::dvec3 n(grid.cell_dims());
-    return grid.to_world(glm::clamp(grid.to_grid(world_pos), glm::dvec3(eps), n - eps));
+    glm::dvec3 g = grid.to_grid(world_pos);
+    for (int a = 0; a < 3; ++a) {
+        if (g[a] < -eps || g[a] > n[a] + eps) g[a] = glm::clamp(g[a], back, n[a] - back);
+        g[a] = glm::clamp(g[a], eps, n[a] - eps);
+    }
+    return grid.to_world(g);
+}
+
+glm::dvec3 wall_stopped_velocity(const Grid& grid, glm::dvec3 world_pos, glm::dvec3 v) {
+    const double eps = 1e-3;
+    const glm::dvec3 n(grid.cell_dims()), g = grid.to_grid(world_pos);
+    for (int a = 0; a < 3; ++a) {
+        if (g[a] < -eps) v[a] = std::max(v[a], 0.0);
+        if (g[a] > n[a] + eps) v[a] = std::min(v[a], 0.0);
+    }
+    return v;
 }
 
 void advect(const Grid& grid, Particles& particles, double dt) {
-    for (size_t p = 0; p < particles.pos.size(); ++p)
-        particles.pos[p] = keep_in_domain(grid, particles.pos[p] + dt * particles.vel[p]);
+    for (size_t p = 0; p < particles.pos.size(); ++p) {
+        const glm::dvec3 x = particles.pos[p] + dt * particles.vel[p];
+        particles.pos[p] = keep_in_domain(grid, x);
+        particles.vel[p] = wall_stopped_velocity(grid, x, particles.vel[p]);
+    }
 }
 
 void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>& vel, double dt,
                Advection scheme) {
     auto u = [&](const glm::dvec3& x) { return interpolate(grid, vel, keep_in_domain(grid, x)); };
-    for (glm::dvec3& x0 : particles.pos) {
+    for (size_t p = 0; p < particles.pos.size(); ++p) {
+        glm::dvec3& x0 = particles.pos[p];
         const glm::dvec3 k1 = u(x0);
         const glm::dvec3 k2 = u(x0 + 0.5 * dt * k1);
         glm::dvec3 x;
@@ -568,6 +589,7 @@ void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>
             x = x0 + dt * (2.0 / 9.0 * k1 + 1.0 / 3.0 * k2 + 4.0 / 9.0 * k3);
         }
         x0 = keep_in_domain(grid, x);
+        if (p < particles.vel.size()) particles.vel[p] = wall_stopped_velocity(grid, x, particles.vel[p]);
     }
 }
 

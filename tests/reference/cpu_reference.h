@@ -183,14 +183,20 @@ glm::dvec3 interpolate_gradient(const Grid& grid, const std::vector<double>& fie
 // |v| > max_speed → v and C scaled by max_speed/|v|; then |C|_F·dx > max_speed → C scaled to it.
 void g2p_apic(const Grid& grid, Particles& particles, const std::vector<double>& vel, double max_speed);
 
-// §4.10: x += dt·v, then g = clamp(g, ε, n - ε), ε = 1e-3 cells.
+// §4.10: x += dt·v, then keep_in_domain and wall_stopped_velocity.
 void advect(const Grid& grid, Particles& particles, double dt);
 
-// The wall clamp of every advection scheme: g = clamp(g, ε, n - ε).
+// The wall clamp of every advection scheme: a coordinate outside [-ε, n + ε] goes to clamp(g,
+// 1/4, n - 1/4) (a quarter cell inside), then g = clamp(g, ε, n - ε), ε = 1e-3 cells.
 glm::dvec3 keep_in_domain(const Grid& grid, glm::dvec3 world_pos);
 
+// The velocity kept after keep_in_domain returned world_pos from beyond a wall: v's components
+// into each wall crossed by more than ε are dropped.
+glm::dvec3 wall_stopped_velocity(const Grid& grid, glm::dvec3 world_pos, glm::dvec3 v);
+
 // §4.10 Runge-Kutta through the grid velocity (vel, interpolated as in §3): midpoint (rk2) or
-// Ralston's third order (rk3); every stage position and the result go through keep_in_domain.
+// Ralston's third order (rk3); every stage position and the result go through keep_in_domain,
+// and a wall the result crossed stops particles.vel (wall_stopped_velocity).
 void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>& vel, double dt,
                Advection scheme);
 

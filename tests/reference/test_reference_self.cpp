@@ -363,18 +363,26 @@ TEST(Reference, G2PBlendClampAndNonFinite) {
     for (const auto& v : p.vel) EXPECT_EQ(v, glm::dvec3(0.0));
 }
 
+// Inside: x += dt v. Beyond a wall by more than 1e-3 cells: back a quarter cell inside, the
+// velocity into that wall dropped. Within 1e-3 cells of the plane: kept 1e-3 inside, v kept.
 TEST(Reference, AdvectEulerAndClamp) {
     const Grid grid{4, 5, 6, 0.5, glm::dvec3(1.0, 2.0, 3.0)};
-    Particles p{{grid.to_world(glm::dvec3(2.0, 2.5, 3.0)), grid.to_world(glm::dvec3(0.5, 4.5, 5.9))},
-                {glm::dvec3(0.5, -0.25, 1.0), glm::dvec3(-10.0, 10.0, 0.0)}};
+    const double grazing = (1.0 + 5e-4) * 0.5 / 0.2;  // reaches g.x = -5e-4
+    Particles p{{grid.to_world(glm::dvec3(2.0, 2.5, 3.0)), grid.to_world(glm::dvec3(0.5, 4.5, 5.9)),
+                 grid.to_world(glm::dvec3(1.0, 2.0, 3.0))},
+                {glm::dvec3(0.5, -0.25, 1.0), glm::dvec3(-10.0, 10.0, -0.5), glm::dvec3(-grazing, 0.0, 0.0)}};
     advect(grid, p, 0.2);
-    const glm::dvec3 g0 = grid.to_grid(p.pos[0]), g1 = grid.to_grid(p.pos[1]);
+    const glm::dvec3 g0 = grid.to_grid(p.pos[0]), g1 = grid.to_grid(p.pos[1]), g2 = grid.to_grid(p.pos[2]);
     EXPECT_NEAR(g0.x, 2.0 + 0.2 * 0.5 / 0.5, 1e-12);
     EXPECT_NEAR(g0.y, 2.5 - 0.2 * 0.25 / 0.5, 1e-12);
     EXPECT_NEAR(g0.z, 3.0 + 0.2 * 1.0 / 0.5, 1e-12);
-    EXPECT_NEAR(g1.x, 1e-3, 1e-12);
-    EXPECT_NEAR(g1.y, 5.0 - 1e-3, 1e-12);
-    EXPECT_NEAR(g1.z, 5.9, 1e-12);
+    EXPECT_EQ(p.vel[0], glm::dvec3(0.5, -0.25, 1.0));
+    EXPECT_NEAR(g1.x, 0.25, 1e-12);
+    EXPECT_NEAR(g1.y, 5.0 - 0.25, 1e-12);
+    EXPECT_NEAR(g1.z, 5.9 - 0.2 * 0.5 / 0.5, 1e-12);
+    EXPECT_EQ(p.vel[1], glm::dvec3(0.0, 0.0, -0.5));
+    EXPECT_NEAR(g2.x, 1e-3, 1e-12);
+    EXPECT_EQ(p.vel[2], glm::dvec3(-grazing, 0.0, 0.0));
 }
 
 // A face field sampling the affine velocity V(x) = a + G x (V_c at each face of lattice c).
@@ -509,18 +517,22 @@ TEST(Reference, RungeKuttaKeepsStagesInsideTheDomain) {
         for (int j = 0; j < 4; ++j)
             for (int i = 0; i <= 4; ++i) faces[grid.face_index(0, i, j, k)] = 10.0 + i;
     for (Advection scheme : {Advection::rk2, Advection::rk3}) {
-        Particles p{{grid.to_world(glm::dvec3(3.5, 2.0, 2.0))}, {glm::dvec3(0.0)}, {}};
+        Particles p{{grid.to_world(glm::dvec3(3.5, 2.0, 2.0))}, {glm::dvec3(1.0, -2.0, 0.0)}, {}};
         advect_rk(grid, p, faces, 1.0, scheme);
-        EXPECT_NEAR(grid.to_grid(p.pos[0]).x, 4.0 - 1e-3, 1e-12);
+        EXPECT_NEAR(grid.to_grid(p.pos[0]).x, 4.0 - 0.25, 1e-12);  // returned a quarter cell inside
         EXPECT_NEAR(grid.to_grid(p.pos[0]).y, 2.0, 1e-12);
+        EXPECT_EQ(p.vel[0], glm::dvec3(0.0, -2.0, 0.0));  // the wall stops the motion into it
     }
     // Midpoint from g = 1.2 with dt such that the half step lands beyond the wall: the stage is
-    // clamped to 4 - eps, where u = 10 + 4 - eps (in grid units 2 (14 - eps) per second).
+    // returned to 4 - 1/4, where u = 10 + 3.75 (in grid units 2 * 13.75 per second).
     Particles p{{grid.to_world(glm::dvec3(1.2, 2.0, 2.0))}, {glm::dvec3(0.0)}, {}};
-    const double dt = 0.3;  // half step: 1.2 + 0.15 * 11.2 / 0.5 = 4.56 > 4
+    const double dt = 0.1;  // half step: 1.2 + 0.05 * 11.2 / 0.5 = 2.32; full: 1.2 + 0.1 * 12.16 / 0.5
     advect_rk(grid, p, faces, dt, Advection::rk2);
-    const double k2 = 10.0 + (4.0 - 1e-3);
-    EXPECT_NEAR(grid.to_grid(p.pos[0]).x, std::min(1.2 + dt * k2 / 0.5, 4.0 - 1e-3), 1e-12);
+    const double k2 = 10.0 + (1.2 + 0.5 * dt * 11.2 / 0.5);
+    EXPECT_NEAR(grid.to_grid(p.pos[0]).x, 1.2 + dt * k2 / 0.5, 1e-12);
+    Particles q{{grid.to_world(glm::dvec3(1.2, 2.0, 2.0))}, {glm::dvec3(0.0)}, {}};
+    advect_rk(grid, q, faces, 0.3, Advection::rk2);  // half step: 4.56 > 4, returned to 3.75
+    EXPECT_NEAR(grid.to_grid(q.pos[0]).x, 4.0 - 0.25, 1e-12);  // 1.2 + 0.3 * 13.75 / 0.5 > 4 too
 }
 
 // A blob far from walls in free fall: uniform velocity is divergence free, so pressure is

@@ -15,7 +15,7 @@ layout(std430, binding = PF_SLOT_PARTICLE_VEL) buffer Vel { vec4 vel[]; };
 
 bool in_domain(vec3 x) {
     vec3 g = grid_coord(x);
-    return all(greaterThanEqual(g, vec3(kWallMargin))) && all(lessThanEqual(g, vec3(sim.grid.xyz) - kWallMargin));
+    return all(greaterThanEqual(g, vec3(kWallEps))) && all(lessThanEqual(g, vec3(sim.grid.xyz) - kWallEps));
 }
 
 // The way out of obstacle o from x along one of the six axis directions that ends inside the
