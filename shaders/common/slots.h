@@ -23,6 +23,9 @@
 #define PF_SLOT_FACE_FRACTION 5
 /* APIC affine vectors (3 vec4 per particle), bound by P2G and G2P only: neither binds cell_type */
 #define PF_SLOT_PARTICLE_AFFINE 6
+/* G2P in the tiled P2G's order (common/particle_order.glsl): the live particle slots grouped by
+ * tile; G2P binds neither face accumulators nor cell counts */
+#define PF_SLOT_PARTICLE_ORDER 4
 /* storage blocks: pressure and extrapolation kernels (no particle buffers bound there) */
 #define PF_SLOT_PRESSURE 0
 #define PF_SLOT_PRESSURE_OUT 1

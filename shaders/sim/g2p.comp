@@ -1,7 +1,8 @@
 // Grid-to-particle: PIC/FLIP blend v = (1-r) I(u) + r (v_p + I(u - u_old)) with the same
 // clamped trilinear stencil as P2G. Non-finite results are zeroed and speeds above
 // max_speed clamped (both flagged); the largest speed goes to the status buffer for the
-// next frame's CFL estimate. Permutation PF_PIC_ONLY (flip ratio 0) skips u_old.
+// next frame's CFL estimate. Permutation PF_PIC_ONLY (flip ratio 0) skips u_old; PF_ORDERED
+// walks the particles in the tiled P2G's order (common/particle_order.glsl).
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
@@ -12,10 +13,12 @@ layout(std430, binding = PF_SLOT_FACE_VEL_OLD) readonly buffer FaceVelOld { floa
 #endif
 layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
 #include "common/particle_velocity.glsl"
+#include "common/particle_order.glsl"
 
 void main() {
-    uint i = flat_id();
-    if (i >= sim.particle_count) return;
+    uint t = flat_id();
+    if (t >= sim.particle_count) return;
+    uint i = particle_slot(t);
     vec3 g = grid_coord(pos[i].xyz);
     vec3 v_pic = vec3(0.0);
     vec3 delta = vec3(0.0);

@@ -210,6 +210,14 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
     p.grid_forces = p2g_.float_sums(params) ? ProgramId::grid_forces_float : ProgramId::grid_forces;
     // Pure PIC skips the FLIP delta (and its u_old reads) in a permutation of its own.
     p.g2p = apic ? ProgramId::g2p_apic : params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
+    // A scheme that groups particles by tile lets G2P read the grid in that order, which pays
+    // once the face velocities it reads outgrow the cache (docs/performance.md, issue 18 step 9:
+    // on the H100 ordered G2P is 10% slower at 1M particles, 18-58% faster from 2M; APIC's, with
+    // three times the particle data to scatter, was slower at 1M and 5M).
+    const bool flip = params.flip_ratio > 0.0f;
+    const uint64_t face_bytes = uint64_t(faces_) * sizeof(float) * (flip ? 2u : 1u);
+    const bool ordered = !apic && face_bytes >= ordered_g2p_face_bytes_ && p2g_.has_particle_order(params);
+    p.g2p_ordered = !ordered ? p.g2p : flip ? ProgramId::g2p_flip_ordered : ProgramId::g2p_pic_ordered;
     p.advect = params.advection == PF_ADVECTION_RK2   ? ProgramId::advect_rk2
                : params.advection == PF_ADVECTION_RK3 ? ProgramId::advect_rk3
                                                       : ProgramId::advect;
@@ -219,7 +227,7 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
 pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const char* fn) {
     if (pf_result r = p2g_.prepare(gl_, *runner_, params, log_, fn); r != PF_OK) return r;
     const ParticlePrograms programs = particle_programs(params);
-    for (ProgramId id : {programs.grid_forces, programs.g2p, programs.advect}) {
+    for (ProgramId id : {programs.grid_forces, programs.g2p, programs.g2p_ordered, programs.advect}) {
         if (std::string error = runner_->prepare(id); !error.empty())
             return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
@@ -302,6 +310,7 @@ void Simulation::build_substep_table() {
         p2g_.run(*runner_, desc_.params,
                  P2gBuffers{pos_, vel_, affine_, face_accum_, cell_count_, status_, particle_count_,
                             desc_.params.transfer == PF_TRANSFER_APIC, stat_.clear});
+        g2p_order_ = p2g_.particle_order(desc_.params);
     });
     t.add("grid_forces", [this, faces](const SubstepContext&) {
         runner_->run({particle_programs(desc_.params).grid_forces, stat_.grid_forces, faces,
@@ -404,15 +413,21 @@ void Simulation::run_g2p() {
     const uint32_t np = particle_count_;
     const Bind pos{PF_SLOT_PARTICLE_POS, &pos_}, vel{PF_SLOT_PARTICLE_VEL, &vel_},
         face_vel{PF_SLOT_FACE_VEL, &face_vel_}, status{PF_SLOT_STATUS, &status_};
-    const gl::ProgramId g2p = particle_programs(desc_.params).g2p;
-    if (desc_.params.transfer == PF_TRANSFER_APIC) {
-        r.run({g2p, stat_.g2p, np, {pos, vel, face_vel, {PF_SLOT_PARTICLE_AFFINE, &affine_}, status}});
+    const ParticlePrograms programs = particle_programs(desc_.params);
+    // In the P2G's tile order when this substep's P2G made one (same results, coherent reads).
+    const bool ordered = g2p_order_ != nullptr && programs.g2p_ordered != programs.g2p;
+    const gl::ProgramId g2p = ordered ? programs.g2p_ordered : programs.g2p;
+    const Bind last = desc_.params.transfer == PF_TRANSFER_APIC ? Bind{PF_SLOT_PARTICLE_AFFINE, &affine_}
+                                                                : Bind{PF_SLOT_FACE_VEL_OLD, &face_vel_old_};
+    if (ordered) {
+        r.run({g2p, stat_.g2p, np, {pos, vel, face_vel, last, status, {PF_SLOT_PARTICLE_ORDER, g2p_order_}}});
     } else {
-        r.run({g2p, stat_.g2p, np, {pos, vel, face_vel, {PF_SLOT_FACE_VEL_OLD, &face_vel_old_}, status}});
+        r.run({g2p, stat_.g2p, np, {pos, vel, face_vel, last, status}});
     }
 }
 
 void Simulation::run_advect() {
+    g2p_order_ = nullptr;  // the particles move: the P2G's grouping no longer holds
     PassRunner& r = *runner_;
     const uint32_t np = particle_count_;
     const gl::ProgramId advect = particle_programs(desc_.params).advect;
@@ -585,6 +600,11 @@ pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, con
     });
     pressure_.download(0, pressure.size() * 4, pressure.data());
     return PF_OK;
+}
+
+pf_result Simulation::set_ordered_g2p_face_bytes_for_test(uint64_t bytes) {
+    ordered_g2p_face_bytes_ = bytes;
+    return prepare_particle_passes(desc_.params, "set_ordered_g2p_face_bytes_for_test");
 }
 
 pf_result Simulation::run_g2p_and_advect_for_test(float dt) {

@@ -136,6 +136,9 @@ public:
     // The substep table's entries from G2P on (G2P, advection and the effects after it) on the
     // face velocities as they are: tests of the integrators set face_vel with write_grid_for_test.
     pf_result run_g2p_and_advect_for_test(float dt);
+    // Test access: the size of the face velocities G2P reads from which it walks the particles in
+    // the tiled P2G's order (default kOrderedG2pFaceBytes; 0: always, UINT64_MAX: never).
+    pf_result set_ordered_g2p_face_bytes_for_test(uint64_t bytes);
     // APIC affine vectors of the live particles, 12 floats each (c_x, c_y, c_z as vec4s);
     // empty while APIC was never used.
     std::vector<float> read_affine() const;
@@ -165,6 +168,7 @@ private:
     // ratio, advection); the P2G scheme must be prepared.
     struct ParticlePrograms {
         gl::ProgramId grid_forces, g2p, advect;
+        gl::ProgramId g2p_ordered;  // G2P in the P2G scheme's particle order, if it has one (else g2p)
     };
     ParticlePrograms particle_programs(const pf_sim_params& params) const;
     // Prepares the P2G scheme, builds those programs and, for APIC, allocates the affine buffer
@@ -292,6 +296,11 @@ private:
     // The next substep starts its solve from the hydrostatic estimate (particles were added to
     // cells whose pressure is 0: creation, pf_add_particles, pf_fill_box; docs/design.md §4.5a).
     bool hydrostatic_start_pending_ = true;
+    // The P2G scheme's particle order of this substep, for G2P (set by the p2g stage, cleared
+    // by advect, after which positions no longer match it), or null.
+    const gl::Buffer* g2p_order_ = nullptr;
+    static constexpr uint64_t kOrderedG2pFaceBytes = uint64_t(16) << 20;
+    uint64_t ordered_g2p_face_bytes_ = kOrderedG2pFaceBytes;
     bool cell_counts_current_ = false;  // cell_count() describes the particles (see its accessor)
     pf_p2g counted_with_ = PF_P2G_COUNT;  // the P2G scheme of the last substep (PF_P2G_COUNT: none, or
                                           // sinks were on, which compact the slots after it)

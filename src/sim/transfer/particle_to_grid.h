@@ -23,6 +23,10 @@ public:
     bool float_sums(const pf_sim_params& params) const { return schemes_[params.p2g]->float_sums(); }
     // That scheme's particle order (P2gScheme::particle_order), if it has one (prepared).
     const gl::Buffer* particle_order(const pf_sim_params& params) const { return schemes_[params.p2g]->particle_order(); }
+    // Whether that scheme is prepared and makes such an order.
+    bool has_particle_order(const pf_sim_params& params) const {
+        return schemes_[params.p2g] && schemes_[params.p2g]->particle_order();
+    }
 
     FixedPointRange& range() { return range_; }
     const FixedPointRange& range() const { return range_; }
