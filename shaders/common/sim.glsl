@@ -101,11 +101,14 @@ float mirror_sum(float t[8]) {
 // that adds energy. Positions inside [kWallEps, n - kWallEps] are returned unchanged.
 const float kWallEps = 1e-3;       // cells
 const float kWallReturn = 0.25;    // cells
+// Grid coordinates beyond the low / high wall of their axis: the walls a position crossed.
+bvec3 beyond_low_wall(vec3 g) { return lessThan(g, vec3(-kWallEps)); }
+bvec3 beyond_high_wall(vec3 g) { return greaterThan(g, vec3(sim.grid.xyz) + kWallEps); }
 vec3 keep_in_domain(vec3 x) {
     vec3 g = grid_coord(x);
     vec3 n = vec3(sim.grid.xyz);
-    bvec3 crossed = notEqual(clamp(g, vec3(-kWallEps), n + kWallEps), g);
-    vec3 kept = mix(g, clamp(g, vec3(kWallReturn), n - kWallReturn), crossed);
+    vec3 kept = mix(g, vec3(kWallReturn), beyond_low_wall(g));
+    kept = mix(kept, n - kWallReturn, beyond_high_wall(g));
     kept = clamp(kept, vec3(kWallEps), n - kWallEps);
     return mix(x, sim.origin.xyz + kept * sim.dx, notEqual(g, kept));
 }
@@ -116,6 +119,6 @@ vec3 keep_in_domain(vec3 x) {
 // gravity's speed for ever while the wall returns it to the same place.
 vec3 wall_stopped_velocity(vec3 x, vec3 v) {
     vec3 g = grid_coord(x);
-    v = mix(v, max(v, vec3(0.0)), lessThan(g, vec3(-kWallEps)));
-    return mix(v, min(v, vec3(0.0)), greaterThan(g, vec3(sim.grid.xyz) + kWallEps));
+    v = mix(v, max(v, vec3(0.0)), beyond_low_wall(g));
+    return mix(v, min(v, vec3(0.0)), beyond_high_wall(g));
 }
