@@ -238,6 +238,7 @@ class SimParams(_Struct):
     def quality(cls, quality):
         """pf_quality_params(quality): the preset's complete parameters."""
         out = cls()
+        out.struct_size = ctypes.sizeof(out)  # 0 would mean the first layout, without the newer fields
         code = _lib().pf_quality_params(int(quality), ctypes.byref(out))
         if code != Result.OK:
             from .errors import PflipError

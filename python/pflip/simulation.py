@@ -65,6 +65,15 @@ _ENUM_FIELDS = {
 }
 
 
+def _output(cls):
+    """A cls for a pf_get_* to fill, its struct_size this layout's: 0 would mean the first layout,
+    and the library would leave the newer fields out."""
+    out = cls()
+    if "struct_size" in dict(cls._fields_):
+        out.struct_size = ctypes.sizeof(out)
+    return out
+
+
 def _u32(value, function, what):
     """value as a uint32 for a C argument; out of range raises as the library would (ctypes would
     otherwise wrap it silently)."""
@@ -296,7 +305,7 @@ class Simulation:
     @property
     def params(self):
         """pf_get_params (a copy: change it and assign it back)."""
-        out = t.SimParams()
+        out = _output(t.SimParams)
         self._call("pf_get_params", ctypes.byref(out))
         return out
 
@@ -331,8 +340,7 @@ class Simulation:
 
     def stats(self):
         """pf_get_stats (no stall: GPU figures lag a few steps)."""
-        out = t.Stats()
-        out.struct_size = ctypes.sizeof(out)  # 0 would mean the first layout, without the newer fields
+        out = _output(t.Stats)
         self._call("pf_get_stats", ctypes.byref(out))
         return out
 
@@ -353,7 +361,7 @@ class Simulation:
 
     def gl_buffers(self):
         """pf_get_gl_buffers: the GL names of the particle buffers (vec4 per particle)."""
-        out = t.GlBuffers()
+        out = _output(t.GlBuffers)
         self._call("pf_get_gl_buffers", ctypes.byref(out))
         return out
 
@@ -503,7 +511,7 @@ class Simulation:
     @property
     def domain_motion(self):
         """pf_get_domain_motion: where the domain is held and how it moves (a DomainMotion)."""
-        out = t.DomainMotion()
+        out = _output(t.DomainMotion)
         self._call("pf_get_domain_motion", ctypes.byref(out))
         return out
 
@@ -518,7 +526,7 @@ class Simulation:
     @property
     def vorticity_confinement(self):
         """pf_get_vorticity_confinement: the vorticity confinement last set (a VorticityConfinement)."""
-        out = t.VorticityConfinement()
+        out = _output(t.VorticityConfinement)
         self._call("pf_get_vorticity_confinement", ctypes.byref(out))
         return out
 
@@ -534,7 +542,7 @@ class Simulation:
     @property
     def viscosity(self):
         """pf_get_viscosity: the viscosity last set (a Viscosity)."""
-        out = t.Viscosity()
+        out = _output(t.Viscosity)
         self._call("pf_get_viscosity", ctypes.byref(out))
         return out
 
@@ -553,7 +561,7 @@ class Simulation:
     @property
     def surface_tension(self):
         """pf_get_surface_tension: the surface tension last set (a SurfaceTension)."""
-        out = t.SurfaceTension()
+        out = _output(t.SurfaceTension)
         self._call("pf_get_surface_tension", ctypes.byref(out))
         return out
 
@@ -570,7 +578,7 @@ class Simulation:
     @property
     def whitewater(self):
         """pf_get_whitewater: the whitewater parameters last set (a Whitewater)."""
-        out = t.Whitewater()
+        out = _output(t.Whitewater)
         self._call("pf_get_whitewater", ctypes.byref(out))
         return out
 
@@ -588,7 +596,7 @@ class Simulation:
         """pf_get_whitewater_buffers: the GL names of the whitewater's particle buffers (a
         WhitewaterBuffers), for an engine that draws it itself. While Feature.WHITEWATER is off it
         raises PflipError(ERROR_INVALID_STATE)."""
-        out = t.WhitewaterBuffers()
+        out = _output(t.WhitewaterBuffers)
         self._call("pf_get_whitewater_buffers", ctypes.byref(out))
         return out
 
@@ -597,7 +605,7 @@ class Simulation:
         in N m about its position, and the step it belongs to; step 0 while none was read back). Never
         waits: it is a few steps late. An unknown id raises PflipError(ERROR_INVALID_ARGUMENT)."""
         oid = _u32(obstacle_id, "pf_get_obstacle_force", "id")
-        out = t.ObstacleForce()
+        out = _output(t.ObstacleForce)
         self._call("pf_get_obstacle_force", oid, ctypes.byref(out))
         return out
 

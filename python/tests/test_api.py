@@ -1,5 +1,7 @@
 """The Python surface of the C API: errors carry the code and the library's message and leave the
 simulation usable; parameters round-trip; push changes velocities locally; lifetime is explicit."""
+import ctypes
+
 import numpy as np
 import pytest
 
@@ -43,6 +45,21 @@ def test_invalid_params_change_nothing(sim):
         sim.params = p
     assert e.value.code == Result.ERROR_INVALID_ARGUMENT and "cfl" in e.value.message
     assert bytes(sim.params) == before
+
+
+def test_getters_return_every_field_of_this_layout(sim):
+    # A getter's struct carries this layout's struct_size: with 0 the library writes only the
+    # first layout (pf_sim_params up to 80 bytes), and assigning it back reset the newer fields to
+    # their defaults (free_surface here; before the fix, the getter returned 80 and MARKER_CELL
+    # was lost).
+    p = sim.params
+    assert p.struct_size == ctypes.sizeof(pflip.SimParams)
+    p.free_surface = pflip.FreeSurface.MARKER_CELL
+    sim.params = p
+    assert sim.params.free_surface == pflip.FreeSurface.MARKER_CELL
+    for getter in ("viscosity", "surface_tension", "whitewater", "vorticity_confinement", "domain_motion"):
+        value = getattr(sim, getter)
+        assert value.struct_size == ctypes.sizeof(value), getter
 
 
 def test_create_error_names_the_field(gl):
