@@ -1082,7 +1082,8 @@ PF_API pf_result pf_get_whitewater(const pf_sim* sim, pf_whitewater* out);
  *  step and only removes energy. The liquid sticks to the domain's walls and to obstacles unless
  *  free_slip is set; its free surface is stress-free (shear stress where a cell edge touches air is
  *  left out). The projection then runs again, so the velocities stay divergence-free (its cost is
- *  pass entry viscosity_projection). The solve has its own state: it never writes the pressure
+ *  pass entry viscosity_projection; coupling_rounds repeats the solve and the projection, nearer the
+ *  coupled step). The solve has its own state: it never writes the pressure
  *  solver's status (pf_stats.viscosity_iterations and viscosity_residual report it). Start from
  *  pf_default_viscosity(). */
 typedef struct pf_viscosity {
@@ -1097,13 +1098,19 @@ typedef struct pf_viscosity {
     float tolerance;              /**< relative residual at which the solve stops, 1e-8..0.5; default 1e-3 */
     uint32_t free_slip;           /**< 0 (default): the liquid sticks to the domain's walls and to obstacles (no
                                        slip); 1: it slides along them (no shear stress at a wall) */
+    uint32_t coupling_rounds;     /**< rounds of the viscous solve and the projection per substep, 1..16; default
+                                       1 (the solve, then the projection once). Each further round feeds the
+                                       projection's pressure back into the viscous solve (Uzawa's iteration),
+                                       nearer the coupled Stokes step: splitting the two loses accuracy once
+                                       nu dt / dx^2 is above 1 (docs/effects.md). Each round costs one more
+                                       solve and projection */
 } pf_viscosity;
 
 /** Writes the default viscosity for a caller whose pf_viscosity is struct_size bytes (see the ABI
  *  rules at the top): the first struct_size bytes only. PF_ERROR_INVALID_ARGUMENT for a NULL out or a
  *  struct_size below 4 or not a multiple of 4. Any thread. */
 PF_API pf_result pf_init_viscosity(pf_viscosity* out, uint32_t struct_size);
-/** Viscosity 1 Pa s, 60 iterations, tolerance 1e-3, no slip, struct_size set. */
+/** Viscosity 1 Pa s, 60 iterations, tolerance 1e-3, no slip, 1 coupling round, struct_size set. */
 static inline pf_viscosity pf_default_viscosity(void) {
     pf_viscosity v;
     pf_init_viscosity(&v, (uint32_t)sizeof v);
@@ -1111,8 +1118,8 @@ static inline pf_viscosity pf_default_viscosity(void) {
 }
 /** Sets the viscosity for the next pf_step. It may be set while PF_FEATURE_VISCOSITY is off (it acts
  *  once it is on). PF_ERROR_INVALID_ARGUMENT for NULL, a viscosity not finite, not above 0 or above
- *  1e5 Pa s, iterations outside 1..1000, a tolerance outside 1e-8..0.5, or free_slip other than 0 or
- *  1 (logged; nothing changes). */
+ *  1e5 Pa s, iterations outside 1..1000, a tolerance outside 1e-8..0.5, free_slip other than 0 or 1,
+ *  or coupling_rounds outside 1..16 (logged; nothing changes). */
 PF_API pf_result pf_set_viscosity(pf_sim* sim, const pf_viscosity* viscosity);
 /** The viscosity last set (pf_default_viscosity() if never). */
 PF_API pf_result pf_get_viscosity(const pf_sim* sim, pf_viscosity* out);

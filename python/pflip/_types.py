@@ -631,7 +631,8 @@ class Viscosity(_Struct):
     pressure projection (which then runs again). viscosity is the dynamic viscosity in Pa s (water 1e-3, honey 2..10), above 0
     and at most 1e5; iterations 1..1000 caps the conjugate-gradient iterations of a substep;
     tolerance 1e-8..0.5 is the relative residual that ends the solve; free_slip 1 lets the liquid
-    slide along walls and obstacles (0: it sticks). Start from Viscosity.default(): 1 Pa s, 60
+    slide along walls and obstacles (0: it sticks); coupling_rounds 1..16 repeats the viscous solve and
+    the projection, feeding the pressure back (more rounds: nearer the coupled Stokes step). Start from Viscosity.default(): 1 Pa s, 60
     iterations, tolerance 1e-3, no slip."""
 
     @classmethod
@@ -647,6 +648,7 @@ class Viscosity(_Struct):
         ("iterations", ctypes.c_uint32),
         ("tolerance", ctypes.c_float),
         ("free_slip", ctypes.c_uint32),
+        ("coupling_rounds", ctypes.c_uint32),
     ]
 
 

@@ -550,9 +550,9 @@ class Simulation:
         """pf_set_viscosity: settings (a Viscosity; default: as they are now) with the keyword fields
         set, e.g. set_viscosity(viscosity=5.0, iterations=100). Acts while Feature.VISCOSITY is on
         (it may be set while off). A viscosity that is not finite, not above 0 or above 1e5 Pa s,
-        iterations outside 1..1000, a tolerance outside 1e-8..0.5 or free_slip other than 0 or 1
-        raises PflipError(ERROR_INVALID_ARGUMENT) and changes nothing; a negative iterations or
-        free_slip, or one beyond uint32, raises the same (without reaching the library). A struct of
+        iterations outside 1..1000, a tolerance outside 1e-8..0.5, free_slip other than 0 or 1 or
+        coupling_rounds outside 1..16 raises PflipError(ERROR_INVALID_ARGUMENT) and changes nothing; a
+        negative iterations, free_slip or coupling_rounds, or one beyond uint32, raises the same (without reaching the library). A struct of
         another kind or a field Viscosity lacks raises TypeError."""
         v = _effect_struct(t.Viscosity, self.viscosity if settings is None else settings, fields,
                            "pf_set_viscosity")

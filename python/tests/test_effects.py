@@ -706,8 +706,8 @@ def test_jet_into_a_pool_makes_whitewater_and_render_ssf_draws_it(sims, gl):
 
 # ---- viscosity -------------------------------------------------------------------------------------
 
-VISCOSITY_DEFAULTS = dict(viscosity=1.0, iterations=60, tolerance=1e-3, free_slip=0)
-VISCOSITY_SETTINGS = dict(viscosity=50.0, iterations=200, tolerance=1e-5, free_slip=1)
+VISCOSITY_DEFAULTS = dict(viscosity=1.0, iterations=60, tolerance=1e-3, free_slip=0, coupling_rounds=1)
+VISCOSITY_SETTINGS = dict(viscosity=50.0, iterations=200, tolerance=1e-5, free_slip=1, coupling_rounds=4)
 
 
 def viscosity_fields(v):
@@ -717,12 +717,12 @@ def viscosity_fields(v):
 
 def test_viscosity_defaults_and_round_trips(sims):
     d = pflip.Viscosity.default()
-    assert d.struct_size == ctypes.sizeof(pflip.Viscosity) == 20
+    assert d.struct_size == ctypes.sizeof(pflip.Viscosity) == 24
     assert viscosity_fields(d) == as_f32(VISCOSITY_DEFAULTS)
     sim = sims(0)  # may be set while the feature is off
     got = sim.viscosity
     assert isinstance(got, pflip.Viscosity)
-    assert got.struct_size == 20 and viscosity_fields(got) == as_f32(VISCOSITY_DEFAULTS)
+    assert got.struct_size == 24 and viscosity_fields(got) == as_f32(VISCOSITY_DEFAULTS)
     # Turning the feature on does not change it.
     sim.features = Feature.VISCOSITY
     assert viscosity_fields(sim.viscosity) == as_f32(VISCOSITY_DEFAULTS)
@@ -731,7 +731,8 @@ def test_viscosity_defaults_and_round_trips(sims):
     assert viscosity_fields(sim.viscosity) == as_f32(VISCOSITY_SETTINGS)
     expected = dict(VISCOSITY_SETTINGS)
     for field, value in (("viscosity", 1e5), ("viscosity", 1e-3), ("viscosity", 1e-30), ("iterations", 1),
-                         ("iterations", 1000), ("tolerance", 0.5), ("tolerance", 1e-8), ("free_slip", 0)):
+                         ("iterations", 1000), ("tolerance", 0.5), ("tolerance", 1e-8), ("free_slip", 0),
+                         ("coupling_rounds", 16), ("coupling_rounds", 1)):
         sim.set_viscosity(**{field: value})
         expected[field] = value
         assert viscosity_fields(sim.viscosity) == as_f32(expected), (field, value)
@@ -767,6 +768,8 @@ BAD_VISCOSITY = {
     "tolerance below 1e-8": ("tolerance", dict(tolerance=1e-9)),
     "tolerance NaN": ("tolerance", dict(tolerance=NAN)),
     "free_slip 2": ("free_slip", dict(free_slip=2)),
+    "coupling_rounds 0": ("coupling_rounds", dict(coupling_rounds=0)),
+    "coupling_rounds 17": ("coupling_rounds", dict(coupling_rounds=17)),
 }
 
 
@@ -790,7 +793,7 @@ def test_bad_viscosity_raises_and_changes_nothing(sims, feature):
         assert e.value.code == Result.ERROR_INVALID_ARGUMENT, why
         assert viscosity_fields(sim.viscosity) == good, why
     # Unsigned fields outside uint32 raise too instead of wrapping (2^32 + 60 would wrap to a valid 60).
-    for field in ("iterations", "free_slip"):
+    for field in ("iterations", "free_slip", "coupling_rounds"):
         for value in (-1, 1 << 32, (1 << 32) + 60):
             with pytest.raises(PflipError) as e:
                 sim.set_viscosity(**{field: value})

@@ -155,9 +155,10 @@ def test_whitewater_layout(c_layout):
 
 
 def test_viscosity_layout(c_layout):
-    # pf_viscosity as pf.h declares it, and the solve's two figures appended to pf_stats last,
-    # after whitewater's.
-    assert c_layout[("size", "pf_viscosity")][0] == ctypes.sizeof(t.Viscosity) == 20
+    # pf_viscosity as pf.h declares it (coupling_rounds appended to its first 20 bytes), and the
+    # solve's two figures appended to pf_stats last, after whitewater's.
+    assert c_layout[("size", "pf_viscosity")][0] == ctypes.sizeof(t.Viscosity) == 24
+    check_appended(c_layout, t.Viscosity, "pf_viscosity", "free_slip", ["coupling_rounds"])
     names = [name for name, _ in t.Stats._fields_]
     assert names[-2:] == ["viscosity_iterations", "viscosity_residual"]
     check_appended(c_layout, t.Stats, "pf_stats", "render_whitewater_gpu_ms",

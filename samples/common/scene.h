@@ -44,7 +44,7 @@
 //   "whitewater": { "capacity": 262144, "trapped_air_rate": 40, "lifetime": [1, 3], ... }
 //                                                                   pf_whitewater (any of its fields), set once
 //   "viscosity": { "viscosity": 5.0, "iterations": 60, "tolerance": 1e-3,
-//                  "free_slip": false }                             pf_viscosity (Pa s), set once
+//                  "free_slip": false, "coupling_rounds": 1 }       pf_viscosity (Pa s), set once
 //   "surface_tension": { "tension": 12.5 }                         pf_surface_tension (N/m), set once
 // }
 // Effect objects start from pf_default_*() and take the keys given; the library validates them

@@ -217,7 +217,7 @@ pf_whitewater read_whitewater(const ObjectReader& r) {
 }
 
 pf_viscosity read_viscosity(const ObjectReader& r) {
-    r.p.check_keys(r.obj, r.path, {"viscosity", "iterations", "tolerance", "free_slip"});
+    r.p.check_keys(r.obj, r.path, {"viscosity", "iterations", "tolerance", "free_slip", "coupling_rounds"});
     pf_viscosity v = pf_default_viscosity();
     r.real("viscosity", v.viscosity);
     // Any uint32: the library checks the range (1..1000) when the scene is created.
@@ -227,6 +227,9 @@ pf_viscosity read_viscosity(const ObjectReader& r) {
         if (!j->is_boolean()) r.p.fail(r.at("free_slip"), "must be true or false, found " + Parser::describe(*j));
         v.free_slip = j->get<bool>() ? 1u : 0u;
     }
+    // Any uint32: the library checks the range (1..16).
+    if (const json* j = r.find("coupling_rounds"))
+        v.coupling_rounds = r.p.u32(*j, r.at("coupling_rounds"), 0, 0xffffffffu);
     return v;
 }
 

@@ -135,6 +135,10 @@
 #define PF_SLOT_VISC_STATE 7
 #define PF_SLOT_VISC_X 0
 #define PF_SLOT_VISC_SOLID_VEL 3
+/* and the coupling rounds' update (visc_couple_update.comp): the face velocities 0, the next
+ * round's input per face 2, the round's viscous velocities before its projection 3, cell types 6 */
+#define PF_SLOT_VISC_TARGET 2
+#define PF_SLOT_VISC_BEFORE 3
 /* the surface tension's liquid fraction per cell, raw and smoothed: the raw one written by
  * st_fraction.comp (which binds the face accumulators 4) and read by st_liquid.comp (cell types
  * 6), which writes the smoothed one, read by st_force.comp (face velocities 2, face fractions 5,

@@ -28,7 +28,8 @@ constexpr char kMagic[8] = {'p', 'f', 'l', 'i', 'p', 's', 'n', 'p'};
 // 5: the status words gained the viscosity's four (20 words); the effects' state its settings
 // and what its recent solves needed (2026-11-27).
 // 6: the effects' state holds the surface tension's settings (2026-11-27).
-constexpr uint32_t kFormat = 6;
+// 7: the viscosity settings gained coupling_rounds (2026-11-28).
+constexpr uint32_t kFormat = 7;
 
 struct Header {
     char magic[8];

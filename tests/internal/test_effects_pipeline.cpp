@@ -21,7 +21,8 @@ const gl::ProgramId kWhitewaterPrograms[] = {gl::ProgramId::ww_fraction, gl::Pro
                                              gl::ProgramId::ww_commit, gl::ProgramId::ww_copy};
 const gl::ProgramId kViscosityPrograms[] = {gl::ProgramId::visc_setup,       gl::ProgramId::visc_stress_start,
                                             gl::ProgramId::visc_stress,      gl::ProgramId::visc_apply_start,
-                                            gl::ProgramId::visc_apply,       gl::ProgramId::visc_update};
+                                            gl::ProgramId::visc_apply,       gl::ProgramId::visc_update,
+                                            gl::ProgramId::visc_couple_update};
 const gl::ProgramId kSurfaceTensionPrograms[] = {gl::ProgramId::st_fraction, gl::ProgramId::st_fraction_float,
                                                  gl::ProgramId::st_liquid, gl::ProgramId::st_force};
 const gl::ProgramId kSinkPrograms[] = {gl::ProgramId::sink_mark, gl::ProgramId::sink_lists, gl::ProgramId::sink_move,

@@ -251,12 +251,15 @@ TEST(SceneLoader, ViscositySceneCarriesItsViscosity) {
     EXPECT_EQ(s.viscosity.iterations, 60u);
     EXPECT_FLOAT_EQ(s.viscosity.tolerance, 1e-3f);
     EXPECT_EQ(s.viscosity.free_slip, 0u);
+    EXPECT_EQ(s.viscosity.coupling_rounds, 1u);
     const pfs::Scene b = pfs::parse_scene(
-        with(R"("features": ["viscosity"], "viscosity": {"iterations": 5000, "free_slip": true})"), "v.json");
+        with(R"("features": ["viscosity"], "viscosity": {"iterations": 5000, "free_slip": true, "coupling_rounds": 40})"),
+        "v.json");
     const pf_viscosity d = pf_default_viscosity();
     EXPECT_TRUE(b.has_viscosity);
     EXPECT_EQ(b.viscosity.iterations, 5000u);  // out of range: refused later, by pf_set_viscosity
     EXPECT_EQ(b.viscosity.free_slip, 1u);
+    EXPECT_EQ(b.viscosity.coupling_rounds, 40u);  // out of range: refused later, as iterations
     EXPECT_EQ(b.viscosity.viscosity, d.viscosity);
     EXPECT_EQ(b.viscosity.tolerance, d.tolerance);
     EXPECT_FALSE(pfs::parse_scene(kValid, "none.json").has_viscosity);

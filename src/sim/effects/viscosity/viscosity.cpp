@@ -26,7 +26,8 @@ ViscosityEffect::ViscosityEffect(const pf_sim_desc& desc)
 
 pf_result ViscosityEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
     for (gl::ProgramId id : {gl::ProgramId::visc_setup, gl::ProgramId::visc_stress_start, gl::ProgramId::visc_stress,
-                             gl::ProgramId::visc_apply_start, gl::ProgramId::visc_apply, gl::ProgramId::visc_update}) {
+                             gl::ProgramId::visc_apply_start, gl::ProgramId::visc_apply, gl::ProgramId::visc_update,
+                             gl::ProgramId::visc_couple_update}) {
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
@@ -48,10 +49,12 @@ pf_result ViscosityEffect::init(const gl::Api& gl, PassRunner& runner, const Log
     sigma_node_ = gl::Buffer(gl, size_t(nodes_ * 16), GL_DYNAMIC_COPY, "viscosity_edge_stress");
     partials_ = gl::Buffer(gl, size_t(groups * 16), GL_DYNAMIC_COPY, "viscosity_partials");
     state_ = gl::Buffer(gl, PF_VISC_WORDS * 4, GL_DYNAMIC_COPY, "viscosity_state");
+    round_input_ = gl::Buffer(gl, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_round_input");
+    round_before_ = gl::Buffer(gl, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_round_before");
     const uint32_t zeros[PF_STATUS_WORDS > PF_VISC_WORDS ? PF_STATUS_WORDS : PF_VISC_WORDS] = {};
     state_.upload(0, PF_VISC_WORDS * 4, zeros);
     report_.upload(0, PF_STATUS_WORDS * 4, zeros);
-    const uint64_t bytes = faces * 24 + cells_ * 20 + nodes_ * 16 + groups * 16;
+    const uint64_t bytes = faces * 32 + cells_ * 20 + nodes_ * 16 + groups * 16;
     if (pf_result r = gl::check_allocated(gl, log, std::string(fn) + ": allocating the viscosity solve (" +
                                                        std::to_string(bytes >> 20) + " MiB)");
         r != PF_OK)
@@ -86,21 +89,40 @@ void ViscosityEffect::run(EffectStage stage, PassRunner& runner, const EffectBuf
         }
         runner.copy(b.face_vel, solid_vel_, size_t(b.faces) * 4);
     } else if (stage == EffectStage::after_velocity_update) {
-        solve(runner, b);
-        first_substep_ = false;
-        // The viscous velocities are not divergence-free where the liquid meets walls, the free
-        // surface or a change of strain: project them again (docs/design.md 9.8).
-        if (b.projector) {
-            // From zero, not from the last substep's potential: the continuation of a snapshot
-            // (which does not hold it) stays bit-identical.
-            runner.fill(potential_, uint32_t(cells_), 0u, projection_stat_);
-            b.projector->project(runner, potential_, report_, projection_stat_, projection_recent_, projection_residual_);
+        // Coupling rounds need a projector; without one (never in a simulation) one round.
+        const uint32_t rounds = b.projector ? settings_.coupling_rounds : 1u;
+        if (rounds > 1) runner.copy(b.face_vel, round_input_, size_t(b.faces) * 4);
+        for (uint32_t round = 0; round < rounds; ++round) {
+            solve(runner, b);
+            first_substep_ = false;
+            const bool last = round + 1 == rounds;
+            if (last) {
+                project(runner, b);
+                break;
+            }
+            // Uzawa's round: what the projection does to this round's viscous velocities (its
+            // pressure, as a velocity change) is added to the input of the next round's solve.
+            runner.copy(b.face_vel, round_before_, size_t(b.faces) * 4);
+            project(runner, b);
+            runner.run({gl::ProgramId::visc_couple_update, stat_, b.faces,
+                        {{PF_SLOT_VISC_X, &b.face_vel}, {PF_SLOT_VISC_TARGET, &round_input_},
+                         {PF_SLOT_VISC_BEFORE, &round_before_}, {PF_SLOT_CELL_TYPE, &b.cell_type}}});
         }
     } else if (stage == EffectStage::after_substeps) {
         // The step's most iterations and largest final residual, read back with the status.
         runner.copy(state_, PF_VISC_MAX_ITERATIONS * 4, b.status, PF_STATUS_VISCOSITY_ITERATIONS * 4, 8);
         runner.copy(report_, PF_STATUS_SOLVER_RESIDUAL * 4, b.status, PF_STATUS_VISCOSITY_PROJECTION_RESIDUAL * 4, 8);
     }
+}
+
+// The viscous velocities are not divergence-free where the liquid meets walls, the free surface
+// or a change of strain: project them again (docs/design.md 9.8).
+void ViscosityEffect::project(PassRunner& runner, const EffectBuffers& b) {
+    if (!b.projector) return;
+    // From zero, not from the last substep's potential: the continuation of a snapshot (which
+    // does not hold it) stays bit-identical.
+    runner.fill(potential_, uint32_t(cells_), 0u, projection_stat_);
+    b.projector->project(runner, potential_, report_, projection_stat_, projection_recent_, projection_residual_);
 }
 
 void ViscosityEffect::solve(PassRunner& runner, const EffectBuffers& b) {

@@ -5,16 +5,19 @@
 // (shaders/effects/viscosity/): per-face weights (visc_setup.comp), the first residual
 // (visc_stress.comp and visc_apply.comp from u*), then per iteration stresses, their divergence
 // with p.Ap, and the update with r.z; the solve stops on the GPU at the tolerance. Then the
-// simulation's projection runs again (Projector). Pass list entries "viscosity" (grid_forces)
-// and "viscosity_projection" (pressure_solve); docs/design.md §9.8, docs/effects.md.
+// simulation's projection runs again (Projector); with coupling rounds, what the projection did
+// is fed back into another solve and projection (Uzawa's iteration on the coupled Stokes step).
+// Pass list entries "viscosity" (grid_forces) and "viscosity_projection" (pressure_solve);
+// docs/design.md §9.8, docs/effects.md.
 #pragma once
 #include "sim/effects/effect.h"
 
 namespace pf {
 
 // Viscosity finite, above 0 and at most kMaxViscosity (Pa s); iterations 1..1000;
-// tolerance 1e-8..0.5; free_slip 0 or 1. PF_OK or PF_ERROR_INVALID_ARGUMENT logged with `fn`
-// first. Also checks a snapshot's value on restore. (viscosity_api.cpp, with the entry points)
+// tolerance 1e-8..0.5; free_slip 0 or 1; coupling_rounds 1..kMaxCouplingRounds. PF_OK or
+// PF_ERROR_INVALID_ARGUMENT logged with `fn` first. Also checks a snapshot's value on restore.
+// (viscosity_api.cpp, with the entry points)
 pf_result validate_viscosity(const pf_viscosity& v, const Log& log, const char* fn);
 
 class ViscosityEffect final : public Effect {
@@ -22,6 +25,7 @@ public:
     explicit ViscosityEffect(const pf_sim_desc& desc);
     static constexpr uint32_t kFeature = PF_FEATURE_VISCOSITY;
     static constexpr float kMaxViscosity = 1e5f;  // Pa s
+    static constexpr uint32_t kMaxCouplingRounds = 16;
     uint32_t feature() const override { return kFeature; }
     const char* name() const override { return "viscosity"; }
     uint32_t stages() const override {
@@ -58,6 +62,7 @@ public:
 
 private:
     void solve(PassRunner& runner, const EffectBuffers& b);
+    void project(PassRunner& runner, const EffectBuffers& b);
 
     float density_ = 1000.0f;  // kg/m^3
     uint64_t cells_ = 0, nodes_ = 0;
@@ -76,6 +81,9 @@ private:
     gl::Buffer solid_vel_;
     // The second projection's potential (per cell) and its solver's status words.
     gl::Buffer potential_, report_;
+    // Coupling rounds: the next round's input and a round's viscous velocities before its
+    // projection (per face).
+    gl::Buffer round_input_, round_before_;
     StatId stat_ = 0, projection_stat_ = 0;
 };
 

@@ -16,6 +16,7 @@ pf_viscosity full_default_viscosity() {
     v.iterations = 60;
     v.tolerance = 1e-3f;
     v.free_slip = 0;
+    v.coupling_rounds = 1;
     return v;
 }
 
@@ -37,6 +38,9 @@ pf_result validate_viscosity(const pf_viscosity& v, const Log& log, const char* 
     if (v.free_slip > 1)
         return log.error(PF_ERROR_INVALID_ARGUMENT,
                          f + "free_slip = " + std::to_string(v.free_slip) + " must be 0 or 1");
+    if (v.coupling_rounds < 1 || v.coupling_rounds > ViscosityEffect::kMaxCouplingRounds)
+        return log.error(PF_ERROR_INVALID_ARGUMENT, f + "coupling_rounds = " + std::to_string(v.coupling_rounds) +
+                                                        " must be within 1..16");
     return PF_OK;
 }
 
