@@ -205,6 +205,15 @@ GetProcAddressFn = ctypes.CFUNCTYPE(ctypes.c_void_p, ctypes.c_char_p)
 class _Struct(ctypes.Structure):
     """repr() lists the fields, so a descriptor or stats prints readably."""
 
+    @classmethod
+    def output(cls):
+        """An instance for a pf_get_* (or pf_quality_params) to fill, its struct_size this layout's:
+        0 would mean the first layout, and the library would leave the newer fields out."""
+        out = cls()
+        if "struct_size" in dict(cls._fields_):
+            out.struct_size = ctypes.sizeof(out)
+        return out
+
     def __repr__(self):
         parts = []
         for name, *_ in self._fields_:
@@ -237,8 +246,7 @@ class SimParams(_Struct):
     @classmethod
     def quality(cls, quality):
         """pf_quality_params(quality): the preset's complete parameters."""
-        out = cls()
-        out.struct_size = ctypes.sizeof(out)  # 0 would mean the first layout, without the newer fields
+        out = cls.output()
         code = _lib().pf_quality_params(int(quality), ctypes.byref(out))
         if code != Result.OK:
             from .errors import PflipError
@@ -631,9 +639,9 @@ class Viscosity(_Struct):
     pressure projection (which then runs again). viscosity is the dynamic viscosity in Pa s (water 1e-3, honey 2..10), above 0
     and at most 1e5; iterations 1..1000 caps the conjugate-gradient iterations of a substep;
     tolerance 1e-8..0.5 is the relative residual that ends the solve; free_slip 1 lets the liquid
-    slide along walls and obstacles (0: it sticks); coupling_rounds 1..16 repeats the viscous solve and
-    the projection, feeding the pressure back (more rounds: nearer the coupled Stokes step). Start from Viscosity.default(): 1 Pa s, 60
-    iterations, tolerance 1e-3, no slip."""
+    slide along walls and obstacles (0: it sticks); coupling_rounds 1..16 repeats the viscous solve
+    and the projection, feeding the pressure back (more rounds: nearer the coupled Stokes step).
+    Start from Viscosity.default(): 1 Pa s, 60 iterations, tolerance 1e-3, no slip, 1 round."""
 
     @classmethod
     def default(cls):

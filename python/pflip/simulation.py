@@ -65,15 +65,6 @@ _ENUM_FIELDS = {
 }
 
 
-def _output(cls):
-    """A cls for a pf_get_* to fill, its struct_size this layout's: 0 would mean the first layout,
-    and the library would leave the newer fields out."""
-    out = cls()
-    if "struct_size" in dict(cls._fields_):
-        out.struct_size = ctypes.sizeof(out)
-    return out
-
-
 def _u32(value, function, what):
     """value as a uint32 for a C argument; out of range raises as the library would (ctypes would
     otherwise wrap it silently)."""
@@ -305,7 +296,7 @@ class Simulation:
     @property
     def params(self):
         """pf_get_params (a copy: change it and assign it back)."""
-        out = _output(t.SimParams)
+        out = t.SimParams.output()
         self._call("pf_get_params", ctypes.byref(out))
         return out
 
@@ -340,7 +331,7 @@ class Simulation:
 
     def stats(self):
         """pf_get_stats (no stall: GPU figures lag a few steps)."""
-        out = _output(t.Stats)
+        out = t.Stats.output()
         self._call("pf_get_stats", ctypes.byref(out))
         return out
 
@@ -361,7 +352,7 @@ class Simulation:
 
     def gl_buffers(self):
         """pf_get_gl_buffers: the GL names of the particle buffers (vec4 per particle)."""
-        out = _output(t.GlBuffers)
+        out = t.GlBuffers.output()
         self._call("pf_get_gl_buffers", ctypes.byref(out))
         return out
 
@@ -511,7 +502,7 @@ class Simulation:
     @property
     def domain_motion(self):
         """pf_get_domain_motion: where the domain is held and how it moves (a DomainMotion)."""
-        out = _output(t.DomainMotion)
+        out = t.DomainMotion.output()
         self._call("pf_get_domain_motion", ctypes.byref(out))
         return out
 
@@ -526,7 +517,7 @@ class Simulation:
     @property
     def vorticity_confinement(self):
         """pf_get_vorticity_confinement: the vorticity confinement last set (a VorticityConfinement)."""
-        out = _output(t.VorticityConfinement)
+        out = t.VorticityConfinement.output()
         self._call("pf_get_vorticity_confinement", ctypes.byref(out))
         return out
 
@@ -542,7 +533,7 @@ class Simulation:
     @property
     def viscosity(self):
         """pf_get_viscosity: the viscosity last set (a Viscosity)."""
-        out = _output(t.Viscosity)
+        out = t.Viscosity.output()
         self._call("pf_get_viscosity", ctypes.byref(out))
         return out
 
@@ -551,9 +542,10 @@ class Simulation:
         set, e.g. set_viscosity(viscosity=5.0, iterations=100). Acts while Feature.VISCOSITY is on
         (it may be set while off). A viscosity that is not finite, not above 0 or above 1e5 Pa s,
         iterations outside 1..1000, a tolerance outside 1e-8..0.5, free_slip other than 0 or 1 or
-        coupling_rounds outside 1..16 raises PflipError(ERROR_INVALID_ARGUMENT) and changes nothing; a
-        negative iterations, free_slip or coupling_rounds, or one beyond uint32, raises the same (without reaching the library). A struct of
-        another kind or a field Viscosity lacks raises TypeError."""
+        coupling_rounds outside 1..16 raises PflipError(ERROR_INVALID_ARGUMENT) and changes nothing;
+        a negative iterations, free_slip or coupling_rounds, or one beyond uint32, raises the same
+        (without reaching the library). A struct of another kind or a field Viscosity lacks raises
+        TypeError."""
         v = _effect_struct(t.Viscosity, self.viscosity if settings is None else settings, fields,
                            "pf_set_viscosity")
         self._call("pf_set_viscosity", ctypes.byref(v))
@@ -561,7 +553,7 @@ class Simulation:
     @property
     def surface_tension(self):
         """pf_get_surface_tension: the surface tension last set (a SurfaceTension)."""
-        out = _output(t.SurfaceTension)
+        out = t.SurfaceTension.output()
         self._call("pf_get_surface_tension", ctypes.byref(out))
         return out
 
@@ -578,7 +570,7 @@ class Simulation:
     @property
     def whitewater(self):
         """pf_get_whitewater: the whitewater parameters last set (a Whitewater)."""
-        out = _output(t.Whitewater)
+        out = t.Whitewater.output()
         self._call("pf_get_whitewater", ctypes.byref(out))
         return out
 
@@ -596,7 +588,7 @@ class Simulation:
         """pf_get_whitewater_buffers: the GL names of the whitewater's particle buffers (a
         WhitewaterBuffers), for an engine that draws it itself. While Feature.WHITEWATER is off it
         raises PflipError(ERROR_INVALID_STATE)."""
-        out = _output(t.WhitewaterBuffers)
+        out = t.WhitewaterBuffers.output()
         self._call("pf_get_whitewater_buffers", ctypes.byref(out))
         return out
 
@@ -605,7 +597,7 @@ class Simulation:
         in N m about its position, and the step it belongs to; step 0 while none was read back). Never
         waits: it is a few steps late. An unknown id raises PflipError(ERROR_INVALID_ARGUMENT)."""
         oid = _u32(obstacle_id, "pf_get_obstacle_force", "id")
-        out = _output(t.ObstacleForce)
+        out = t.ObstacleForce.output()
         self._call("pf_get_obstacle_force", oid, ctypes.byref(out))
         return out
 
