@@ -33,6 +33,9 @@ def main():
     ap.add_argument("--tolerance", type=float, default=1e-3, help="viscosity CG relative residual")
     ap.add_argument("--rounds", type=int, default=1, help="pf_viscosity.coupling_rounds")
     ap.add_argument("--quality", default="balanced", help="fast, balanced or accurate")
+    ap.add_argument("--transfer", choices=("preset", "pic_flip", "apic"), default="preset",
+                    help="grid-particle transfer over the preset's")
+    ap.add_argument("--flip-ratio", type=float, help="FLIP share of PIC/FLIP over the preset's (0 = PIC)")
     ap.add_argument("--max-substeps", type=int, default=16)
     ap.add_argument("--seconds", type=float, default=4.0)
     ap.add_argument("--sample-dt", type=float, default=1.0 / 120.0, help="frame step between samples, s")
@@ -48,7 +51,8 @@ def main():
     a0, U0, H = args.radius, args.speed, args.height
     nu = args.viscosity / 1000.0
     print(f"rope a0 {a0 * 1e3:.2f} mm ({a0 / dx:.1f} cells) U0 {U0} m/s from H {H * 1e3:.0f} mm "
-          f"(H/d {H / (2 * a0):.1f}); nu {nu:g} m2/s, {args.rounds} coupling rounds, Re {U0 * 2 * a0 / nu:.3g}, "
+          f"(H/d {H / (2 * a0):.1f}); nu {nu:g} m2/s, {args.rounds} coupling rounds, {args.quality} preset, transfer "
+          f"{args.transfer}, flip ratio {'preset' if args.flip_ratio is None else args.flip_ratio}, Re {U0 * 2 * a0 / nu:.3g}, "
           f"H (g/nu^2)^(1/3) {H * (9.81 / nu ** 2) ** (1 / 3):.3g}, grid {grid.tolist()} of {dx * 1e3:g} mm", flush=True)
 
     ppc = 8.0  # particles a cell a full cell holds (the emitter's spacing)
@@ -90,11 +94,16 @@ def simulated_frames(args, axis):
     """(t, positions, velocities, stats) after each step of the pour, run here."""
     pflip.frame.create_context()
     grid = tuple(int(g) for g in args.cells)
-    sim = pflip.Simulation(grid_size=grid, cell_size=args.dx, max_particles=1 << 22,
+    poured = 8.0 * np.pi * args.radius ** 2 * args.speed * args.seconds / args.dx ** 3  # 8 particles a cell
+    sim = pflip.Simulation(grid_size=grid, cell_size=args.dx, max_particles=int(1.25 * poured) + 4096,
                            features=int(pflip.Feature.EMITTERS | pflip.Feature.VISCOSITY))
     sim.set_quality(pflip.Quality[args.quality.upper()])
     params = sim.params
     params.max_substeps = args.max_substeps
+    if args.transfer != "preset":
+        params.transfer = pflip.Transfer[args.transfer.upper()]
+    if args.flip_ratio is not None:
+        params.flip_ratio = args.flip_ratio
     sim.params = params
     sim.set_viscosity(viscosity=args.viscosity, iterations=args.iterations, tolerance=args.tolerance,
                       coupling_rounds=args.rounds)

@@ -1095,7 +1095,8 @@ typedef struct pf_viscosity {
     uint32_t iterations;          /**< most conjugate-gradient iterations per substep, 1..1000; default 60
                                        (each is three passes; a solve stops on the GPU once it meets the
                                        tolerance, and steps issue what recent solves needed plus a margin) */
-    float tolerance;              /**< relative residual at which the solve stops, 1e-8..0.5; default 1e-3 */
+    float tolerance;              /**< relative residual at which the solve stops, 1e-8..0.5; default 1e-3
+                                       (a poured rope coils steadily only near 1e-6: docs/effects.md) */
     uint32_t free_slip;           /**< 0 (default): the liquid sticks to the domain's walls and to obstacles (no
                                        slip); 1: it slides along them (no shear stress at a wall) */
     uint32_t coupling_rounds;     /**< rounds of the viscous solve and the projection per substep, 1..16; default
