@@ -1120,7 +1120,9 @@ static inline pf_viscosity pf_default_viscosity(void) {
 /** Sets the viscosity for the next pf_step. It may be set while PF_FEATURE_VISCOSITY is off (it acts
  *  once it is on). PF_ERROR_INVALID_ARGUMENT for NULL, a viscosity not finite, not above 0 or above
  *  1e5 Pa s, iterations outside 1..1000, a tolerance outside 1e-8..0.5, free_slip other than 0 or 1,
- *  or coupling_rounds outside 1..16 (logged; nothing changes). */
+ *  or coupling_rounds outside 1..16 (logged; nothing changes). More than one coupling round makes
+ *  8 bytes of GPU memory per face on first use: PF_ERROR_OUT_OF_MEMORY or PF_ERROR_GL if that fails
+ *  (logged; nothing changes). */
 PF_API pf_result pf_set_viscosity(pf_sim* sim, const pf_viscosity* viscosity);
 /** The viscosity last set (pf_default_viscosity() if never). */
 PF_API pf_result pf_get_viscosity(const pf_sim* sim, pf_viscosity* out);

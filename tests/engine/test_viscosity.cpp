@@ -171,6 +171,35 @@ TEST_F(Viscosity, ShallowCavityWithCouplingRoundsLosesTheSplittingError) {
     for (int j = 0; j < 4; ++j) EXPECT_NEAR(deviation[size_t(j)], 0.0, 0.03) << "layer " << j;
 }
 
+// The coupling rounds' two face buffers (8 bytes a face) are made only once more than one round
+// is asked for: viscosity on at one round holds none; four rounds add them to gpu_memory_bytes;
+// back at one round they are kept, and a step at four rounds runs with them.
+TEST_F(Viscosity, CouplingRoundBuffersAreMadeOnFirstUse) {
+    pf_sim_desc d = test_desc(16, 8, 8, 0.05f);
+    d.features = PF_FEATURE_VISCOSITY;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    const uint64_t faces = 3ull * (16 + 1) * (8 + 1) * (8 + 1);  // the effect's bound on faces
+    const auto memory = [&] { return settled_stats(sim.get()).gpu_memory_bytes; };
+    const auto rounds = [&](uint32_t n) {
+        pf_viscosity v = get(sim.get());
+        v.coupling_rounds = n;
+        return pf_set_viscosity(sim.get(), &v);
+    };
+    const uint64_t one = memory();
+    ASSERT_EQ(rounds(4), PF_OK);
+    const uint64_t four = memory();
+    EXPECT_EQ(four - one, faces * 8);
+    ASSERT_EQ(rounds(1), PF_OK);
+    EXPECT_EQ(memory(), four);
+    ASSERT_EQ(rounds(4), PF_OK);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.3f, 0.3f, 0.4f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+    EXPECT_EQ(settled_stats(sim.get()).flags & PF_FLAG_NONFINITE, 0u);
+    EXPECT_EQ(memory(), four);
+}
+
 // A dam break's mechanical energy (kinetic plus potential, from the step metrics): viscosity only
 // removes energy, so with honey it never rises above its start or above a water dam break's at
 // the same time, and the energy-gain flag stays down; the same with four coupling rounds, whose

@@ -49,18 +49,40 @@ pf_result ViscosityEffect::init(const gl::Api& gl, PassRunner& runner, const Log
     sigma_node_ = gl::Buffer(gl, size_t(nodes_ * 16), GL_DYNAMIC_COPY, "viscosity_edge_stress");
     partials_ = gl::Buffer(gl, size_t(groups * 16), GL_DYNAMIC_COPY, "viscosity_partials");
     state_ = gl::Buffer(gl, PF_VISC_WORDS * 4, GL_DYNAMIC_COPY, "viscosity_state");
-    round_input_ = gl::Buffer(gl, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_round_input");
-    round_before_ = gl::Buffer(gl, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_round_before");
     const uint32_t zeros[PF_STATUS_WORDS > PF_VISC_WORDS ? PF_STATUS_WORDS : PF_VISC_WORDS] = {};
     state_.upload(0, PF_VISC_WORDS * 4, zeros);
     report_.upload(0, PF_STATUS_WORDS * 4, zeros);
-    const uint64_t bytes = faces * 32 + cells_ * 20 + nodes_ * 16 + groups * 16;
+    const uint64_t bytes = faces * 24 + cells_ * 20 + nodes_ * 16 + groups * 16;
     if (pf_result r = gl::check_allocated(gl, log, std::string(fn) + ": allocating the viscosity solve (" +
                                                        std::to_string(bytes >> 20) + " MiB)");
         r != PF_OK)
         return r;
+    gl_ = &gl;
+    if (pf_result r = make_round_buffers(settings_.coupling_rounds, log, fn); r != PF_OK) return r;
     stat_ = runner.add_stat("viscosity", PF_PASS_GRID_FORCES);
     projection_stat_ = runner.add_stat("viscosity_projection", PF_PASS_PRESSURE_SOLVE);
+    return PF_OK;
+}
+
+pf_result ViscosityEffect::set(const pf_viscosity& v, const Log& log, const char* fn) {
+    if (pf_result r = make_round_buffers(v.coupling_rounds, log, fn); r != PF_OK) return r;
+    settings_ = v;
+    recent_ = kUnknownIterations;
+    known_after_ = step_;
+    return PF_OK;
+}
+
+pf_result ViscosityEffect::make_round_buffers(uint32_t rounds, const Log& log, const char* fn) {
+    if (rounds <= 1 || !gl_ || round_input_.bytes() != 0) return PF_OK;
+    const uint64_t faces = 3 * nodes_;  // as init
+    gl::Buffer input(*gl_, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_round_input");
+    gl::Buffer before(*gl_, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_round_before");
+    if (pf_result r = gl::check_allocated(*gl_, log, std::string(fn) + ": allocating the viscosity's coupling rounds (" +
+                                                         std::to_string((faces * 8) >> 20) + " MiB)");
+        r != PF_OK)
+        return r;
+    round_input_ = std::move(input);
+    round_before_ = std::move(before);
     return PF_OK;
 }
 
@@ -175,6 +197,7 @@ pf_result ViscosityEffect::restore_state(ByteReader& in, const Log& log, const c
     const Log silent;
     if (validate_viscosity(v, silent, fn) != PF_OK || converged > 1 || !std::isfinite(projection_residual))
         return log.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": the viscosity in the snapshot is invalid");
+    if (pf_result r = make_round_buffers(v.coupling_rounds, log, fn); r != PF_OK) return r;
     settings_ = v;
     recent_ = recent;
     recent_converged_ = converged != 0;

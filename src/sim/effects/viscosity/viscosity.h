@@ -48,11 +48,9 @@ public:
     pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;
 
     // pf_set_viscosity (validated): what earlier solves needed no longer says anything.
-    void set(const pf_viscosity& v) {
-        settings_ = v;
-        recent_ = kUnknownIterations;
-        known_after_ = step_;
-    }
+    // New settings (validated); makes the coupling rounds' buffers when more than one round is
+    // asked for the first time. On an error (logged with `fn` first) nothing changes.
+    pf_result set(const pf_viscosity& v, const Log& log, const char* fn);
     // Iterations to issue per solve: the pressure solvers' rule (issued_iterations in
     // src/sim/solvers/pressure_solver.h) on what recent solves needed, within
     // settings().iterations: every issued iteration costs three dispatches even once the GPU has
@@ -62,10 +60,14 @@ public:
 
 private:
     void solve(PassRunner& runner, const EffectBuffers& b);
+    // Makes round_input_ and round_before_ if `rounds` needs them and the effect is initialised
+    // (init makes them otherwise); PF_OK or the allocation's error.
+    pf_result make_round_buffers(uint32_t rounds, const Log& log, const char* fn);
     void project(PassRunner& runner, const EffectBuffers& b);
 
     float density_ = 1000.0f;  // kg/m^3
     uint64_t cells_ = 0, nodes_ = 0;
+    const gl::Api* gl_ = nullptr;  // set by init
     bool first_substep_ = true;
     uint32_t recent_ = kUnknownIterations;    // most iterations of a substep's solve in the newest readback
     bool recent_converged_ = false;  // and whether all its solves met the tolerance
@@ -82,7 +84,7 @@ private:
     // The second projection's potential (per cell) and its solver's status words.
     gl::Buffer potential_, report_;
     // Coupling rounds: the next round's input and a round's viscous velocities before its
-    // projection (per face).
+    // projection (per face); made when more than one round is first asked for.
     gl::Buffer round_input_, round_before_;
     StatId stat_ = 0, projection_stat_ = 0;
 };

@@ -62,8 +62,7 @@ pf_result pf_init_viscosity(pf_viscosity* out, uint32_t struct_size) {
 pf_result pf_set_viscosity(pf_sim* handle, const pf_viscosity* viscosity) {
     return pf::effect_object_call(handle, viscosity, "pf_set_viscosity", "viscosity", full_default_viscosity(),
                                   validate_of, [](pf::Simulation& s, const pf_viscosity& in) {
-                                      s.effect<pf::ViscosityEffect>().set(in);
-                                      return PF_OK;
+                                      return s.effect<pf::ViscosityEffect>().set(in, s.log(), "pf_set_viscosity");
                                   });
 }
 
