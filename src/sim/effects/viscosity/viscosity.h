@@ -47,9 +47,9 @@ public:
     void save_state(ByteWriter& out) const override;
     pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;
 
-    // pf_set_viscosity (validated): what earlier solves needed no longer says anything.
-    // New settings (validated); makes the coupling rounds' buffers when more than one round is
-    // asked for the first time. On an error (logged with `fn` first) nothing changes.
+    // pf_set_viscosity (validated): what earlier solves needed no longer says anything; makes the
+    // coupling rounds' buffers when more than one round is first asked for. On an error (logged
+    // with `fn` first) nothing changes.
     pf_result set(const pf_viscosity& v, const Log& log, const char* fn);
     // Iterations to issue per solve: the pressure solvers' rule (issued_iterations in
     // src/sim/solvers/pressure_solver.h) on what recent solves needed, within
