@@ -31,8 +31,7 @@ pf_result ViscosityEffect::init(const gl::Api& gl, PassRunner& runner, const Log
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
-    // Faces: at most 3 per cell plus one layer per axis, bounded by the nodes' count times 3.
-    const uint64_t faces = 3 * nodes_;
+    const uint64_t faces = face_bound();
     if (pf_result r = gl::check_storage_block(gl, log, faces * 8, std::string(fn) + ": viscosity needs",
                                               "(8 per face)", "use a smaller grid");
         r != PF_OK)
@@ -74,7 +73,7 @@ pf_result ViscosityEffect::set(const pf_viscosity& v, const Log& log, const char
 
 pf_result ViscosityEffect::make_round_buffers(uint32_t rounds, const Log& log, const char* fn) {
     if (rounds <= 1 || !gl_ || round_input_.bytes() != 0) return PF_OK;
-    const uint64_t faces = 3 * nodes_;  // as init
+    const uint64_t faces = face_bound();
     gl::Buffer input(*gl_, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_round_input");
     gl::Buffer before(*gl_, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_round_before");
     if (pf_result r = gl::check_allocated(*gl_, log, std::string(fn) + ": allocating the viscosity's coupling rounds (" +

@@ -63,6 +63,9 @@ private:
     // Makes round_input_ and round_before_ if `rounds` needs them and the effect is initialised
     // (init makes them otherwise); PF_OK or the allocation's error.
     pf_result make_round_buffers(uint32_t rounds, const Log& log, const char* fn);
+    // Faces its per-face buffers hold: at most 3 per cell plus one layer per axis, bounded by the
+    // nodes' count times 3.
+    uint64_t face_bound() const { return 3 * nodes_; }
     void project(PassRunner& runner, const EffectBuffers& b);
 
     float density_ = 1000.0f;  // kg/m^3

@@ -40,7 +40,7 @@ pf_result validate_viscosity(const pf_viscosity& v, const Log& log, const char* 
                          f + "free_slip = " + std::to_string(v.free_slip) + " must be 0 or 1");
     if (v.coupling_rounds < 1 || v.coupling_rounds > ViscosityEffect::kMaxCouplingRounds)
         return log.error(PF_ERROR_INVALID_ARGUMENT, f + "coupling_rounds = " + std::to_string(v.coupling_rounds) +
-                                                        " must be within 1..16");
+                                                        " must be within 1.." + std::to_string(ViscosityEffect::kMaxCouplingRounds));
     return PF_OK;
 }
 
