@@ -6,7 +6,7 @@ a cell, the balanced preset, through the Python client.
 
 usage: PFLIP_LIBRARY=build/libpflip.so PYTHONPATH=python scripts/crowded_cells.py
            [--cells-per-metre 64] [--frames 97] [--from-frame 66] [--every 3] [--column X Y Z]
-           [--max-substeps 16]
+           [--max-substeps 16] [--cfl 1] [--advection euler|rk2|rk3]
 (dam_break_10m: --cells-per-metre 128 --column 0.78125 0.78125 1)
 """
 import argparse
@@ -24,6 +24,8 @@ def main():
     ap.add_argument("--every", type=int, default=3, help="report every this many frames")
     ap.add_argument("--column", type=float, nargs=3, default=(0.75, 0.75, 1.0), help="the column's size in metres")
     ap.add_argument("--max-substeps", type=int, default=16)
+    ap.add_argument("--cfl", type=float, default=0.0, help="projection CFL (0: the preset's)")
+    ap.add_argument("--advection", choices=["euler", "rk2", "rk3"], default=None)
     args = ap.parse_args()
     n = args.cells_per_metre
     dx = 1.0 / n
@@ -33,6 +35,10 @@ def main():
     sim.set_quality(pflip.Quality.BALANCED)
     params = sim.params
     params.max_substeps = args.max_substeps
+    if args.cfl > 0:
+        params.cfl = args.cfl
+    if args.advection:
+        params.advection = pflip.Advection[args.advection.upper()]
     sim.params = params
     sim.fill_box((0.0, 0.0, 0.0), tuple(args.column))
     np.set_printoptions(precision=4, suppress=True, linewidth=200)

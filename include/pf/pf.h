@@ -197,9 +197,12 @@ typedef struct pf_sim_params {
                                        a CG step), 1..10000; default 40 (0 is invalid once struct_size is
                                        set) */
     float jacobi_omega;           /**< Jacobi relaxation weight in (0, 1]; 0 = default 1 (the original) */
-    float cfl;                    /**< max cells a particle may cross per substep, (0, 16]; 0 = default 1 */
+    float cfl;                    /**< projection CFL: max cells a particle may cross per substep (one pressure
+                                       projection each), (0, 16]; 0 = default 1. Within a substep particles
+                                       are traced in sub-steps of at most one cell (RK2/RK3) */
     uint32_t max_substeps;        /**< upper bound on CFL substeps per pf_step, 1..64; 0 = default 16 */
-    uint32_t extrapolation_layers;/**< face layers velocity is extended into air, 1..16; 0 = default 2 */
+    uint32_t extrapolation_layers;/**< face layers velocity is extended into air beyond the first cell of a
+                                       particle's travel (ceil(cfl) - 1 more are added), 1..16; 0 = default 2 */
     uint32_t separation;          /**< 1: pressure is kept >= 0 (Gerszewski & Bargteil 2013), so liquid can
                                        pull away from walls and the lid instead of clinging to them by
                                        suction; 0: pressure of either sign (the original). 0 or 1; default 0

@@ -41,7 +41,6 @@ struct Options {
     pfs::ParamOverrides overrides;      // --preset, --solver, --tolerance, --transfer, --advection, --p2g, ...
     int separation = -1;        // -1: the scene's
     uint32_t max_substeps = 0; // 0: the scene's
-    float cfl = 0;             // 0: the scene's (or the preset's)
     float frame_dt = 0;        // 0: the scene's
     int64_t features = -1;     // -1: the scene's PF_FEATURE_* bits
     pf_gpu_timing gpu_timing = PF_GPU_TIMING_PASSES;  // --gpu-timing
@@ -85,8 +84,6 @@ void add_options(CLI::App& app, Options& o) {
     app.add_option("--separation", o.separation, "override the scenes' separation")->check(pfs::Range(0, 1));
     app.add_option("--max-substeps", o.max_substeps, "override the scenes' max_substeps (1 = one substep per step)")
         ->check(pfs::Range(1u, 64u));
-    app.add_option("--cfl", o.cfl, "override params.cfl (cells a particle may move per substep)")
-        ->check(pfs::Range(0.05f, 10.0f));
     app.add_option("--frame-dt", o.frame_dt, "override the scenes' frame_dt (seconds per pf_step)")
         ->check(pfs::Range(1e-6f, 1.0f));
     app.add_option("--features", o.features,
@@ -172,7 +169,6 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     opt.overrides.apply(desc.params);
     if (opt.separation >= 0) desc.params.separation = uint32_t(opt.separation);
     if (opt.max_substeps) desc.params.max_substeps = opt.max_substeps;
-    if (opt.cfl > 0) desc.params.cfl = opt.cfl;
     if (opt.features >= 0) desc.features = uint32_t(opt.features);
     r.params = desc.params;
     r.max_particles = desc.max_particles;

@@ -75,6 +75,7 @@ void ParamOverrides::apply(pf_sim_params& p) const {
     if (has_advection) p.advection = advection;
     if (has_p2g) p.p2g = p2g;
     if (has_free_surface) p.free_surface = free_surface;
+    if (has_cfl) p.cfl = cfl;
 }
 
 namespace {
@@ -126,6 +127,10 @@ void add_param_overrides(CLI::App& app, ParamOverrides& o) {
                  "where the pressure's free surface sits")
         ->transform(NameMap(enum_choices(free_surface_name, PF_FREE_SURFACE_COUNT), "free surface"))
         ->type_name("NAME")
+        ->group(group);
+    add_override(app, "--cfl", o.cfl, o.has_cfl,
+                 "projection CFL: most cells a particle may cross per substep (one pressure projection each)")
+        ->check(Range(0.05f, 16.0f))
         ->group(group);
 }
 

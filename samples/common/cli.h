@@ -105,11 +105,11 @@ public:
 };
 
 /// The accuracy knobs the samples take on the command line (--preset, --solver, --tolerance,
-/// --transfer, --advection, --p2g, --free-surface). Each overrides the scene's value only when
+/// --transfer, --advection, --p2g, --free-surface, --cfl). Each overrides the scene's value only when
 /// given, so a scene file stays the single source of everything else.
 struct ParamOverrides {
     bool has_preset = false, has_solver = false, has_tolerance = false, has_transfer = false, has_advection = false,
-         has_p2g = false, has_free_surface = false;
+         has_p2g = false, has_free_surface = false, has_cfl = false;
     pf_quality preset = PF_QUALITY_FAST;
     pf_pressure_solver solver = PF_PRESSURE_SOLVER_JACOBI;
     float tolerance = 0;
@@ -117,6 +117,7 @@ struct ParamOverrides {
     pf_advection advection = PF_ADVECTION_EULER;
     pf_p2g p2g = PF_P2G_FIXED_POINT;
     pf_free_surface free_surface = PF_FREE_SURFACE_MARKER_CELL;
+    float cfl = 0;
 
     /// Writes the given overrides into p: a preset first (keeping p's gravity and max_substeps,
     /// which are the scene's physics), then the single knobs.

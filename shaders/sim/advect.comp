@@ -1,6 +1,8 @@
 // Advection, explicit Euler (the original's integrator): x += dt * v with the particle's own
 // velocity, then the wall clamp of common/sim.glsl keeps particles inside the domain and a wall
-// a particle crossed stops its velocity into it.
+// a particle crossed stops its velocity into it. The path is a straight line, so one clamp at
+// its end stops it where sub-steps of the particle trace (common/particle_trace.glsl) would:
+// the walls are planes of the grid, and the velocity along them is unchanged by the stop.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };

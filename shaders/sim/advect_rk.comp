@@ -1,12 +1,14 @@
 // Advection through the grid velocity with an explicit Runge-Kutta scheme (design.md §4.10).
-// PF_RK_ORDER 2: the midpoint rule; 3: Ralston's third-order method. Every stage samples the
-// projected, extrapolated face velocity with G2P's clamped trilinear stencil (§3) at the
-// stage position, and every stage position, like the final one, goes through Euler's wall
-// clamp, so the field is only sampled inside the domain; a wall the final position crossed
-// stops the particle's velocity into it. Why: Euler with the particle's velocity spirals out of
-// a rotating flow by sqrt(1 + w^2 dt^2) per substep; these schemes follow the grid's flow to
-// O(dt^3) and O(dt^4) per substep.
+// PF_RK_ORDER 2: the midpoint rule; 3: Ralston's third-order method. The particle is traced in
+// sub-steps that cross at most one cell each, sized by the velocity at their start
+// (common/particle_trace.glsl). Every stage samples the projected, extrapolated face velocity
+// with G2P's clamped trilinear stencil (§3) at the stage position, and every stage position,
+// like each sub-step's end, goes through Euler's wall clamp, so the field is only sampled inside
+// the domain; a wall any sub-step crossed stops the particle's velocity into it. Why: Euler with
+// the particle's velocity spirals out of a rotating flow by sqrt(1 + w^2 dt^2) per step; these
+// schemes follow the grid's flow to O(dt^3) and O(dt^4) per sub-step.
 #include "common/sim.glsl"
+#include "common/particle_trace.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
 layout(std430, binding = PF_SLOT_PARTICLE_VEL) buffer Vel { vec4 vel[]; };
@@ -17,18 +19,25 @@ layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_
 void main() {
     uint i = flat_id();
     if (i >= sim.particle_count) return;
-    float dt = sim.dt;
     vec3 x0 = pos[i].xyz;
-    vec3 k1 = sample_velocity(x0);
-    vec3 k2 = sample_velocity(keep_in_domain(x0 + (0.5 * dt) * k1));
+    WallsCrossed walls = no_walls_crossed();
+    float remaining = sim.dt;
+    for (int s = 0; s < kMaxTraceSubsteps; ++s) {
+        vec3 k1 = sample_velocity(x0);
+        float dt = trace_substep(length(k1), remaining, s);
+        vec3 k2 = sample_velocity(keep_in_domain(x0 + (0.5 * dt) * k1));
 #if PF_RK_ORDER == 2
-    vec3 x = x0 + dt * k2;
+        vec3 x = x0 + dt * k2;
 #elif PF_RK_ORDER == 3
-    vec3 k3 = sample_velocity(keep_in_domain(x0 + (0.75 * dt) * k2));
-    vec3 x = x0 + dt * ((2.0 / 9.0) * k1 + (1.0 / 3.0) * k2 + (4.0 / 9.0) * k3);
+        vec3 k3 = sample_velocity(keep_in_domain(x0 + (0.75 * dt) * k2));
+        vec3 x = x0 + dt * ((2.0 / 9.0) * k1 + (1.0 / 3.0) * k2 + (4.0 / 9.0) * k3);
 #else
 #error PF_RK_ORDER must be 2 or 3
 #endif
-    pos[i] = vec4(keep_in_domain(x), 0.0);
-    vel[i].xyz = wall_stopped_velocity(x, vel[i].xyz);
+        x0 = trace_wall_clamp(x, walls);
+        if (dt == remaining) break;
+        remaining -= dt;
+    }
+    pos[i] = vec4(x0, 0.0);
+    vel[i].xyz = trace_stopped_velocity(walls, vel[i].xyz);
 }

@@ -368,7 +368,7 @@ void Simulation::build_substep_table() {
     });
     t.add("extrapolate", [this, faces](const SubstepContext&) {
         valid_current_ = 0;
-        for (uint32_t layer = 0; layer < desc_.params.extrapolation_layers; ++layer) {
+        for (uint32_t layer = 0; layer < extrapolation_layers(desc_.params, travel_cells_); ++layer) {
             runner_->run({ProgramId::extrapolate, stat_.extrapolate, faces,
                           {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_FACE_VALID, &face_valid_[valid_current_]},
                            {PF_SLOT_FACE_VALID_OUT, &face_valid_[1 - valid_current_]}}});
@@ -440,12 +440,11 @@ void Simulation::run_advect() {
     }
 }
 
-uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
-    if (clamped) *clamped = false;
+ProjectionCount Simulation::substeps_for(float frame_dt) const {
     // Nothing moves: one substep keeps the grid state current (unless an effect adds particles).
     bool adding = false;
     for (uint32_t i = 0; i < kEffectCount; ++i) adding = adding || ((desc_.features & (1u << i)) && effects_[i]->adds_particles());
-    if (particle_count_ == 0 && !adding) return 1;
+    if (particle_count_ == 0 && !adding) return ProjectionCount{};
     float v_max = cfl_speed_;
     if (added_at_step_ > cfl_step_) v_max = std::max(v_max, added_speed_);
     const float* g = desc_.params.gravity;
@@ -456,34 +455,34 @@ uint32_t Simulation::substeps_for(float frame_dt, bool* clamped) const {
     // Effects add accelerations (force fields, a moving frame) and impose speeds whatever was
     // measured (a wind's drag, an obstacle's surface pushing the liquid).
     // Some are stable only below a substep length of their own (surface tension's capillary waves).
-    float imposed = 0.0f;
-    double fewest = 1.0;
+    ProjectionDemand demand;
+    demand.frame_dt = frame_dt;
+    demand.cell_size = desc_.cell_size;
+    demand.cfl = desc_.params.cfl;
+    demand.max_projections = desc_.params.max_substeps;
+    demand.speed = v_max;
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (!(desc_.features & (1u << i))) continue;
         const CflBound bound = effects_[i]->cfl_bound(v_max);
         accel += bound.acceleration;
-        imposed = std::max(imposed, bound.speed);
-        if (bound.max_dt > 0.0f) fewest = std::max(fewest, std::ceil(double(frame_dt) / double(bound.max_dt)));
+        demand.imposed_speed = std::max(demand.imposed_speed, bound.speed);
+        if (bound.max_dt > 0.0f && (demand.longest_dt == 0.0f || bound.max_dt < demand.longest_dt))
+            demand.longest_dt = bound.max_dt;
     }
-    // The speed was measured at the end of the previous step (kStatusLag): it may grow by one
-    // frame of acceleration before this step ends.
-    const float v_est = std::max(v_max + accel * frame_dt, imposed);
-    const double wanted =
-        std::max(fewest, std::ceil(double(frame_dt) * v_est / (double(desc_.params.cfl) * desc_.cell_size)));
-    const uint32_t k = uint32_t(std::max(1.0, std::min(wanted, double(desc_.params.max_substeps))));
-    if (clamped) *clamped = wanted > double(desc_.params.max_substeps);
-    return k;
+    demand.acceleration = accel;
+    return projections_for(demand);
 }
 
 pf_result Simulation::step(float frame_dt) {
     const auto t0 = std::chrono::steady_clock::now();
     gl::StateGuard guard(gl_, gl_state_);
     const gl::DebugGroup debug_group(gl_, "pflip/step");  // around the passes' own groups
-    bool clamped = false;
     poll_status();
     take_lagged_status(int64_t(steps_) + 1);
-    const uint32_t substeps = substeps_for(frame_dt, &clamped);
-    if (clamped) raise_flags(PF_FLAG_SUBSTEPS_CLAMPED);
+    const ProjectionCount projections = substeps_for(frame_dt);
+    const uint32_t substeps = projections.count;
+    if (projections.clamped) raise_flags(PF_FLAG_SUBSTEPS_CLAMPED);
+    travel_cells_ = projections.travel_cells;
     ++steps_;
     runner_->begin_step(steps_, substeps);
 

@@ -20,6 +20,7 @@
 #include "sim/pass_runner.h"
 #include "sim/sim_uniforms.h"
 #include "sim/solvers/pressure_solver.h"
+#include "sim/step_clock.h"
 #include "sim/substep_table.h"
 #include "sim/transfer/particle_to_grid.h"
 #include "sim/volume_correction.h"
@@ -112,8 +113,9 @@ public:
     bool gpu_count() const { return gpu_count_; }
     // The live-count record (PF_COUNT_* words of common/slots.h: two indirect-draw records).
     const gl::Buffer& count_record() const { return count_record_; }
-    // Substeps pf_step(frame_dt) would take now (CFL estimate, design.md §5).
-    uint32_t substeps_for(float frame_dt, bool* clamped = nullptr) const;
+    // Substeps (projection steps) pf_step(frame_dt) would take now, and how far a particle may
+    // travel in each (CFL estimate, design.md §5).
+    ProjectionCount substeps_for(float frame_dt) const;
 
     // Test access: one substep of length dt exactly (no CFL logic, no volume correction), and
     // raw grid words.
@@ -270,6 +272,7 @@ private:
     uint32_t effects_ready_ = 0;
     uint32_t requested_features_ = 0;  // desc.features, turned on at the end of init()
     uint32_t step_substeps_ = 1;       // substeps of the step being run (effects weigh their sums by it)
+    float travel_cells_ = 1.0f;        // cells a particle may cross in one of its substeps (extrapolation's reach)
 
     // particles
     gl::Buffer pos_, vel_;

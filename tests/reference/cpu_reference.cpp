@@ -566,6 +566,10 @@ glm::dvec3 wall_stopped_velocity(const Grid& grid, glm::dvec3 world_pos, glm::dv
     return v;
 }
 
+namespace {
+constexpr int kMaxTraceSubsteps = 64;  // shaders/common/particle_trace.glsl
+}
+
 void advect(const Grid& grid, Particles& particles, double dt) {
     for (size_t p = 0; p < particles.pos.size(); ++p) {
         const glm::dvec3 x = particles.pos[p] + dt * particles.vel[p];
@@ -575,21 +579,32 @@ void advect(const Grid& grid, Particles& particles, double dt) {
 }
 
 void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>& vel, double dt,
-               Advection scheme) {
+               Advection scheme, double trace_cells) {
     auto u = [&](const glm::dvec3& x) { return interpolate(grid, vel, keep_in_domain(grid, x)); };
+    const double reach = trace_cells * grid.dx;
     for (size_t p = 0; p < particles.pos.size(); ++p) {
         glm::dvec3& x0 = particles.pos[p];
-        const glm::dvec3 k1 = u(x0);
-        const glm::dvec3 k2 = u(x0 + 0.5 * dt * k1);
-        glm::dvec3 x;
-        if (scheme == Advection::rk2) {
-            x = x0 + dt * k2; // midpoint
-        } else {
-            const glm::dvec3 k3 = u(x0 + 0.75 * dt * k2); // Ralston's third order
-            x = x0 + dt * (2.0 / 9.0 * k1 + 1.0 / 3.0 * k2 + 4.0 / 9.0 * k3);
+        glm::dvec3 stopped = p < particles.vel.size() ? particles.vel[p] : glm::dvec3(0.0);
+        double remaining = dt;
+        for (int s = 0; s < kMaxTraceSubsteps; ++s) {
+            const glm::dvec3 k1 = u(x0);
+            const double speed = glm::length(k1);
+            const bool last = speed * remaining <= reach || s == kMaxTraceSubsteps - 1;
+            const double h = last ? remaining : reach / speed;
+            const glm::dvec3 k2 = u(x0 + 0.5 * h * k1);
+            glm::dvec3 x;
+            if (scheme == Advection::rk2) {
+                x = x0 + h * k2; // midpoint
+            } else {
+                const glm::dvec3 k3 = u(x0 + 0.75 * h * k2); // Ralston's third order
+                x = x0 + h * (2.0 / 9.0 * k1 + 1.0 / 3.0 * k2 + 4.0 / 9.0 * k3);
+            }
+            x0 = keep_in_domain(grid, x);
+            stopped = wall_stopped_velocity(grid, x, stopped);  // every wall any sub-step crossed
+            if (last) break;
+            remaining -= h;
         }
-        x0 = keep_in_domain(grid, x);
-        if (p < particles.vel.size()) particles.vel[p] = wall_stopped_velocity(grid, x, particles.vel[p]);
+        if (p < particles.vel.size()) particles.vel[p] = stopped;
     }
 }
 

@@ -183,7 +183,8 @@ glm::dvec3 interpolate_gradient(const Grid& grid, const std::vector<double>& fie
 // |v| > max_speed → v and C scaled by max_speed/|v|; then |C|_F·dx > max_speed → C scaled to it.
 void g2p_apic(const Grid& grid, Particles& particles, const std::vector<double>& vel, double max_speed);
 
-// §4.10: x += dt·v, then keep_in_domain and wall_stopped_velocity.
+// §4.10: x += dt·v, then keep_in_domain and wall_stopped_velocity (a straight path: sub-steps of
+// §5's trace would end where one move's clamp does).
 void advect(const Grid& grid, Particles& particles, double dt);
 
 // The wall clamp of every advection scheme: a coordinate outside [-ε, n + ε] goes to clamp(g,
@@ -195,10 +196,12 @@ glm::dvec3 keep_in_domain(const Grid& grid, glm::dvec3 world_pos);
 glm::dvec3 wall_stopped_velocity(const Grid& grid, glm::dvec3 world_pos, glm::dvec3 v);
 
 // §4.10 Runge-Kutta through the grid velocity (vel, interpolated as in §3): midpoint (rk2) or
-// Ralston's third order (rk3); every stage position and the result go through keep_in_domain,
-// and a wall the result crossed stops particles.vel (wall_stopped_velocity).
+// Ralston's third order (rk3), traced in sub-steps (§5) of h = remaining time, or trace_cells dx /
+// |k1| when the particle would cross more than trace_cells cells in the rest of dt (the 64th takes
+// the rest; the GPU's trace_cells is 1); every stage position and every sub-step's end go through
+// keep_in_domain, and a wall any sub-step crossed stops particles.vel (wall_stopped_velocity).
 void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>& vel, double dt,
-               Advection scheme);
+               Advection scheme, double trace_cells = 1.0);
 
 // §4.5a: the hydrostatic start. Along gravity's dominant axis a (ties: x before y before z),
 // the run of L FLUID cells resting on the floor of each column gets, in its k-th cell from the

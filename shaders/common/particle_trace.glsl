@@ -1,0 +1,39 @@
+// The particle trace inside a substep (docs/design.md §5): a particle crosses at most
+// kTraceCells cells in one sub-step, and every sub-step's end goes through the wall clamp of
+// common/sim.glsl, so a move of several cells cannot leave the domain between two checks. A
+// particle that moves no further than kTraceCells in the substep takes one sub-step of the
+// whole substep, which is the single move of one-clock stepping exactly.
+
+// Cells a particle crosses at most in one sub-step (tests/reference/cpu_reference.cpp: the same).
+const float kTraceCells = 1.0;
+// Sub-steps a particle takes at most (a bound on the loop, far above any CFL the API allows).
+const int kMaxTraceSubsteps = 64;
+
+// The walls a trace crossed in any of its sub-steps (the velocity stops into each at the end).
+struct WallsCrossed {
+    bvec3 low, high;
+};
+
+WallsCrossed no_walls_crossed() { return WallsCrossed(bvec3(false), bvec3(false)); }
+
+// One sub-step's end: records the walls x crossed and returns it clamped into the domain.
+vec3 trace_wall_clamp(vec3 x, inout WallsCrossed walls) {
+    vec3 g = grid_coord(x);
+    walls.low = bvec3(uvec3(walls.low) | uvec3(beyond_low_wall(g)));
+    walls.high = bvec3(uvec3(walls.high) | uvec3(beyond_high_wall(g)));
+    return keep_in_domain(x);
+}
+
+// wall_stopped_velocity for the walls of a whole trace.
+vec3 trace_stopped_velocity(WallsCrossed walls, vec3 v) {
+    v = mix(v, max(v, vec3(0.0)), walls.low);
+    return mix(v, min(v, vec3(0.0)), walls.high);
+}
+
+// The length of the next sub-step at speed `speed` with `remaining` seconds of the substep left:
+// all of it when the particle crosses no more than kTraceCells cells in it, else as long as
+// crossing that many takes; the last permitted sub-step takes the rest.
+float trace_substep(float speed, float remaining, int substep) {
+    float reach = kTraceCells * sim.dx;
+    return (speed * remaining <= reach || substep == kMaxTraceSubsteps - 1) ? remaining : reach / speed;
+}

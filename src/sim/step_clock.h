@@ -1,0 +1,42 @@
+// The step's two clocks (docs/design.md §5). A pf_step of frame_dt takes a number of substeps,
+// each one pressure projection (P2G ... solve ... G2P), from the projection CFL (params.cfl) and
+// the limits effects declare; inside each substep's advection every particle is traced in
+// sub-steps of at most params.trace_cfl cells (shaders/common/particle_trace.glsl), so the
+// projections can be few while no particle jumps over a wall. Pure functions of their inputs:
+// tests drive them without a GL context.
+#pragma once
+#include <cstdint>
+
+#include "pf/pf.h"
+
+namespace pf {
+
+// What decides the projection count of one frame.
+struct ProjectionDemand {
+    float frame_dt = 0.0f;
+    float cell_size = 0.0f;
+    float cfl = 1.0f;             // cells a particle may cross per projection
+    uint32_t max_projections = 1; // params.max_substeps
+    float speed = 0.0f;           // fastest particle at the frame's start (the previous step's readback)
+    float acceleration = 0.0f;    // largest acceleration, m/s^2: gravity and the effects'
+    float imposed_speed = 0.0f;   // a speed effects impose whatever was measured
+    float longest_dt = 0.0f;      // the shortest of the effects' stable substep lengths (0: no limit)
+};
+
+struct ProjectionCount {
+    uint32_t count = 1;
+    bool clamped = false;       // the physics wanted more than max_projections
+    float travel_cells = 0.0f;  // cells the fastest particle may cross in one projection step
+};
+
+// The speed was measured at the end of the previous step: it may grow by one frame of
+// acceleration before this frame ends. k = clamp(ceil(frame_dt v / (cfl dx)), 1, max), at least
+// as many as the effects' own limits ask for.
+ProjectionCount projections_for(const ProjectionDemand& demand);
+
+// Face layers the velocity is extrapolated into air: params.extrapolation_layers beyond the first
+// cell of a particle's travel, so the trace samples extrapolated velocity as far as a projection
+// step carries a particle (ceil(travel_cells) cells, at most 16 more layers).
+uint32_t extrapolation_layers(const pf_sim_params& params, float travel_cells);
+
+}  // namespace pf

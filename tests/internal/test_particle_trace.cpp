@@ -1,0 +1,127 @@
+// The particle trace inside a substep (docs/design.md §5) against the double-precision CPU
+// reference, for moves of several cells: a smooth swirling face velocity is written directly
+// (no P2G or solve), G2P and advection run once with a substep long enough for the fastest
+// particles to cross about six cells, and every particle must land where the reference's trace
+// puts it. Particles start everywhere, walls included, so the clamp of every sub-step is
+// exercised. With RK2 and RK3 the reference's own single move (a trace of sub-steps of 16 cells)
+// lands far from its trace: the comparison can tell a trace from a single move. (Euler's path is
+// a straight line at the particle's velocity, the same in sub-steps as in one move.)
+#include <cmath>
+#include <cstring>
+#include <random>
+
+#include "api/handle.h"
+#include "reference/cpu_reference.h"
+#include "support/sim_fixture.h"
+
+namespace pf::test {
+namespace {
+
+constexpr int kN = 16;             // cells per axis
+constexpr float kDx = 0.1f;        // m
+constexpr double kSpeed = 2.0;     // m/s: the field's peak
+constexpr double kDt = 0.3;        // s: the fastest particles cross 6 cells
+
+// A divergence-free swirl with cells of four-cell scale, so that a move of several cells turns.
+glm::dvec3 swirl(const glm::dvec3& x) {
+    const double k = 2.0 * M_PI / (8.0 * kDx);
+    return kSpeed * glm::dvec3(std::sin(k * x.y) * std::cos(k * x.z), std::sin(k * x.z) * std::cos(k * x.x),
+                               std::sin(k * x.x) * std::cos(k * x.y));
+}
+
+struct TraceRun {
+    double worst = 0.0;        // largest |GPU - reference trace| position, cells
+    double single_worst = 0.0; // largest |reference single move - reference trace|, cells
+    double mean_moved = 0.0;   // mean distance moved, cells
+    size_t particles = 0;
+};
+
+class ParticleTrace : public GpuTest {
+protected:
+    TraceRun run(pf_advection scheme) {
+        pf_sim_desc d = test_desc(kN, kN, kN, kDx);
+        d.params.gravity[1] = 0.0f;
+        d.params.flip_ratio = 0.0f;  // Euler moves with G2P's (PIC) velocity: the same field
+        d.params.advection = scheme;
+        d.max_speed = 100.0f;
+        SimPtr handle = create(d);
+        if (!handle) return {};
+        Simulation& sim = *pf::entry(handle)->impl;
+
+        ref::Grid grid{kN, kN, kN, kDx, glm::dvec3(d.origin[0], d.origin[1], d.origin[2])};
+        std::vector<double> field(size_t(grid.faces()));
+        std::vector<uint32_t> words(field.size());
+        for (int c = 0; c < 3; ++c) {
+            const glm::ivec3 dims = grid.face_dims(c);
+            for (int k = 0; k < dims.z; ++k)
+                for (int j = 0; j < dims.y; ++j)
+                    for (int i = 0; i < dims.x; ++i) {
+                        const glm::dvec3 g = glm::dvec3(i, j, k) + ref::Grid::face_offset_g(c);
+                        const float u = float(swirl(grid.to_world(g))[c]);
+                        const int f = grid.face_index(c, i, j, k);
+                        field[size_t(f)] = double(u);  // the reference reads the GPU's floats
+                        std::memcpy(&words[size_t(f)], &u, 4);
+                    }
+        }
+        sim.write_grid_for_test(GridBuffer::face_vel, words);
+        sim.write_grid_for_test(GridBuffer::face_vel_old, words);
+
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<float> u01(0.0f, 1.0f);
+        std::vector<float> pos;
+        ref::Particles particles;
+        for (int p = 0; p < 2000; ++p) {
+            glm::vec3 x;
+            for (int a = 0; a < 3; ++a) x[a] = d.origin[a] + kDx * kN * u01(rng);
+            pos.insert(pos.end(), {x.x, x.y, x.z});
+            particles.pos.emplace_back(x);
+        }
+        particles.vel.assign(particles.pos.size(), glm::dvec3(0.0));
+        EXPECT_EQ(pf_add_particles(handle.get(), pos.data(), nullptr, uint32_t(pos.size() / 3)), PF_OK) << last_log();
+        EXPECT_EQ(sim.run_g2p_and_advect_for_test(float(kDt)), PF_OK) << last_log();
+        const ParticleState end = read_all(handle.get());
+
+        // The reference's trace (sub-steps of at most one cell), and its single move.
+        const ref::Particles start = particles;
+        ref::g2p(grid, particles, field, field, 0.0, double(d.max_speed));
+        ref::Particles single = particles;
+        const ref::Advection rk = scheme == PF_ADVECTION_RK2 ? ref::Advection::rk2 : ref::Advection::rk3;
+        if (scheme == PF_ADVECTION_EULER) {
+            ref::advect(grid, particles, kDt);
+            single = particles;
+        } else {
+            ref::advect_rk(grid, particles, field, kDt, rk, 1.0);
+            ref::advect_rk(grid, single, field, kDt, rk, 16.0);
+        }
+        TraceRun out;
+        out.particles = end.count();
+        EXPECT_EQ(end.count(), particles.pos.size());
+        for (size_t p = 0; p < std::min(end.count(), particles.pos.size()); ++p) {
+            const glm::dvec3 gpu(end.pos[p * 3], end.pos[p * 3 + 1], end.pos[p * 3 + 2]);
+            out.worst = std::max(out.worst, glm::length(gpu - particles.pos[p]) / kDx);
+            out.single_worst = std::max(out.single_worst, glm::length(single.pos[p] - particles.pos[p]) / kDx);
+            out.mean_moved += glm::length(particles.pos[p] - start.pos[p]) / kDx / double(end.count());
+        }
+        return out;
+    }
+};
+
+TEST_F(ParticleTrace, MovesOfSeveralCellsFollowTheReferenceTrace) {
+    for (pf_advection scheme : {PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_RK3}) {
+        const TraceRun traced = run(scheme);
+        std::printf("scheme %d: moved %.2f cells on average; |GPU - reference trace| at most %.2e cells; a single "
+                    "move lands up to %.2e cells from the trace\n",
+                    int(scheme), traced.mean_moved, traced.worst, traced.single_worst);
+        ASSERT_EQ(traced.particles, 2000u);
+        EXPECT_GT(traced.mean_moved, 2.0) << "the substep must carry particles several cells";
+        // Float against double through about six sub-steps of a field whose gradient is about
+        // 1.6 / s: rounding of coordinates up to 16 cells (1e-6 cells each), grown along the path
+        // (measured: 1.3e-5 and 1.8e-5 cells with RK2 and RK3, 3e-6 with Euler).
+        EXPECT_LT(traced.worst, 1e-4) << "scheme " << int(scheme);
+        // A single move misses the trace by far more than that.
+        if (scheme != PF_ADVECTION_EULER) EXPECT_GT(traced.single_worst, 0.1) << "scheme " << int(scheme);
+    }
+}
+
+}  // namespace
+}  // namespace pf::test
