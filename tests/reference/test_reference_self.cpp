@@ -508,8 +508,11 @@ TEST(Reference, RungeKuttaStepsAreTheTaylorPolynomialsOnAnAffineField) {
 }
 
 // Every stage position and the result go through the wall clamp: a particle rushing at a wall
-// stops at the margin, and its later stages sample the field there, not beyond the wall.
+// stops at the margin, and its later stages sample the field there, not beyond the wall. The
+// moves here cross up to 5 cells in one sub-step (the trace's sub-steps of 16 cells), so the
+// scheme's own stages are what is tested.
 TEST(Reference, RungeKuttaKeepsStagesInsideTheDomain) {
+    constexpr double kOneMove = 16.0;
     const Grid grid{4, 4, 4, 0.5, glm::dvec3(0.0)};
     std::vector<double> faces(grid.faces(), 0.0);
     // u grows towards the x = 4 wall; a stage beyond the wall would sample the clamped value.
@@ -518,7 +521,7 @@ TEST(Reference, RungeKuttaKeepsStagesInsideTheDomain) {
             for (int i = 0; i <= 4; ++i) faces[grid.face_index(0, i, j, k)] = 10.0 + i;
     for (Advection scheme : {Advection::rk2, Advection::rk3}) {
         Particles p{{grid.to_world(glm::dvec3(3.5, 2.0, 2.0))}, {glm::dvec3(1.0, -2.0, 0.0)}, {}};
-        advect_rk(grid, p, faces, 1.0, scheme);
+        advect_rk(grid, p, faces, 1.0, scheme, kOneMove);
         EXPECT_NEAR(grid.to_grid(p.pos[0]).x, 4.0 - 0.25, 1e-12);  // returned a quarter cell inside
         EXPECT_NEAR(grid.to_grid(p.pos[0]).y, 2.0, 1e-12);
         EXPECT_EQ(p.vel[0], glm::dvec3(0.0, -2.0, 0.0));  // the wall stops the motion into it
@@ -527,11 +530,11 @@ TEST(Reference, RungeKuttaKeepsStagesInsideTheDomain) {
     // returned to 4 - 1/4, where u = 10 + 3.75 (in grid units 2 * 13.75 per second).
     Particles p{{grid.to_world(glm::dvec3(1.2, 2.0, 2.0))}, {glm::dvec3(0.0)}, {}};
     const double dt = 0.1;  // half step: 1.2 + 0.05 * 11.2 / 0.5 = 2.32; full: 1.2 + 0.1 * 12.16 / 0.5
-    advect_rk(grid, p, faces, dt, Advection::rk2);
+    advect_rk(grid, p, faces, dt, Advection::rk2, kOneMove);
     const double k2 = 10.0 + (1.2 + 0.5 * dt * 11.2 / 0.5);
     EXPECT_NEAR(grid.to_grid(p.pos[0]).x, 1.2 + dt * k2 / 0.5, 1e-12);
     Particles q{{grid.to_world(glm::dvec3(1.2, 2.0, 2.0))}, {glm::dvec3(0.0)}, {}};
-    advect_rk(grid, q, faces, 0.3, Advection::rk2);  // half step: 4.56 > 4, returned to 3.75
+    advect_rk(grid, q, faces, 0.3, Advection::rk2, kOneMove);  // half step: 4.56 > 4, returned to 3.75
     EXPECT_NEAR(grid.to_grid(q.pos[0]).x, 4.0 - 0.25, 1e-12);  // 1.2 + 0.3 * 13.75 / 0.5 > 4 too
 }
 
