@@ -387,8 +387,11 @@ enum {
                                             step is numerically unsound (e.g. an unconverged pressure solve) */
     PF_FLAG_EMITTERS_FULL = 1u << 6,   /**< emitters wanted more particles than max_particles leaves room for:
                                             emission stopped at capacity (PF_FEATURE_EMITTERS) */
-    PF_FLAG_WHITEWATER_FULL = 1u << 7  /**< the liquid made more whitewater than pf_whitewater.capacity holds: the
+    PF_FLAG_WHITEWATER_FULL = 1u << 7, /**< the liquid made more whitewater than pf_whitewater.capacity holds: the
                                             rest was not made (PF_FEATURE_WHITEWATER) */
+    PF_FLAG_BUDGET_LIMITED = 1u << 8   /**< to stay within pf_set_gpu_budget's milliseconds a step took fewer
+                                            substeps than params.cfl asks for, or stopped a pressure solve short
+                                            of params.pressure_tolerance (the step is less accurate) */
 };
 /* Each flag is logged once (a warning) when it is raised, and again only after pf_clear_flags. */
 
@@ -641,10 +644,20 @@ typedef enum pf_gpu_timing {
     PF_GPU_TIMING_FORCE32 = 0x7fffffff
 } pf_gpu_timing;
 /** Chooses what the next steps time; times measured before read 0 from now on (pf_stats.gpu_step
- *  0 until a step of the new kind is measured). PF_ERROR_INVALID_ARGUMENT for an unknown value. */
+ *  0 until a step of the new kind is measured). PF_ERROR_INVALID_ARGUMENT for an unknown value, and
+ *  for PF_GPU_TIMING_OFF while a pf_set_gpu_budget budget is set (the budget needs the times). */
 PF_API pf_result pf_set_gpu_timing(pf_sim* sim, pf_gpu_timing timing);
 /** What pf_step times now (PF_GPU_TIMING_PASSES unless changed). */
 PF_API pf_result pf_get_gpu_timing(const pf_sim* sim, pf_gpu_timing* out);
+/** GPU milliseconds the engine gives each pf_step; 0 (the default) means no budget. With one, a step
+ *  takes no more substeps than fit, judged by the GPU time its own timer queries measured for a recent
+ *  step, and when a single substep does not fit it caps the pressure solver's iterations; whenever it
+ *  does less than params ask it raises PF_FLAG_BUDGET_LIMITED. The substep counts then follow the
+ *  GPU's timing, so runs are no longer reproducible. [0, 1e4]; PF_ERROR_INVALID_ARGUMENT otherwise,
+ *  and for a budget while pf_set_gpu_timing is PF_GPU_TIMING_OFF (nothing would be measured). */
+PF_API pf_result pf_set_gpu_budget(pf_sim* sim, float milliseconds);
+/** The budget pf_set_gpu_budget set (0: none). */
+PF_API pf_result pf_get_gpu_budget(const pf_sim* sim, float* milliseconds);
 
 
 /** @} */

@@ -87,6 +87,8 @@ _PROTOTYPES = {
     "pf_get_pass_stats": (t.c_enum, [_sim, ctypes.c_uint32, _P(t.PassStatsC)]),
     "pf_set_gpu_timing": (t.c_enum, [_sim, t.c_enum]),
     "pf_get_gpu_timing": (t.c_enum, [_sim, _P(t.c_enum)]),
+    "pf_set_gpu_budget": (t.c_enum, [_sim, ctypes.c_float]),
+    "pf_get_gpu_budget": (t.c_enum, [_sim, _P(ctypes.c_float)]),
     "pf_render_ssf": (t.c_enum, [_sim, _P(t.Camera), _P(t.RenderTarget), _P(t.SsfParams)]),
     "pf_render_particles": (t.c_enum, [_sim, _P(t.Camera), _P(t.RenderTarget), _P(t.ParticleParams)]),
     "pf_push": (t.c_enum, [_sim, _f3, ctypes.c_float, _f3]),

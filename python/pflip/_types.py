@@ -110,6 +110,7 @@ class Flag(enum.IntFlag):
     ENERGY_GAINED = 1 << 5
     EMITTERS_FULL = 1 << 6
     WHITEWATER_FULL = 1 << 7
+    BUDGET_LIMITED = 1 << 8
 
 
 class Feature(enum.IntFlag):

@@ -329,6 +329,20 @@ class Simulation:
             raise PflipError("pf_set_gpu_timing", t.Result.ERROR_INVALID_ARGUMENT, f"timing {value!r} is not a pf_gpu_timing")
         self._call("pf_set_gpu_timing", t.c_enum(v))
 
+    @property
+    def gpu_budget(self):
+        """pf_get_gpu_budget: the GPU milliseconds each step may take (0: no budget)."""
+        out = ctypes.c_float()
+        self._call("pf_get_gpu_budget", ctypes.byref(out))
+        return out.value
+
+    @gpu_budget.setter
+    def gpu_budget(self, milliseconds):
+        """pf_set_gpu_budget: steps take no more substeps than fit, cap the solver when one does
+        not, and raise Flag.BUDGET_LIMITED when they do less than the parameters ask; 0 removes the
+        budget. Out of [0, 1e4], or with GPU timing off: PflipError(ERROR_INVALID_ARGUMENT)."""
+        self._call("pf_set_gpu_budget", ctypes.c_float(milliseconds))
+
     def stats(self):
         """pf_get_stats (no stall: GPU figures lag a few steps)."""
         out = t.Stats.output()

@@ -175,6 +175,28 @@ def test_requested_particles_equal_the_blocking_read(sim):
         sim.poll_particles(tickets[0])  # collected
 
 
+def test_gpu_budget(sim):
+    """pf_set_gpu_budget: set and read back; out of range or with timing off it raises and the
+    budget stays; a budget steps (on llvmpipe nothing is measured, so nothing is cut)."""
+    assert sim.gpu_budget == 0.0
+    sim.gpu_budget = 2.5
+    assert sim.gpu_budget == 2.5
+    for bad in (-1.0, float("nan"), 1e5):
+        with pytest.raises(pflip.PflipError) as e:
+            sim.gpu_budget = bad
+        assert e.value.code == pflip.Result.ERROR_INVALID_ARGUMENT and e.value.function == "pf_set_gpu_budget"
+        assert sim.gpu_budget == 2.5
+    with pytest.raises(pflip.PflipError):
+        sim.gpu_timing = pflip.GpuTiming.OFF
+    sim.fill_box((0.0, 0.0, 0.0), (0.4, 0.4, 0.4))
+    sim.step(1.0 / 60.0)
+    sim.gpu_budget = 0.0
+    sim.gpu_timing = pflip.GpuTiming.OFF
+    with pytest.raises(pflip.PflipError):
+        sim.gpu_budget = 1.0
+    assert sim.gpu_budget == 0.0
+
+
 def test_gpu_timing_modes(sim):
     """pf_set_gpu_timing: STEP times the step as a whole (total only), OFF nothing, PASSES every
     pass group (the default); unknown values raise and change nothing."""

@@ -44,6 +44,7 @@ struct Options {
     float frame_dt = 0;        // 0: the scene's
     int64_t features = -1;     // -1: the scene's PF_FEATURE_* bits
     pf_gpu_timing gpu_timing = PF_GPU_TIMING_PASSES;  // --gpu-timing
+    float gpu_budget = 0;      // --gpu-budget (0: none)
     std::string json_path, csv_path;
     bool verbose = false;
     std::string command_line;
@@ -95,6 +96,9 @@ void add_options(CLI::App& app, Options& o) {
     static const pfs::Choices<pf_gpu_timing> kTimings = {
         {"passes", PF_GPU_TIMING_PASSES}, {"step", PF_GPU_TIMING_STEP}, {"off", PF_GPU_TIMING_OFF},
         {"kernels", PF_GPU_TIMING_KERNELS}};
+    app.add_option("--gpu-budget", o.gpu_budget,
+                   "GPU milliseconds each step may take (pf_set_gpu_budget; 0: none); needs GPU timing")
+        ->check(pfs::Range(0.0f, 1e4f));
     app.add_option("--gpu-timing", o.gpu_timing,
                    "what the library's timer queries measure (pf_set_gpu_timing): every pass group (the "
                    "default, the per-pass tables), the step as a whole (the total only), nothing (wall times only) or every "
@@ -192,6 +196,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
         sim.reset(raw);
     }
     pfs::check(pf_set_gpu_timing(sim.get(), opt.gpu_timing), "pf_set_gpu_timing");
+    pfs::check(pf_set_gpu_budget(sim.get(), opt.gpu_budget), "pf_set_gpu_budget");
     glFinish();
     r.create_ms = pfs::now_ms() - t0;
     t0 = pfs::now_ms();
@@ -675,6 +680,7 @@ int run(int argc, char** argv) {
         settings["pressure_iterations"] = opt.pressure_iterations;
         settings["max_substeps_override"] = opt.max_substeps;
         settings["frame_dt_override"] = opt.frame_dt;
+        settings["gpu_budget_ms"] = opt.gpu_budget;
         settings["gpu_timing"] = opt.gpu_timing == PF_GPU_TIMING_PASSES ? "passes"
                                  : opt.gpu_timing == PF_GPU_TIMING_STEP    ? "step"
                                  : opt.gpu_timing == PF_GPU_TIMING_KERNELS ? "kernels"

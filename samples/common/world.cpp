@@ -449,6 +449,7 @@ std::string flag_names(uint32_t flags) {
     add(PF_FLAG_ENERGY_GAINED, "ENERGY_GAINED");
     add(PF_FLAG_EMITTERS_FULL, "EMITTERS_FULL");
     add(PF_FLAG_WHITEWATER_FULL, "WHITEWATER_FULL");
+    add(PF_FLAG_BUDGET_LIMITED, "BUDGET_LIMITED");
     return s.empty() ? "none" : s;
 }
 

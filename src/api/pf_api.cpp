@@ -8,6 +8,7 @@
 
 #include "api/abi.h"
 #include "api/entry.h"
+#include "api/field_checks.h"
 #include "api/handle.h"
 #include "api/validate.h"
 #include "pf/pf.h"
@@ -345,7 +346,30 @@ pf_result pf_set_gpu_timing(pf_sim* handle, pf_gpu_timing timing) {
     if (pf::enum_bits(timing) >= uint32_t(PF_GPU_TIMING_COUNT))
         return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_gpu_timing: timing " + std::to_string(pf::enum_bits(timing)) +
                                                             " is not a pf_gpu_timing (0..3)");
+    if (timing == PF_GPU_TIMING_OFF && s.gpu_budget_ms() > 0.0f)
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_gpu_timing: PF_GPU_TIMING_OFF while a GPU budget is set "
+                                                        "(pf_set_gpu_budget needs the step's times; set the budget to 0 first)");
     s.set_gpu_timing(timing);
+    return PF_OK;
+}
+
+pf_result pf_set_gpu_budget(pf_sim* handle, float milliseconds) {
+    PF_ENTRY(sim, handle, "pf_set_gpu_budget");
+    pf::Simulation& s = *sim->impl;
+    if (!(milliseconds >= 0.0f && milliseconds <= 1e4f))
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_gpu_budget: milliseconds must be in [0, 1e4], got " +
+                                                            pf::number_string(milliseconds));
+    if (milliseconds > 0.0f && s.gpu_timing() == PF_GPU_TIMING_OFF)
+        return s.log().error(PF_ERROR_INVALID_ARGUMENT, "pf_set_gpu_budget: GPU timing is off (pf_set_gpu_timing), so "
+                                                        "there is nothing to fit the budget by");
+    s.set_gpu_budget_ms(milliseconds);
+    return PF_OK;
+}
+
+pf_result pf_get_gpu_budget(const pf_sim* handle, float* out) {
+    PF_ENTRY(sim, handle, "pf_get_gpu_budget");
+    if (!out) return sim->impl->log().error(PF_ERROR_INVALID_ARGUMENT, "pf_get_gpu_budget: out must not be NULL");
+    *out = sim->impl->gpu_budget_ms();
     return PF_OK;
 }
 

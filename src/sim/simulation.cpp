@@ -332,7 +332,7 @@ void Simulation::build_substep_table() {
     if (desc_.params.volume_correction > 0.0f) {
         t.add("volume_correction", [this, cells](const SubstepContext& c) {
             if (!c.correct_volume) return;
-            volume_correction_.run(*runner_, *solver_, desc_.params,
+            volume_correction_.run(*runner_, *solver_, solve_params(),
                                    {pos_, cell_type_, cell_count_, pressure_, face_fraction_, cells, particle_count_});
         });
     }
@@ -357,7 +357,7 @@ void Simulation::build_substep_table() {
     t.add("pressure_solve", [this](const SubstepContext&) {
         // What this solver needed recently (a readback of another solver's step says nothing).
         const bool known = recent_solver_ == desc_.params.pressure_solver;
-        solver_->solve(*runner_, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params,
+        solver_->solve(*runner_, PressureProblem{cell_type_, rhs_, pressure_, status_, solve_params(),
                                                  known ? recent_iterations_ : kUnknownIterations,
                                                  known ? recent_later_iterations_ : kUnknownIterations,
                                                  known && solver_residual_ <= desc_.params.pressure_tolerance,
@@ -480,9 +480,12 @@ pf_result Simulation::step(float frame_dt) {
     poll_status();
     take_lagged_status(int64_t(steps_) + 1);
     const ProjectionCount projections = substeps_for(frame_dt);
-    const uint32_t substeps = projections.count;
     if (projections.clamped) raise_flags(PF_FLAG_SUBSTEPS_CLAMPED);
-    travel_cells_ = projections.travel_cells;
+    const BudgetPlan plan = fit_budget(gpu_budget_ms_, projections.count, desc_.params.pressure_iterations, measured_step());
+    if (plan.fewer_projections) raise_flags(PF_FLAG_BUDGET_LIMITED);
+    const uint32_t substeps = plan.projections;
+    iteration_cap_ = plan.iteration_cap;
+    travel_cells_ = projections.travel_cells * float(projections.count) / float(substeps);
     ++steps_;
     runner_->begin_step(steps_, substeps);
 
@@ -526,6 +529,7 @@ pf_result Simulation::step(float frame_dt) {
     status_.upload(PF_STATUS_FLAGS * 4, 4, &no_flags);
     fence_step_[slot] = steps_;
     fence_solver_[slot] = desc_.params.pressure_solver;
+    fence_capped_[slot] = iteration_cap_ < desc_.params.pressure_iterations;
     fence_added_[slot] = added_total_;
 
     // Engines may read the particle buffers as vertex data, SSBOs or by copying.
@@ -649,6 +653,11 @@ void Simulation::read_status_slot(int s) const {
         if (bound < particle_count_) particle_count_ = uint32_t(bound);
     }
     if (fence_step_[s] > flags_cleared_at_step_) raise_flags(words[PF_STATUS_FLAGS]);
+    // A solve the budget cut that stopped above its tolerance did less than params ask.
+    float residual = 0.0f;
+    std::memcpy(&residual, &words[PF_STATUS_SOLVER_RESIDUAL], sizeof(float));
+    if (fence_capped_[s] && fence_step_[s] > flags_cleared_at_step_ && residual > desc_.params.pressure_tolerance)
+        raise_flags(PF_FLAG_BUDGET_LIMITED);
     if (fence_step_[s] > status_step_) {
         status_step_ = fence_step_[s];
         std::copy(std::begin(words), std::end(words), status_words_.begin());
@@ -824,6 +833,9 @@ void Simulation::raise_flags(uint32_t bits) const {
                                 "emission stopped at the capacity (PF_FLAG_EMITTERS_FULL)"},
         {PF_FLAG_WHITEWATER_FULL, "the liquid made more whitewater than pf_whitewater.capacity holds: the rest was "
                                   "not made; raise the capacity or lower the rates (PF_FLAG_WHITEWATER_FULL)"},
+        {PF_FLAG_BUDGET_LIMITED, "to stay within the GPU budget (pf_set_gpu_budget) a step took fewer substeps than "
+                                 "params.cfl asks for or stopped a pressure solve above params.pressure_tolerance: "
+                                 "the step is less accurate (PF_FLAG_BUDGET_LIMITED)"},
     };
     for (const Text& t : kTexts)
         if (fresh & t.bit) log_.warning(std::string("pf_step: ") + t.text);
@@ -1091,6 +1103,28 @@ void Simulation::set_gpu_timing(pf_gpu_timing timing) {
                         : timing == PF_GPU_TIMING_STEP ? gl::TimerRing::Mode::step
                                                        : gl::TimerRing::Mode::passes);
     runner_->set_kernel_timing(timing == PF_GPU_TIMING_KERNELS);
+}
+
+MeasuredStep Simulation::measured_step() const {
+    if (step_time_source_) return step_time_source_();
+    const gl::TimerRing::Result& r = runner_->latest_timing();
+    MeasuredStep m;
+    m.step = r.step;
+    m.projections = r.substeps;
+    m.total_ms = r.step_ms;
+    const auto& stats = runner_->stats();
+    for (size_t i = 0; i < stats.size(); ++i) {
+        m.total_ms += r.at(i);
+        if (stats[i].group == PF_PASS_PRESSURE_SOLVE) m.solve_ms += r.at(i);
+    }
+    m.iterations = recent_iterations_;
+    return m;
+}
+
+pf_sim_params Simulation::solve_params() const {
+    pf_sim_params p = desc_.params;
+    if (iteration_cap_ > 0) p.pressure_iterations = std::min(p.pressure_iterations, iteration_cap_);
+    return p;
 }
 
 pf_gpu_timing Simulation::gpu_timing() const {

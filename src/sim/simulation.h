@@ -3,6 +3,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <memory>
 #include <string>
@@ -149,6 +150,14 @@ public:
     // pf_set_gpu_timing / pf_get_gpu_timing (validated).
     void set_gpu_timing(pf_gpu_timing timing);
     pf_gpu_timing gpu_timing() const;
+    // pf_set_gpu_budget / pf_get_gpu_budget (validated; 0: none).
+    void set_gpu_budget_ms(float ms) { gpu_budget_ms_ = ms; }
+    float gpu_budget_ms() const { return gpu_budget_ms_; }
+    // The GPU time of the newest measured step, as the budget reads it (the runner's timer queries).
+    MeasuredStep measured_step() const;
+    // Test access: the budget reads its times from `source` instead (llvmpipe's timers read 0);
+    // an empty function restores the timer queries.
+    void set_step_time_source_for_test(std::function<MeasuredStep()> source) { step_time_source_ = std::move(source); }
     // Whether the P2G scheme in use sums floats (else fixed point at the range's scale).
     bool p2g_float_sums() const { return p2g_.float_sums(desc_.params); }
     // The substep table's entries, in the order a substep runs them (as the next step would).
@@ -273,6 +282,13 @@ private:
     uint32_t requested_features_ = 0;  // desc.features, turned on at the end of init()
     uint32_t step_substeps_ = 1;       // substeps of the step being run (effects weigh their sums by it)
     float travel_cells_ = 1.0f;        // cells a particle may cross in one of its substeps (extrapolation's reach)
+    float gpu_budget_ms_ = 0.0f;       // pf_set_gpu_budget (0: none)
+    std::function<MeasuredStep()> step_time_source_;  // tests' injected times (empty: the timer queries)
+    // Most pressure iterations per solve in the step being run: params.pressure_iterations, or fewer
+    // when the budget cut them.
+    uint32_t iteration_cap_ = 0;
+    // The parameters the step's solves run with (params, their iterations capped by the budget).
+    pf_sim_params solve_params() const;
 
     // particles
     gl::Buffer pos_, vel_;
@@ -342,6 +358,7 @@ private:
     mutable uint32_t recent_later_iterations_ = 0;  // ...and in one later (active-set) round...
     mutable pf_pressure_solver recent_solver_ = PF_PRESSURE_SOLVER_COUNT;  // ...of this solver
     pf_pressure_solver fence_solver_[kReadbackSlots] = {};  // the solver of each readback's step
+    bool fence_capped_[kReadbackSlots] = {};                 // whether the budget cut its solves' iterations
     uint64_t fence_added_[kReadbackSlots] = {};             // and added_total_ then
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
     // Adds PF_FLAG_* bits, logging one warning for each bit not already set.

@@ -322,6 +322,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     cfl_speed_ = s.cfl_speed;
     std::copy(std::begin(s.status_words), std::end(s.status_words), status_words_.begin());
     for (StepStatus& r : received_) r = StepStatus{};
+    std::fill(std::begin(fence_capped_), std::end(fence_capped_), false);
     for (const StepStatus& saved : s.received) {
         if (saved.valid == 0) continue;
         StepStatus moved = saved;

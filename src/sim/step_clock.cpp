@@ -18,6 +18,25 @@ ProjectionCount projections_for(const ProjectionDemand& d) {
     return out;
 }
 
+BudgetPlan fit_budget(float budget_ms, uint32_t wanted, uint32_t max_iterations, const MeasuredStep& m) {
+    BudgetPlan plan;
+    plan.projections = wanted;
+    plan.iteration_cap = max_iterations;
+    if (!(budget_ms > 0.0f) || m.step == 0 || m.projections == 0 || !(m.total_ms > 0.0f)) return plan;
+    const double per_projection = double(m.total_ms) / m.projections;
+    const double fit = std::floor(double(budget_ms) / per_projection);
+    if (double(wanted) <= fit) return plan;
+    plan.projections = uint32_t(std::max(1.0, fit));
+    plan.fewer_projections = plan.projections < wanted;
+    if (fit >= 1.0 || m.iterations == 0 || !(m.solve_ms > 0.0f)) return plan;
+    // One projection is over the budget: the solve gives up what the rest of it leaves.
+    const double solve = double(m.solve_ms) / m.projections, per_iteration = solve / m.iterations;
+    const double rest = per_projection - solve;
+    const double allowed = std::floor((double(budget_ms) - rest) / per_iteration);
+    plan.iteration_cap = uint32_t(std::clamp(allowed, 1.0, double(max_iterations)));
+    return plan;
+}
+
 uint32_t extrapolation_layers(const pf_sim_params& params, float travel_cells) {
     // A thousandth of a cell of slack: a travel of one cell that rounding put above 1 needs no layer.
     const double beyond_first = std::ceil(double(travel_cells) - 1e-3) - 1.0;

@@ -34,6 +34,28 @@ struct ProjectionCount {
 // as many as the effects' own limits ask for.
 ProjectionCount projections_for(const ProjectionDemand& demand);
 
+// The GPU time of the newest measured step (the library's own timer queries, a few steps late).
+struct MeasuredStep {
+    uint64_t step = 0;          // 0: nothing measured yet
+    uint32_t projections = 0;   // its substeps
+    float total_ms = 0.0f;      // the whole step
+    float solve_ms = 0.0f;      // its pressure solves (the PF_PASS_PRESSURE_SOLVE group)
+    uint32_t iterations = 0;    // the most iterations one of its solves took
+};
+
+// What a GPU-time budget lets the next step do (pf_set_gpu_budget, docs/design.md §5).
+struct BudgetPlan {
+    uint32_t projections = 1;
+    uint32_t iteration_cap = 0;  // most pressure iterations per solve (params.pressure_iterations when not cut)
+    bool fewer_projections = false;  // fewer than the projection CFL wants
+};
+
+// Fits the wanted projections, each at most max_iterations solver iterations, into budget_ms
+// from the measured step: a projection costs what one of its projections cost. When even one
+// does not fit, the solve's iterations are cut (at least one) by the time one iteration took.
+// With no budget (0) or nothing measured the wanted work is returned unchanged.
+BudgetPlan fit_budget(float budget_ms, uint32_t wanted, uint32_t max_iterations, const MeasuredStep& measured);
+
 // Face layers the velocity is extrapolated into air: params.extrapolation_layers beyond the first
 // cell of a particle's travel, so the trace samples extrapolated velocity as far as a projection
 // step carries a particle (ceil(travel_cells) cells, at most 16 more layers).

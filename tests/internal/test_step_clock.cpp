@@ -64,5 +64,52 @@ TEST(StepClock, VelocityReachesAsFarAsAProjectionCarriesAParticle) {
     EXPECT_EQ(extrapolation_layers(p, 100.0f), 17u) << "at most 16 layers beyond the parameter's";
 }
 
+MeasuredStep measured(uint32_t projections, float total_ms, float solve_ms, uint32_t iterations) {
+    MeasuredStep m;
+    m.step = 10;
+    m.projections = projections;
+    m.total_ms = total_ms;
+    m.solve_ms = solve_ms;
+    m.iterations = iterations;
+    return m;
+}
+
+TEST(StepClock, NoBudgetOrNoMeasurementChangesNothing) {
+    const BudgetPlan none = fit_budget(0.0f, 7, 40, measured(2, 4.0f, 2.0f, 8));
+    EXPECT_EQ(none.projections, 7u);
+    EXPECT_EQ(none.iteration_cap, 40u);
+    EXPECT_FALSE(none.fewer_projections);
+    const BudgetPlan unmeasured = fit_budget(1.0f, 7, 40, MeasuredStep{});
+    EXPECT_EQ(unmeasured.projections, 7u);
+    EXPECT_FALSE(unmeasured.fewer_projections);
+}
+
+TEST(StepClock, TheBudgetTakesTheProjectionsThatFit) {
+    // 2 ms a projection: a 5 ms budget fits 2 of the 7 the CFL wants, a 20 ms budget all of them.
+    const BudgetPlan cut = fit_budget(5.0f, 7, 40, measured(2, 4.0f, 2.0f, 8));
+    EXPECT_EQ(cut.projections, 2u);
+    EXPECT_TRUE(cut.fewer_projections);
+    EXPECT_EQ(cut.iteration_cap, 40u) << "two whole projections fit: the solves keep their work";
+    const BudgetPlan all = fit_budget(20.0f, 7, 40, measured(2, 4.0f, 2.0f, 8));
+    EXPECT_EQ(all.projections, 7u);
+    EXPECT_FALSE(all.fewer_projections);
+}
+
+TEST(StepClock, WhenOneProjectionDoesNotFitTheSolveGivesWay) {
+    // A projection: 2 ms, of which the solve 1.5 ms over 10 iterations (0.15 ms each); a 1 ms
+    // budget leaves the solve 0.5 ms: 3 iterations.
+    const BudgetPlan plan = fit_budget(1.0f, 4, 40, measured(1, 2.0f, 1.5f, 10));
+    EXPECT_EQ(plan.projections, 1u);
+    EXPECT_TRUE(plan.fewer_projections);
+    EXPECT_EQ(plan.iteration_cap, 3u);
+    // Less than the rest of the projection: the solve keeps one iteration.
+    EXPECT_EQ(fit_budget(0.2f, 1, 40, measured(1, 2.0f, 1.5f, 10)).iteration_cap, 1u);
+    // A wanted single projection over the budget is cut in its solve, not in its count.
+    const BudgetPlan one = fit_budget(1.0f, 1, 40, measured(1, 2.0f, 1.5f, 10));
+    EXPECT_EQ(one.projections, 1u);
+    EXPECT_FALSE(one.fewer_projections);
+    EXPECT_EQ(one.iteration_cap, 3u);
+}
+
 }  // namespace
 }  // namespace pf
