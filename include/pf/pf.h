@@ -651,7 +651,8 @@ PF_API pf_result pf_set_gpu_timing(pf_sim* sim, pf_gpu_timing timing);
 PF_API pf_result pf_get_gpu_timing(const pf_sim* sim, pf_gpu_timing* out);
 /** GPU milliseconds the engine gives each pf_step; 0 (the default) means no budget. With one, a step
  *  takes no more substeps than fit, judged by the GPU time its own timer queries measured for a recent
- *  step, and when a single substep does not fit it caps the pressure solver's iterations; whenever it
+ *  step, and when a single substep does not fit it caps the pressure solver's iterations (this needs
+ *  the solve's own time: PF_GPU_TIMING_PASSES, the default, or PF_GPU_TIMING_KERNELS); whenever it
  *  does less than params ask it raises PF_FLAG_BUDGET_LIMITED. The substep counts then follow the
  *  GPU's timing, so runs are no longer reproducible. [0, 1e4]; PF_ERROR_INVALID_ARGUMENT otherwise,
  *  and for a budget while pf_set_gpu_timing is PF_GPU_TIMING_OFF (nothing would be measured). */
