@@ -16,6 +16,7 @@
 #include "scene.h"
 #include "scene_effects.h"
 #include "util.h"
+#include "world.h"
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -113,12 +115,12 @@ void add_options(CLI::App& app, Options& o) {
 
 using pfs::SimPtr;
 
+// The names of pf_stats.flags' bits, one per raised flag (world.cpp's flag_names, split).
 std::vector<std::string> flag_list(uint32_t flags) {
     std::vector<std::string> v;
-    if (flags & PF_FLAG_P2G_OVERFLOW) v.push_back("P2G_OVERFLOW");
-    if (flags & PF_FLAG_NONFINITE) v.push_back("NONFINITE");
-    if (flags & PF_FLAG_SPEED_CLAMPED) v.push_back("SPEED_CLAMPED");
-    if (flags & PF_FLAG_SUBSTEPS_CLAMPED) v.push_back("SUBSTEPS_CLAMPED");
+    if (!flags) return v;
+    std::istringstream names(pfs::flag_names(flags));
+    for (std::string name; names >> name;) v.push_back(name);
     return v;
 }
 

@@ -2,7 +2,12 @@
 // kTraceCells cells in one sub-step, and every sub-step's end goes through the wall clamp of
 // common/sim.glsl, so a move of several cells cannot leave the domain between two checks. A
 // particle that moves no further than kTraceCells in the substep takes one sub-step of the
-// whole substep, which is the single move of one-clock stepping exactly.
+// whole substep, which is the single move of one-clock stepping exactly. A trace of several
+// sub-steps ends where it stands before a sub-step that would enter a SOLID cell (an obstacle's):
+// moved several cells at once it could jump over a thin obstacle, which the obstacles' push after
+// advection would then never see. (A single sub-step of at most a cell ends where it lands, as a
+// one-clock move did, and the push moves it out.) The including kernel declares cell_type[]
+// (PF_SLOT_CELL_TYPE).
 
 // Cells a particle crosses at most in one sub-step (tests/reference/cpu_reference.cpp: the same).
 const float kTraceCells = 1.0;
@@ -22,6 +27,12 @@ vec3 trace_wall_clamp(vec3 x, inout WallsCrossed walls) {
     walls.low = bvec3(uvec3(walls.low) | uvec3(beyond_low_wall(g)));
     walls.high = bvec3(uvec3(walls.high) | uvec3(beyond_high_wall(g)));
     return keep_in_domain(x);
+}
+
+// Whether x lies in a SOLID cell (positions beyond a wall count in the cell inside it).
+bool in_solid_cell(vec3 x) {
+    ivec3 c = clamp(ivec3(floor(grid_coord(x))), ivec3(0), sim.grid.xyz - 1);
+    return PF_CELL_KIND(cell_type[cell_index(c)]) == PF_CELL_SOLID;
 }
 
 // wall_stopped_velocity for the walls of a whole trace.

@@ -4,15 +4,17 @@
 // (common/particle_trace.glsl). Every stage samples the projected, extrapolated face velocity
 // with G2P's clamped trilinear stencil (§3) at the stage position, and every stage position,
 // like each sub-step's end, goes through Euler's wall clamp, so the field is only sampled inside
-// the domain; a wall any sub-step crossed stops the particle's velocity into it. Why: Euler with
+// the domain; a wall any sub-step crossed stops the particle's velocity into it, and a trace of
+// several sub-steps ends before one that would enter a SOLID cell. Why: Euler with
 // the particle's velocity spirals out of a rotating flow by sqrt(1 + w^2 dt^2) per step; these
 // schemes follow the grid's flow to O(dt^3) and O(dt^4) per sub-step.
 #include "common/sim.glsl"
-#include "common/particle_trace.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
 layout(std430, binding = PF_SLOT_PARTICLE_VEL) buffer Vel { vec4 vel[]; };
 layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_vel[]; };
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+#include "common/particle_trace.glsl"
 
 #include "common/face_velocity.glsl"
 
@@ -34,7 +36,12 @@ void main() {
 #else
 #error PF_RK_ORDER must be 2 or 3
 #endif
-        x0 = trace_wall_clamp(x, walls);
+        bool whole = s == 0 && dt == remaining;  // a single sub-step: the one-clock move
+        WallsCrossed crossed = walls;
+        vec3 next = trace_wall_clamp(x, crossed);
+        if (!whole && in_solid_cell(next) && !in_solid_cell(x0)) break;
+        x0 = next;
+        walls = crossed;
         if (dt == remaining) break;
         remaining -= dt;
     }

@@ -432,11 +432,13 @@ void Simulation::run_advect() {
     const uint32_t np = particle_count_;
     const gl::ProgramId advect = particle_programs(desc_.params).advect;
     // Euler moves particles with their own (G2P) velocity, Runge-Kutta through the grid's.
+    // Both stop a move of several cells before an obstacle's SOLID cell (common/particle_trace.glsl).
+    const Bind cell_type{PF_SLOT_CELL_TYPE, &cell_type_};
     if (desc_.params.advection == PF_ADVECTION_EULER) {
-        r.run({advect, stat_.advect, np, {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}}});
+        r.run({advect, stat_.advect, np, {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, cell_type}});
     } else {
         r.run({advect, stat_.advect, np,
-               {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_}}});
+               {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_}, cell_type}});
     }
 }
 

@@ -3,10 +3,12 @@
 // obstacle's signed distance (central differences) to that margin outside, and the part of its
 // velocity relative to the obstacle's surface there (v + w x r) that points into it is removed
 // (free-slip): it leaves at least as fast as a moving obstacle's surface along the normal. Two rounds
-// resolve a particle pushed from one obstacle into another; the wall clamp follows. Where the
-// gradient leads out of the domain (an obstacle cut by a wall, the particle between its
-// nearest surface and the wall) the particle leaves along the axis direction with the shortest
-// way out that stays inside the domain instead (sphere-traced through the obstacle).
+// resolve a particle pushed from one obstacle into another; the wall clamp follows. A particle
+// inside that was outside a substep ago and moves towards its nearest surface came in through the
+// other side and leaves back along its motion instead (came_through). Where the gradient leads out of the domain (an obstacle
+// cut by a wall, the particle between its nearest surface and the wall) the particle leaves along
+// the axis direction with the shortest way out that stays inside the domain instead (sphere-traced
+// through the obstacle).
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
@@ -46,6 +48,25 @@ vec3 axis_exit(uint o, vec3 x, float margin, out vec3 n) {
     return out_x;
 }
 
+// A particle inside obstacle o that was outside a substep ago (going back along its motion
+// relative to the obstacle) and moves towards the surface nearest to it came in through the other
+// side: a thin obstacle or a fast particle put it past the middle. Pushed along the gradient it
+// would pass through (issue 41's jet against a slab one cell thick); it goes back along its
+// motion instead. Returns where it leaves that way, margin outside, or x itself when that is not
+// the case or the way back leaves the domain.
+vec3 came_through(uint o, vec3 x, float d, vec3 rel, vec3 n, float margin) {
+    float speed = length(rel);
+    if (d >= 0.0 || speed <= 0.0 || dot(rel, n) <= 0.0) return x;
+    if (obstacle_distance(o, x - sim.dt * rel) < 0.0) return x;  // overtaken inside, or started there
+    vec3 e = -rel / speed, p = x;
+    for (int s = 0; s < 32; ++s) {
+        float dp = obstacle_distance(o, p);
+        if (dp >= margin) break;
+        p += (margin - dp) * e;  // |dp| is the distance to the nearest surface: no further than it
+    }
+    return obstacle_distance(o, p) >= 0.0 && in_domain(p) ? p : x;
+}
+
 void main() {
     uint i = flat_id();
     if (i >= sim.particle_count) return;
@@ -71,7 +92,10 @@ void main() {
         }
         float len = length(grad);
         vec3 n = len > 0.0 ? grad / len : vec3(0.0, 1.0, 0.0);  // at a medial point: straight up
-        vec3 pushed = x + (margin - d) * n;
+        vec3 rel = v - obstacle_velocity(o, x);
+        vec3 back = came_through(o, x, d, rel, n, margin);
+        vec3 pushed = back != x ? back : x + (margin - d) * n;
+        if (back != x) n = -normalize(rel);
         x = in_domain(pushed) ? pushed : axis_exit(o, x, margin, n);
         float vn = dot(v - obstacle_velocity(o, x), n);
         if (vn < 0.0) v -= vn * n;
