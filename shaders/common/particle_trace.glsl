@@ -14,7 +14,8 @@ const float kTraceCells = 1.0;
 // Sub-steps a particle takes at most (a bound on the loop, far above any CFL the API allows).
 const int kMaxTraceSubsteps = 64;
 
-// The walls a trace crossed in any of its sub-steps (the velocity stops into each at the end).
+// The walls a trace crossed in any of its sub-steps (the velocity stops into each at the end:
+// common/sim.glsl's stopped_at_walls).
 struct WallsCrossed {
     bvec3 low, high;
 };
@@ -33,12 +34,6 @@ vec3 trace_wall_clamp(vec3 x, inout WallsCrossed walls) {
 bool in_solid_cell(vec3 x) {
     ivec3 c = clamp(ivec3(floor(grid_coord(x))), ivec3(0), sim.grid.xyz - 1);
     return PF_CELL_KIND(cell_type[cell_index(c)]) == PF_CELL_SOLID;
-}
-
-// wall_stopped_velocity for the walls of a whole trace.
-vec3 trace_stopped_velocity(WallsCrossed walls, vec3 v) {
-    v = mix(v, max(v, vec3(0.0)), walls.low);
-    return mix(v, min(v, vec3(0.0)), walls.high);
 }
 
 // The length of the next sub-step at speed `speed` with `remaining` seconds of the substep left:

@@ -113,12 +113,17 @@ vec3 keep_in_domain(vec3 x) {
     return mix(x, sim.origin.xyz + kept * sim.dx, notEqual(g, kept));
 }
 
+// v without its motion into the walls marked crossed (low: towards -axis, high: towards +axis).
+vec3 stopped_at_walls(bvec3 low, bvec3 high, vec3 v) {
+    v = mix(v, max(v, vec3(0.0)), low);
+    return mix(v, min(v, vec3(0.0)), high);
+}
+
 // The velocity a particle keeps after keep_in_domain returned it from beyond a wall: the wall
 // stops its motion into that wall. Kept, that motion would press the particle back every
 // substep, and a particle the pressure does not hold (one alone on the floor) would gain
 // gravity's speed for ever while the wall returns it to the same place.
 vec3 wall_stopped_velocity(vec3 x, vec3 v) {
     vec3 g = grid_coord(x);
-    v = mix(v, max(v, vec3(0.0)), beyond_low_wall(g));
-    return mix(v, min(v, vec3(0.0)), beyond_high_wall(g));
+    return stopped_at_walls(beyond_low_wall(g), beyond_high_wall(g), v);
 }

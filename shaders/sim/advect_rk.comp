@@ -46,5 +46,5 @@ void main() {
         remaining -= dt;
     }
     pos[i] = vec4(x0, 0.0);
-    vel[i].xyz = trace_stopped_velocity(walls, vel[i].xyz);
+    vel[i].xyz = stopped_at_walls(walls.low, walls.high, vel[i].xyz);
 }

@@ -5,10 +5,10 @@
 // (free-slip): it leaves at least as fast as a moving obstacle's surface along the normal. Two rounds
 // resolve a particle pushed from one obstacle into another; the wall clamp follows. A particle
 // inside that was outside a substep ago and moves towards its nearest surface came in through the
-// other side and leaves back along its motion instead (came_through). Where the gradient leads out of the domain (an obstacle
-// cut by a wall, the particle between its nearest surface and the wall) the particle leaves along
-// the axis direction with the shortest way out that stays inside the domain instead (sphere-traced
-// through the obstacle).
+// other side and leaves back along its motion instead (came_through). Where the gradient leads
+// out of the domain (an obstacle cut by a wall, the particle between its nearest surface and the
+// wall) the particle leaves along the axis direction with the shortest way out that stays inside
+// the domain instead (sphere-traced through the obstacle).
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
