@@ -65,6 +65,8 @@ protected:
         }
         sim.write_grid_for_test(GridBuffer::face_vel, words);
         sim.write_grid_for_test(GridBuffer::face_vel_old, words);
+        // No obstacle: every cell AIR (the trace stops before SOLID ones; nothing classified them).
+        sim.write_grid_for_test(GridBuffer::cell_type, std::vector<uint32_t>(size_t(grid.cells()), 0u));
 
         std::mt19937 rng(7);
         std::uniform_real_distribution<float> u01(0.0f, 1.0f);
