@@ -1,4 +1,4 @@
-// Nothing tunnels at one projection a frame (issue 41): a jet at 8 m/s crosses 6.7 cells of 2 cm
+// Nothing tunnels at one projection a frame: a jet at 8 m/s crosses 6.7 cells of 2 cm
 // in a 1/60 s frame, traced in sub-steps of at most a cell. Against an obstacle one cell thick no
 // particle may end inside it or beyond it, and against each of the six walls none may leave the
 // domain; with Euler (the particle's own velocity) and RK2 (the grid's). A single move of

@@ -51,9 +51,9 @@ vec3 axis_exit(uint o, vec3 x, float margin, out vec3 n) {
 // A particle inside obstacle o that was outside a substep ago (going back along its motion
 // relative to the obstacle) and moves towards the surface nearest to it came in through the other
 // side: a thin obstacle or a fast particle put it past the middle. Pushed along the gradient it
-// would pass through (issue 41's jet against a slab one cell thick); it goes back along its
-// motion instead. Returns where it leaves that way, margin outside, or x itself when that is not
-// the case or the way back leaves the domain.
+// would pass through (tests/engine/test_tunnelling.cpp: a jet against a slab one cell thick); it
+// goes back along its motion instead. Returns where it leaves that way, margin outside, or x
+// itself when that is not the case or the way back leaves the domain.
 vec3 came_through(uint o, vec3 x, float d, vec3 rel, vec3 n, float margin) {
     float speed = length(rel);
     if (d >= 0.0 || speed <= 0.0 || dot(rel, n) <= 0.0) return x;
