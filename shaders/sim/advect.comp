@@ -20,13 +20,17 @@ void main() {
     vec3 x0 = pos[i].xyz;
     vec3 x = x0 + sim.dt * v;
     int n = int(clamp(ceil(length(v) * sim.dt / (kTraceCells * sim.dx)), 1.0, float(kMaxTraceSubsteps)));
+    vec3 before = x0;
+    bool was_solid = n > 1 && in_solid_cell(x0);
     for (int s = 1; n > 1 && s <= n; ++s) {
-        vec3 before = x0 + (float(s - 1) / float(n) * sim.dt) * v;
         vec3 after = s == n ? x : x0 + (float(s) / float(n) * sim.dt) * v;
-        if (in_solid_cell(keep_in_domain(after)) && !in_solid_cell(keep_in_domain(before))) {
+        bool solid = in_solid_cell(keep_in_domain(after));
+        if (solid && !was_solid) {
             x = before;
             break;
         }
+        before = after;
+        was_solid = solid;
     }
     pos[i] = vec4(keep_in_domain(x), 0.0);
     vel[i].xyz = wall_stopped_velocity(x, v);

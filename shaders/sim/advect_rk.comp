@@ -24,6 +24,7 @@ void main() {
     vec3 x0 = pos[i].xyz;
     WallsCrossed walls = no_walls_crossed();
     float remaining = sim.dt;
+    bool was_solid = false;  // read before the second sub-step: a single one never looks
     for (int s = 0; s < kMaxTraceSubsteps; ++s) {
         vec3 k1 = sample_velocity(x0);
         float dt = trace_substep(length(k1), remaining, s);
@@ -39,7 +40,12 @@ void main() {
         bool whole = s == 0 && dt == remaining;  // a single sub-step: the one-clock move
         WallsCrossed crossed = walls;
         vec3 next = trace_wall_clamp(x, crossed);
-        if (!whole && in_solid_cell(next) && !in_solid_cell(x0)) break;
+        if (!whole) {
+            if (s == 0) was_solid = in_solid_cell(x0);
+            bool solid = in_solid_cell(next);
+            if (solid && !was_solid) break;
+            was_solid = solid;
+        }
         x0 = next;
         walls = crossed;
         if (dt == remaining) break;

@@ -468,8 +468,7 @@ ProjectionCount Simulation::substeps_for(float frame_dt) const {
         const CflBound bound = effects_[i]->cfl_bound(v_max);
         accel += bound.acceleration;
         demand.imposed_speed = std::max(demand.imposed_speed, bound.speed);
-        if (bound.max_dt > 0.0f && (demand.longest_dt == 0.0f || bound.max_dt < demand.longest_dt))
-            demand.longest_dt = bound.max_dt;
+        if (bound.max_dt > 0.0f && (demand.max_dt == 0.0f || bound.max_dt < demand.max_dt)) demand.max_dt = bound.max_dt;
     }
     demand.acceleration = accel;
     return projections_for(demand);

@@ -1,8 +1,8 @@
 // The step's two clocks (docs/design.md §5). A pf_step of frame_dt takes a number of substeps,
 // each one pressure projection (P2G ... solve ... G2P), from the projection CFL (params.cfl) and
 // the limits effects declare; inside each substep's advection every particle is traced in
-// sub-steps of at most params.trace_cfl cells (shaders/common/particle_trace.glsl), so the
-// projections can be few while no particle jumps over a wall. Pure functions of their inputs:
+// sub-steps of at most one cell (shaders/common/particle_trace.glsl), so the projections can be
+// few while no particle jumps over a wall or an obstacle. Pure functions of their inputs:
 // tests drive them without a GL context.
 #pragma once
 #include <cstdint>
@@ -20,7 +20,7 @@ struct ProjectionDemand {
     float speed = 0.0f;           // fastest particle at the frame's start (the previous step's readback)
     float acceleration = 0.0f;    // largest acceleration, m/s^2: gravity and the effects'
     float imposed_speed = 0.0f;   // a speed effects impose whatever was measured
-    float longest_dt = 0.0f;      // the shortest of the effects' stable substep lengths (0: no limit)
+    float max_dt = 0.0f;          // the longest substep every effect stays stable at (0: no limit)
 };
 
 struct ProjectionCount {

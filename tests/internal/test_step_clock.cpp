@@ -37,7 +37,7 @@ TEST(StepClock, TheCapClampsAndSaysSo) {
 
 TEST(StepClock, EffectsLimitsAndImposedSpeedsCount) {
     ProjectionDemand d = demand(0.0f, 8.0f, 16);
-    d.longest_dt = 1.0f / 200.0f;  // a capillary limit: 4 projections in a 1/60 s frame
+    d.max_dt = 1.0f / 200.0f;  // a capillary limit: 4 projections in a 1/60 s frame
     EXPECT_EQ(projections_for(d).count, 4u);
     d = demand(0.0f, 1.0f, 16);
     d.imposed_speed = 5.9f;  // a wind: 9.8 cells a frame
