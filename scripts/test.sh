@@ -3,6 +3,11 @@
 # surfaceless when there is no GPU, plus glslangValidator on every shader permutation), then
 # the sanitizer stage (ASan + UBSan build in build-asan/) and the scene-loader libFuzzer stage
 # (clang, build-fuzz/). Arguments go to the first ctest run only.
+#
+# `scripts/test.sh --quick` is the contributors' loop: it builds only the library, the internal
+# tests and the shader tooling, and runs the tests labelled "core" (every GPU pass against the
+# double-precision CPU reference, glslangValidator on every shader permutation, the export
+# check), in a few minutes; the full suite above is what CI runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # ctest runs one test per core, so llvmpipe gets one thread per test instead of one per core
@@ -13,6 +18,11 @@ stage() {  # runs one stage and says how long it took (CI time is budgeted per s
   "$@"
   echo "test.sh: stage '$*' took $((SECONDS - start)) s"
 }
+if [ "${1:-}" = --quick ]; then
+  shift
+  scripts/build.sh --target pflip --target pf_internal_tests --target pf_shader_dump
+  cd build && exec ctest -L core --output-on-failure -j"$(nproc)" "$@"
+fi
 main_tree() { scripts/build.sh && (cd build && ctest --output-on-failure -j"$(nproc)" "$@"); }
 stage main_tree "$@"
 stage scripts/test_sanitizers.sh
