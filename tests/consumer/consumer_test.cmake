@@ -4,6 +4,8 @@
 #                 pflip_consumer (shared) and pflip_consumer_static
 #   pkg_config    cc consumer.c $(pkg-config --cflags --libs pflip egl) against PREFIX; runs it
 #   subdirectory  tests/consumer as a project with add_subdirectory(SOURCE_DIR); runs it
+#   snippets      every C and find_package block of README.md and docs/integration.md, as
+#                 written (tests/consumer/snippets.py), compiled against PREFIX
 # Every step fails the test on a non-zero exit status. Arguments: -DMODE= -DSOURCE_DIR=
 # -DBUILD_DIR= -DPREFIX= -DWORK= -DGENERATOR= -DC_COMPILER= -DPYTHON= -DVERSION=
 set(here "${CMAKE_CURRENT_LIST_DIR}")
@@ -50,6 +52,28 @@ elseif(MODE STREQUAL "subdirectory")
   build_consumer(-DPF_CONSUMER_MODE=subdirectory "-DPFLIP_SOURCE_DIR=${SOURCE_DIR}"
                  "-DPython3_EXECUTABLE=${PYTHON}")
   run("${WORK}/${MODE}/pflip_consumer")
+elseif(MODE STREQUAL "snippets")
+  set(dir "${WORK}/${MODE}")
+  file(REMOVE_RECURSE "${dir}")
+  execute_process(COMMAND "${PYTHON}" "${here}/snippets.py" "${dir}" README.md docs/integration.md
+                  WORKING_DIRECTORY "${SOURCE_DIR}" OUTPUT_VARIABLE written OUTPUT_STRIP_TRAILING_WHITESPACE
+                  COMMAND_ERROR_IS_FATAL ANY)
+  string(REPLACE "\n" ";" written "${written}")
+  list(LENGTH written count)
+  if(count LESS 3)
+    message(FATAL_ERROR "snippets.py found ${count} snippets, expected the README's and integration.md's")
+  endif()
+  foreach(snippet IN LISTS written)
+    if(snippet MATCHES "[.]c$")
+      # Strict C99 as an engine's C code may be; a call to something pf.h does not declare fails.
+      run("${C_COMPILER}" -std=c99 -pedantic-errors -Wall -Werror -c "${snippet}" -o "${snippet}.o"
+          "-I${PREFIX}/include")
+    else()
+      run(${CMAKE_COMMAND} -S "${snippet}" -B "${snippet}/build" -G "${GENERATOR}" "-DCMAKE_C_COMPILER=${C_COMPILER}"
+          -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF "-DCMAKE_PREFIX_PATH=${PREFIX}")
+      run(${CMAKE_COMMAND} --build "${snippet}/build")
+    endif()
+  endforeach()
 else()
-  message(FATAL_ERROR "MODE: expected install, find_package, pkg_config or subdirectory, got '${MODE}'")
+  message(FATAL_ERROR "MODE: expected install, find_package, pkg_config, subdirectory or snippets, got '${MODE}'")
 endif()
