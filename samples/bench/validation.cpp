@@ -254,6 +254,7 @@ struct Run {
     uint32_t frames = 0, particles = 0, flags = 0;
     double wall_s = 0, substeps = 0;
     pf_advection advection = PF_ADVECTION_EULER;  // the integrator the run used
+    float flip_ratio = 0.95f;                      // and its PIC/FLIP blend
     std::vector<double> t;                  // s, one per measurement (frame 0 is the initial state)
     std::map<std::string, std::vector<double>> measured;  // per quantity, m
     std::vector<Comparison> comparisons;    // one per series
@@ -278,7 +279,7 @@ double value_in(const Case& c, const std::string& var, double v, double scale) {
 double max_shift_in(const std::string& var) { return var == "t_s" ? 0.25 : 1.0; }
 
 Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, float cfl, const pf_advection* advection,
-             bool verbose) {
+             const float* flip_ratio, bool verbose) {
     Run r;
     pf_sim_desc desc = pf_default_sim_desc();
     desc.gl_get_proc_address = pfs::get_proc;
@@ -288,7 +289,9 @@ Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, fl
     desc.params.max_substeps = 64;
     if (cfl > 0) desc.params.cfl = cfl;
     if (advection) desc.params.advection = *advection;
+    if (flip_ratio) desc.params.flip_ratio = *flip_ratio;
     r.advection = desc.params.advection;
+    r.flip_ratio = desc.params.flip_ratio;
 
     // The experiment's last data time (s, at this scale) and the frames to cover it, plus room for
     // the alignment shift.
@@ -389,6 +392,7 @@ int run(int argc, char** argv) {
     double scale = 1.0;
     float cfl = 0.0f;
     pf_advection advection = PF_ADVECTION_EULER;
+    float flip_ratio = 0.95f;
     std::vector<pf_quality> presets;
     std::vector<std::string> case_names;
     std::string json_path, data_path = PF_VALIDATION_DATA;
@@ -411,6 +415,9 @@ int run(int argc, char** argv) {
         app.add_option("--advection", advection, "override the presets' particle integrator")
             ->transform(pfs::NameMap(pfs::enum_choices(pfs::advection_name, PF_ADVECTION_COUNT), "advection"))
             ->type_name("NAME");
+    const CLI::Option* flip_given =
+        app.add_option("--flip-ratio", flip_ratio, "override the presets' PIC/FLIP blend (0 = PIC, 1 = FLIP)")
+            ->check(CLI::Range(0.0f, 1.0f));
     app.add_flag("--verbose", verbose, "pflip's info messages");
     try {
         app.parse(argc, argv);
@@ -438,7 +445,8 @@ int run(int argc, char** argv) {
     for (const Case& c : cases) {
         for (const pf_quality quality : presets) {
             const std::string pname = pfs::choice_name(pfs::preset_choices(), quality);
-            const Run r = run_case(c, quality, cells, scale, cfl, advection_given->count() ? &advection : nullptr, verbose);
+            const Run r = run_case(c, quality, cells, scale, cfl, advection_given->count() ? &advection : nullptr,
+                                   flip_given->count() ? &flip_ratio : nullptr, verbose);
             std::printf("\n%s / %s: grid %ux%ux%u, dx %.4g m, %u particles, %u frames, %.2f substeps/frame, %.1f s, flags 0x%x\n",
                         c.name.c_str(), pname.c_str(), r.grid.x, r.grid.y, r.grid.z, r.dx, r.particles, r.frames,
                         r.substeps, r.wall_s, r.flags);
@@ -451,6 +459,7 @@ int run(int argc, char** argv) {
             row["scale"] = scale;
             row["cfl"] = cfl > 0 ? double(cfl) : 1.0;  // every preset's is 1
             row["advection"] = pfs::advection_name(r.advection);
+            row["flip_ratio"] = r.flip_ratio;
             row["grid"] = {r.grid.x, r.grid.y, r.grid.z};
             row["cell_size_m"] = r.dx;
             row["particles"] = r.particles;
