@@ -9,7 +9,7 @@ rm -rf build-dev && mkdir -p build-dev
 # The binaries load libpflip by its SONAME (cmake/version.cmake: libpflip.so.0.<minor> before 1.0).
 soname=$(readelf -d build/libpflip.so | sed -n 's/.*(SONAME).*\[\(.*\)\]/\1/p')
 cp -L "build/libpflip.so" "build-dev/$soname"
-for t in samples/pf_bench samples/pf_render_bench samples/pf_surface_bench samples/pf_headless samples/pf_vdb_check \
+for t in samples/pf_bench samples/pf_render_bench samples/pf_surface_bench samples/pf_headless samples/pf_vdb_check samples/pf_load_time \
          samples/pf_accuracy samples/pf_validation tests/pf_internal_tests tests/pf_engine_tests \
          tests/pf_stability_tests; do
   [ -f "build/$t" ] && cp "build/$t" build-dev/

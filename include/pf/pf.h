@@ -108,6 +108,22 @@ typedef void (*pf_gl_proc)(void);
 /** The engine's GL loader: returns the entry point called name, or NULL. */
 typedef pf_gl_proc (*pf_gl_get_proc_address_fn)(const char* name);
 
+/** Program-cache load callback: copies the blob stored under key into data (capacity bytes) and
+ *  returns its size; 0: no blob. A size above capacity means nothing was copied: pflip calls again
+ *  with a buffer of that size. */
+typedef size_t (*pf_program_load_fn)(void* user, const char* key, void* data, size_t capacity);
+/** Program-cache store callback: keep size bytes of data under key (replacing any blob there). */
+typedef void (*pf_program_store_fn)(void* user, const char* key, const void* data, size_t size);
+
+/** A program-binary cache the engine keeps (docs/integration.md "Program-binary cache"): pflip
+ *  loads each shader program's driver binary before compiling it and stores what it compiles.
+ *  Blobs are checked before use and rebuilt when stale or damaged. Both callbacks NULL: no cache. */
+typedef struct pf_program_cache {
+    void* user;                   /**< passed back to load and store unchanged */
+    pf_program_load_fn load;      /**< optional: fetch a blob by key (NULL: nothing is loaded) */
+    pf_program_store_fn store;    /**< optional: keep a blob by key (NULL: nothing is stored) */
+} pf_program_cache;
+
 /** @} */
 
 /** @addtogroup pf_simulation
@@ -206,7 +222,7 @@ typedef struct pf_sim_params {
     uint32_t separation;          /**< 1: pressure is kept >= 0 (Gerszewski & Bargteil 2013), so liquid can
                                        pull away from walls and the lid instead of clinging to them by
                                        suction; 0: pressure of either sign (the original). 0 or 1; default 0
-                                       (the fast and accurate presets set 1). A closed domain full of liquid
+                                       (the accurate preset sets 1). A closed domain full of liquid
                                        (no AIR cell) has nothing to separate into and a pressure defined only
                                        up to a constant: there no sign is imposed (docs/design.md §4.6) */
     pf_pressure_solver pressure_solver; /**< which solver; default PF_PRESSURE_SOLVER_MGPCG (0, which is
@@ -261,8 +277,8 @@ typedef enum pf_quality {
 } pf_quality;
 
 /** Effects a scene may call for (pf_sim_desc.features, pf_set_features). An effect that is off
- *  builds no shader program and dispatches no pass; its objects (force fields, obstacles) may
- *  still be added and edited, and act once it is turned on. */
+ *  builds no shader program (unless named in pf_sim_desc.prepared_features) and dispatches no pass;
+ *  its objects (force fields, obstacles) may still be added and edited, and act once it is turned on. */
 enum {
     PF_FEATURE_FORCE_FIELDS = 1u << 0, /**< pf_add_force_field: wind, attractors/repulsors, vortices
                                             (one grid pass per substep after gravity) */
@@ -326,6 +342,12 @@ typedef struct pf_sim_desc {
     pf_logger logger;             /**< optional message sink */
     uint32_t features;            /**< effects to simulate, a set of PF_FEATURE_* bits; default 0 (none:
                                        the core step only). pf_set_features changes it later */
+    pf_program_cache program_cache; /**< optional program-binary cache, called during the calls that build
+                                         programs (pf_create, pf_set_features, pf_set_params, pf_push,
+                                         pf_restore_snapshot, the first render calls) on their thread;
+                                         default none */
+    uint32_t prepared_features;   /**< PF_FEATURE_* bits whose programs pf_create builds while the effects
+                                       stay off, so turning them on later compiles nothing; default 0 */
 } pf_sim_desc;
 
 /** Opaque simulation handle. Several may live in one GL context. */
@@ -739,8 +761,9 @@ PF_API pf_result pf_restore_snapshot(pf_sim* sim, const void* buffer, size_t siz
 
 /* ---- effects (docs/design.md §9) --------------------------------------------------------------- */
 
-/** Turns effects on or off (a set of PF_FEATURE_* bits). Builds only the programs and buffers of
- *  effects turned on for the first time; particles and every other state are kept.
+/** Turns effects on or off (a set of PF_FEATURE_* bits). Builds only the programs (none for
+ *  pf_sim_desc.prepared_features) and buffers of effects turned on for the first time; particles
+ *  and every other state are kept.
  *  PF_ERROR_INVALID_ARGUMENT for unknown bits; on any error nothing changes. */
 PF_API pf_result pf_set_features(pf_sim* sim, uint32_t features);
 /** The PF_FEATURE_* bits currently on. */

@@ -16,7 +16,7 @@ from . import _types as t
 
 # The ABI this package mirrors: before 1.0 a minor release may change structs (the soname carries
 # the minor), so the library's major.minor must equal this.
-ABI_VERSION = (0, 2)
+ABI_VERSION = (0, 3)
 SONAME = "libpflip.so.%d.%d" % ABI_VERSION
 
 

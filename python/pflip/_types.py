@@ -229,6 +229,13 @@ class Logger(_Struct):
     _fields_ = [("fn", LogFn), ("user", ctypes.c_void_p)]
 
 
+class ProgramCache(_Struct):
+    """pf_program_cache: the callbacks stay NULL from Python (no program-binary cache); mirrored so
+    SimDesc's layout matches pf.h."""
+
+    _fields_ = [("user", ctypes.c_void_p), ("load", ctypes.c_void_p), ("store", ctypes.c_void_p)]
+
+
 def _lib():
     from . import _lib as lib_module  # late: _lib imports this module for the prototypes
     return lib_module.lib
@@ -304,6 +311,8 @@ class SimDesc(_Struct):
         ("gl_get_proc_address", GetProcAddressFn),
         ("logger", Logger),
         ("features", ctypes.c_uint32),
+        ("program_cache", ProgramCache),  # callbacks NULL from Python: no program-binary cache
+        ("prepared_features", ctypes.c_uint32),
     ]
 
 
@@ -684,6 +693,7 @@ class SurfaceTension(_Struct):
 # C name of each mirrored struct, for the layout test.
 C_NAMES = {
     Logger: "pf_logger",
+    ProgramCache: "pf_program_cache",
     SimParams: "pf_sim_params",
     SimDesc: "pf_sim_desc",
     Stats: "pf_stats",

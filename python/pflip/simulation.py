@@ -112,7 +112,8 @@ class Simulation:
     """A pflip simulation in the GL context current now (pf_create).
 
     desc: a SimDesc (default: SimDesc.default()); keyword arguments set its fields, e.g.
-    Simulation(grid_size=(64, 32, 32), cell_size=0.05, max_particles=1 << 18).
+    Simulation(grid_size=(64, 32, 32), cell_size=0.05, max_particles=1 << 18, prepared_features=Feature.ALL).
+    The program-binary cache (SimDesc.program_cache) is C callbacks and stays NULL from Python.
     get_proc_address: the GL loader, a GetProcAddressFn or a Python callable name(bytes) -> int
     (default: libEGL's eglGetProcAddress, right for moderngl's 'egl' backend).
     log: optional callable(level: LogLevel, code: Result, message: str); every message also goes
@@ -125,7 +126,8 @@ class Simulation:
         self._user_log = log
         d = t.SimDesc.default() if desc is None else t.SimDesc.from_buffer_copy(desc)
         for name, value in fields.items():
-            if name not in dict(t.SimDesc._fields_) or name in ("gl_get_proc_address", "logger"):
+            # program_cache holds C callbacks: it stays NULL from Python (no program-binary cache).
+            if name not in dict(t.SimDesc._fields_) or name in ("gl_get_proc_address", "logger", "program_cache"):
                 raise TypeError(f"Simulation: no descriptor field {name!r}")
             setattr(d, name, value)
         if get_proc_address is None:

@@ -112,6 +112,7 @@ pf_result validate_desc(const pf_sim_desc& d, const Log& log) {
         return bad("desc.fill_particles_per_cell must be 1, 8, 27 or 64, got " + std::to_string(ppc));
     if (!(d.fill_jitter >= 0.0f && d.fill_jitter <= 1.0f)) return bad("desc.fill_jitter must be in [0, 1], got " + number_string(d.fill_jitter));
     if (pf_result r = validate_features(d.features, log, "pf_create"); r != PF_OK) return r;
+    if (pf_result r = validate_features(d.prepared_features, log, "pf_create: desc.prepared_features"); r != PF_OK) return r;
     return validate_params(d.params, log, "pf_create");
 }
 

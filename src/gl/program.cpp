@@ -1,6 +1,7 @@
 #include "gl/program.h"
 
 #include "gl/debug.h"
+#include "gl/program_binary_cache.h"
 
 namespace pf::gl {
 
@@ -43,7 +44,7 @@ std::vector<ShaderStage> program_stages(const ProgramInfo& info) {
 }
 
 GLuint build_program(const Api& gl, const std::vector<ShaderStage>& stages, const std::string& name,
-                     std::string& error) {
+                     std::string& error, bool retrievable) {
     for (const ShaderStage& s : stages) {
         if (!s.source.error.empty()) {
             error = name + ": " + s.source.error;
@@ -71,6 +72,7 @@ GLuint build_program(const Api& gl, const std::vector<ShaderStage>& stages, cons
     }
     GLuint program = gl.CreateProgram();
     for (GLuint sh : shaders) gl.AttachShader(program, sh);
+    if (retrievable) gl.ProgramParameteri(program, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
     gl.LinkProgram(program);
     for (GLuint sh : shaders) gl.DetachShader(program, sh);
     release();
@@ -95,7 +97,11 @@ GLuint ProgramCache::get(ProgramId id, std::string& error) {
     GLuint& slot = programs_[static_cast<size_t>(id)];
     if (slot) return slot;
     const ProgramInfo& info = program_info(id);
-    slot = build_program(gl_, program_stages(info), info.id, error);
+    if (binaries_ && binaries_->active()) {
+        slot = binaries_->get_or_build(program_stages(info), info.id, error);
+    } else {
+        slot = build_program(gl_, program_stages(info), info.id, error);
+    }
     label_object(gl_, GL_PROGRAM, slot, info.id);
     return slot;
 }

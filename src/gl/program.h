@@ -18,15 +18,19 @@ struct ShaderStage {
 };
 
 // Compiles every stage and links them into one program. On failure returns 0 and fills
-// `error` with the annotated compile/link log.
+// `error` with the annotated compile/link log. `retrievable`: the program's binary will be
+// read back (GL_PROGRAM_BINARY_RETRIEVABLE_HINT, set before linking).
 GLuint build_program(const Api& gl, const std::vector<ShaderStage>& stages, const std::string& name,
-                     std::string& error);
+                     std::string& error, bool retrievable = false);
 // The stages of one permutations.inc line, expanded with its #defines.
 std::vector<ShaderStage> program_stages(const ProgramInfo& info);
 
+class ProgramBinaryCache;
+
 class ProgramCache {
 public:
-    explicit ProgramCache(const Api& gl) : gl_(gl) {}
+    // `binaries`: the engine's program-binary cache (may be null or inactive), which outlives this.
+    explicit ProgramCache(const Api& gl, ProgramBinaryCache* binaries = nullptr) : gl_(gl), binaries_(binaries) {}
     ~ProgramCache();
     ProgramCache(const ProgramCache&) = delete;
     ProgramCache& operator=(const ProgramCache&) = delete;
@@ -44,6 +48,7 @@ public:
 
 private:
     const Api& gl_;
+    ProgramBinaryCache* binaries_;
     std::array<GLuint, static_cast<size_t>(ProgramId::count)> programs_{};
 };
 

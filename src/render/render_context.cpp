@@ -14,7 +14,8 @@ namespace {
 int ceil_div(int a, int b) { return (a + b - 1) / b; }
 }  // namespace
 
-RenderContext::RenderContext(const Simulation& sim) : sim_(sim), gl_(sim.api()), programs_(gl_), timers_(gl_) {}
+RenderContext::RenderContext(const Simulation& sim)
+    : sim_(sim), gl_(sim.api()), programs_(gl_, sim.program_binaries()), timers_(gl_) {}
 
 const Log& RenderContext::log() const { return sim_.log(); }
 

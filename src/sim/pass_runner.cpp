@@ -8,8 +8,9 @@
 
 namespace pf {
 
-PassRunner::PassRunner(const gl::Api& gl, const Log& log, const gl::Buffer& uniforms, GLuint uniform_slot)
-    : gl_(gl), log_(log), uniforms_(uniforms), uniform_slot_(uniform_slot), programs_(gl), timers_(gl),
+PassRunner::PassRunner(const gl::Api& gl, const Log& log, const gl::Buffer& uniforms, GLuint uniform_slot,
+                       gl::ProgramBinaryCache* binaries)
+    : gl_(gl), log_(log), uniforms_(uniforms), uniform_slot_(uniform_slot), programs_(gl, binaries), timers_(gl),
       used_slots_(size_t(gl::ProgramId::count), 0u), used_uniforms_(size_t(gl::ProgramId::count), 0u),
       reported_(size_t(gl::ProgramId::count), false) {
     gl_.GetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &max_groups_x_);

@@ -38,7 +38,9 @@ public:
         std::string debug_group;  // "pflip/<name>": the KHR_debug group of its dispatches
     };
 
-    PassRunner(const gl::Api& gl, const Log& log, const gl::Buffer& uniforms, GLuint uniform_slot);
+    // `binaries`: the engine's program-binary cache its programs go through (may be null).
+    PassRunner(const gl::Api& gl, const Log& log, const gl::Buffer& uniforms, GLuint uniform_slot,
+               gl::ProgramBinaryCache* binaries = nullptr);
 
     // Adds an entry to the statistics list (or returns the existing one of that name).
     StatId add_stat(const std::string& name, pf_pass group);

@@ -112,7 +112,8 @@ pf_result Simulation::init() {
     count_record_ = gl::Buffer(gl_, PF_COUNT_WORDS * 4, GL_DYNAMIC_COPY, "count_record");
     status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY, "status");
     readback_.init(gl_, PF_STATUS_WORDS * 4, "status_readback");
-    runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM);
+    binaries_ = std::make_unique<gl::ProgramBinaryCache>(gl_, desc_.program_cache, log_);
+    runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM, binaries_.get());
     requests_ = std::make_unique<ParticleReadback>(gl_);
     const uint64_t metric_items = std::max<uint64_t>(uint64_t(cells_), desc_.max_particles);
     metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 32, GL_DYNAMIC_COPY,
@@ -152,6 +153,13 @@ pf_result Simulation::init() {
     if (std::string error = volume_correction_.init(gl_, r, uint32_t(cells_)); !error.empty())
         return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
     if (pf_result res = set_features(requested_features_, "pf_create"); res != PF_OK) return res;
+    if (pf_result res = prepare_features(desc_.prepared_features, "pf_create"); res != PF_OK) return res;
+    if (binaries_->active()) {
+        const gl::ProgramBinaryCache::Counts& c = binaries_->counts();
+        log_.info("pf_create: program cache: " + std::to_string(c.loaded) + " programs loaded, " +
+                  std::to_string(c.compiled) + " compiled (" + std::to_string(c.rejected) + " blobs rejected), " +
+                  std::to_string(c.stored) + " stored");
+    }
     // Pressure starts at zero (warm start of the first solve); everything else is written
     // before it is read.
     runner_->fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
@@ -906,6 +914,19 @@ pf_result Simulation::set_params(const pf_sim_params& params) {
     warn_about_free_surface(params, "pf_set_params");
     for (auto& effect : effects_) effect->params_changed(params);
     restart_energy_reference();  // gravity may have changed: the old total is not comparable
+    return PF_OK;
+}
+
+pf_result Simulation::prepare_features(uint32_t features, const char* fn) {
+    // Programs only: the effects' buffers and statistics entries wait for pf_set_features (init),
+    // which then finds the programs built.
+    for (uint32_t i = 0; i < kEffectCount; ++i) {
+        if (!(features & (1u << i))) continue;
+        for (ProgramId id : effects_[i]->programs()) {
+            if (std::string error = runner_->prepare(id); !error.empty())
+                return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+        }
+    }
     return PF_OK;
 }
 

@@ -13,6 +13,7 @@
 #include "gl/buffer.h"
 #include "gl/gl.h"
 #include "gl/program.h"
+#include "gl/program_binary_cache.h"
 #include "gl/readback_ring.h"
 #include "gl/state_guard.h"
 #include "pf/pf.h"
@@ -47,6 +48,9 @@ public:
     pf_result push(const float center[3], float radius, const float dv[3]);
     pf_result step(float frame_dt);
     pf_result set_params(const pf_sim_params& params);
+    // pf_sim_desc.prepared_features: builds the programs of those effects (nothing else), so that
+    // turning them on later compiles nothing.
+    pf_result prepare_features(uint32_t features, const char* fn);
     // pf_set_features: initialises the effects turned on for the first time (all or nothing).
     pf_result set_features(uint32_t features, const char* fn);
     uint32_t features() const { return desc_.features; }
@@ -103,6 +107,9 @@ public:
     const pf_sim_params& params() const { return desc_.params; }
     const Log& log() const { return log_; }
     const gl::Api& api() const { return gl_; }
+    // The engine's program-binary cache (pf_sim_desc.program_cache), which the renderer's programs
+    // go through too; inactive without callbacks.
+    gl::ProgramBinaryCache* program_binaries() const { return binaries_.get(); }
     // How a gl::StateGuard of this simulation's context saves state (what the context supports).
     const gl::StateGuard::Options& gl_state_options() const { return gl_state_; }
     // Particle slots in use: the live count, or while the GPU keeps the count (emitters or sinks
@@ -266,6 +273,7 @@ private:
     pf_sim_desc desc_;
     Log log_;
     gl::Buffer uniforms_;
+    std::unique_ptr<gl::ProgramBinaryCache> binaries_;  // before runner_: its programs use it
     std::unique_ptr<PassRunner> runner_;
     CoreStats stat_{};
     std::unique_ptr<PressureSolver> solvers_[PF_PRESSURE_SOLVER_COUNT];

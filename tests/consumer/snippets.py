@@ -29,6 +29,9 @@ extern void* my_engine;
 void draw_world(uint32_t framebuffer);
 extern uint32_t engine_fbo, engine_color_tex, engine_depth_tex, sky_cubemap;
 extern float frame_dt;
+size_t my_load(void* user, const char* key, void* data, size_t capacity);
+void my_store(void* user, const char* key, const void* data, size_t size);
+extern void* my_blob_store;
 """
 
 CMAKE_PRELUDE = """\

@@ -82,6 +82,9 @@ struct Poisoned {
     std::vector<uint8_t> bytes;
 };
 
+// sizeof(pf_sim_desc) before program_cache was appended (pflip 0.2 with features).
+constexpr size_t kSimDescBeforeProgramCache = 176;
+
 class Abi : public RenderTest {};
 
 TEST_F(Abi, OlderParamsWithoutTheirLastFieldTakeItsDefault) {
@@ -106,6 +109,25 @@ TEST_F(Abi, OlderParamsWithoutTheirLastFieldTakeItsDefault) {
     EXPECT_EQ(o->struct_size, uint32_t(sizeof(OldParams)));
     EXPECT_EQ(o->flip_ratio, 0.5f);
     EXPECT_TRUE(out.tail_intact()) << "pf_get_params wrote beyond struct_size";
+}
+
+TEST_F(Abi, DescWithoutProgramCacheIsNotReadPastItsSize) {
+    // The 176-byte pf_sim_desc before program_cache and prepared_features, followed by poison
+    // that would be called (program_cache.load) or refused (prepared_features) if it were read.
+    constexpr size_t kOld = offsetof(pf_sim_desc, program_cache);
+    static_assert(kOld == kSimDescBeforeProgramCache, "the layout older callers know");
+    pf_sim_desc cur = test_desc(8, 8, 8);
+    cur.struct_size = uint32_t(kOld);
+    std::vector<uint8_t> buf(sizeof(pf_sim_desc) + 64, 0xFF);
+    std::memcpy(buf.data(), &cur, kOld);
+    pf_sim* s = nullptr;
+    clear_log();
+    ASSERT_EQ(pf_create(reinterpret_cast<const pf_sim_desc*>(buf.data()), &s), PF_OK) << last_log();
+    SimPtr sim(s);
+    const float lo[3] = {0.1f, 0.1f, 0.1f}, hi[3] = {0.4f, 0.4f, 0.4f};
+    ASSERT_EQ(pf_fill_box(s, lo, hi, nullptr), PF_OK) << last_log();
+    EXPECT_EQ(pf_step(s, kDt), PF_OK) << last_log();
+    for (size_t i = kOld; i < buf.size(); ++i) ASSERT_EQ(buf[i], 0xFF) << "byte " << i << " written";
 }
 
 TEST_F(Abi, OlderDescWithOlderParamsAndNoFeaturesCreates) {

@@ -313,6 +313,9 @@ TEST_F(CreateValidation, RejectsBadDescFields) {
         {"fill_jitter 2", "fill_jitter", [](pf_sim_desc& d) { d.fill_jitter = 2.0f; }},
         {"fill_jitter -0.1", "fill_jitter", [](pf_sim_desc& d) { d.fill_jitter = -0.1f; }},
         {"fill_jitter NaN", "fill_jitter", [](pf_sim_desc& d) { d.fill_jitter = kNaN; }},
+        {"prepared_features unknown bit", "prepared_features",
+         [](pf_sim_desc& d) { d.prepared_features = uint32_t(PF_FEATURE_ALL) + 1u; }},
+        {"prepared_features all bits", "prepared_features", [](pf_sim_desc& d) { d.prepared_features = 0xffffffffu; }},
     };
     for (const Case& c : cases) {
         pf_sim_desc d = test_desc(8, 8, 8);

@@ -13,6 +13,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <glm/mat4x4.hpp>
 
@@ -107,6 +108,9 @@ public:
     // the first time its feature is turned on. Errors are logged (prefixed with fn) and
     // returned; the effect then stays off and may be tried again.
     virtual pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) = 0;
+    // The programs init builds (all of them: pf_sim_desc.prepared_features builds these alone
+    // at pf_create, and init then finds them built).
+    virtual std::vector<gl::ProgramId> programs() const = 0;
     // Start of a step (GL state guarded): upload what changed on the host since the last step.
     virtual void begin_step() = 0;
     // Records its passes of one substep at `stage`, one of its stages().

@@ -31,9 +31,15 @@ DomainMotionEffect::DomainMotionEffect(const pf_sim_desc& desc) {
     }
 }
 
+std::vector<gl::ProgramId> DomainMotionEffect::programs() const {
+    return {gl::ProgramId::domain_forces};
+}
+
 pf_result DomainMotionEffect::init(const gl::Api&, PassRunner& runner, const Log& log, const char* fn) {
-    if (std::string error = runner.prepare(gl::ProgramId::domain_forces); !error.empty())
-        return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    for (gl::ProgramId id : programs()) {
+        if (std::string error = runner.prepare(id); !error.empty())
+            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    }
     stat_ = runner.add_stat("domain_motion", PF_PASS_GRID_FORCES);
     return PF_OK;
 }

@@ -28,6 +28,7 @@ public:
         return stage_bit(EffectStage::after_grid_forces);
     }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
+    std::vector<gl::ProgramId> programs() const override;
     void begin_frame(const FrameInfo& frame) override;
     void begin_step() override {}
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;

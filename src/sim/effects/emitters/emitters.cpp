@@ -24,8 +24,12 @@ float uint_bits(uint32_t u) {
 }
 }  // namespace
 
+std::vector<gl::ProgramId> EmittersEffect::programs() const {
+    return {gl::ProgramId::emit, gl::ProgramId::emit_apic, gl::ProgramId::emit_commit};
+}
+
 pf_result EmittersEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : {gl::ProgramId::emit, gl::ProgramId::emit_apic, gl::ProgramId::emit_commit}) {
+    for (gl::ProgramId id : programs()) {
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }

@@ -36,6 +36,7 @@ public:
         return stage_bit(EffectStage::before_substeps);
     }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
+    std::vector<gl::ProgramId> programs() const override;
     void begin_frame(const FrameInfo& frame) override;
     void begin_step() override;
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;

@@ -15,9 +15,15 @@ static_assert(PF_FORCE_FIELD_DIRECTIONAL_ID == PF_FORCE_FIELD_DIRECTIONAL, "type
 static_assert(PF_FORCE_FIELD_POINT_ID == PF_FORCE_FIELD_POINT, "type ids shared with GLSL");
 static_assert(PF_FORCE_FIELD_VORTEX_ID == PF_FORCE_FIELD_VORTEX, "type ids shared with GLSL");
 
+std::vector<gl::ProgramId> ForceFieldsEffect::programs() const {
+    return {gl::ProgramId::force_fields};
+}
+
 pf_result ForceFieldsEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    if (std::string error = runner.prepare(gl::ProgramId::force_fields); !error.empty())
-        return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    for (gl::ProgramId id : programs()) {
+        if (std::string error = runner.prepare(id); !error.empty())
+            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    }
     records_ = gl::Buffer(gl, size_t(PF_MAX_FORCE_FIELDS) * PF_FORCE_FIELD_VEC4S * 16, GL_DYNAMIC_DRAW, "force_fields");
     stat_ = runner.add_stat("force_fields", PF_PASS_GRID_FORCES);
     dirty_ = true;

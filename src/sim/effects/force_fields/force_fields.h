@@ -23,6 +23,7 @@ public:
         return stage_bit(EffectStage::after_grid_forces);
     }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
+    std::vector<gl::ProgramId> programs() const override;
     void begin_step() override;
     void save_state(ByteWriter& out) const override;
     pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;

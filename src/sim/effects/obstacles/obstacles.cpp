@@ -64,9 +64,13 @@ pf_result check_sdf_texture(const gl::Api& gl, const Log& log, const char* fn, G
 
 ObstaclesEffect::~ObstaclesEffect() = default;
 
+std::vector<gl::ProgramId> ObstaclesEffect::programs() const {
+    return {gl::ProgramId::obstacle_cells, gl::ProgramId::obstacle_faces, gl::ProgramId::obstacle_push,
+            gl::ProgramId::obstacle_forces};
+}
+
 pf_result ObstaclesEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : {gl::ProgramId::obstacle_cells, gl::ProgramId::obstacle_faces, gl::ProgramId::obstacle_push,
-                             gl::ProgramId::obstacle_forces}) {
+    for (gl::ProgramId id : programs()) {
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }

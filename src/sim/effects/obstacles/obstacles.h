@@ -47,6 +47,7 @@ public:
                stage_bit(EffectStage::after_advect);
     }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
+    std::vector<gl::ProgramId> programs() const override;
     void begin_step() override;
     void save_state(ByteWriter& out) const override;
     pf_result restore_state(ByteReader& in, const Log& log, const char* fn) override;

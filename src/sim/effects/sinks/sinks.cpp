@@ -14,9 +14,13 @@ namespace pf {
 static_assert(PF_SINK_BOX_ID == PF_SINK_BOX, "shape ids shared with GLSL");
 static_assert(PF_SINK_SPHERE_ID == PF_SINK_SPHERE, "shape ids shared with GLSL");
 
+std::vector<gl::ProgramId> SinksEffect::programs() const {
+    return {gl::ProgramId::sink_mark, gl::ProgramId::sink_lists, gl::ProgramId::sink_move,
+            gl::ProgramId::sink_move_apic};
+}
+
 pf_result SinksEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : {gl::ProgramId::sink_mark, gl::ProgramId::sink_lists, gl::ProgramId::sink_move,
-                             gl::ProgramId::sink_move_apic}) {
+    for (gl::ProgramId id : programs()) {
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }

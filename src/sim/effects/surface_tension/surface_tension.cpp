@@ -17,9 +17,13 @@ SurfaceTensionEffect::SurfaceTensionEffect(const pf_sim_desc& desc)
       dx_(desc.cell_size),
       settings_(pf_default_surface_tension()) {}
 
+std::vector<gl::ProgramId> SurfaceTensionEffect::programs() const {
+    return {gl::ProgramId::st_fraction, gl::ProgramId::st_fraction_float, gl::ProgramId::st_liquid,
+            gl::ProgramId::st_force};
+}
+
 pf_result SurfaceTensionEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : {gl::ProgramId::st_fraction, gl::ProgramId::st_fraction_float, gl::ProgramId::st_liquid,
-                             gl::ProgramId::st_force}) {
+    for (gl::ProgramId id : programs()) {
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }

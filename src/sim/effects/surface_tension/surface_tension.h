@@ -25,6 +25,7 @@ public:
     const char* name() const override { return "surface_tension"; }
     uint32_t stages() const override { return stage_bit(EffectStage::after_classify); }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
+    std::vector<gl::ProgramId> programs() const override;
     void begin_step() override {}
     void begin_frame(const FrameInfo& frame) override { frame_dt_ = frame.frame_dt; }
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;

@@ -24,10 +24,14 @@ ViscosityEffect::ViscosityEffect(const pf_sim_desc& desc)
       nodes_(uint64_t(desc.grid_size[0] + 1) * (desc.grid_size[1] + 1) * (desc.grid_size[2] + 1)),
       settings_(pf_default_viscosity()) {}
 
+std::vector<gl::ProgramId> ViscosityEffect::programs() const {
+    return {gl::ProgramId::visc_setup,       gl::ProgramId::visc_stress_start, gl::ProgramId::visc_stress,
+            gl::ProgramId::visc_apply_start, gl::ProgramId::visc_apply,        gl::ProgramId::visc_update,
+            gl::ProgramId::visc_couple_update};
+}
+
 pf_result ViscosityEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : {gl::ProgramId::visc_setup, gl::ProgramId::visc_stress_start, gl::ProgramId::visc_stress,
-                             gl::ProgramId::visc_apply_start, gl::ProgramId::visc_apply, gl::ProgramId::visc_update,
-                             gl::ProgramId::visc_couple_update}) {
+    for (gl::ProgramId id : programs()) {
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }

@@ -33,6 +33,7 @@ public:
                stage_bit(EffectStage::after_substeps);
     }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
+    std::vector<gl::ProgramId> programs() const override;
     void begin_step() override { first_substep_ = true; }
     // Learns what recent solves needed from the newest status readback.
     void begin_frame(const FrameInfo& frame) override;

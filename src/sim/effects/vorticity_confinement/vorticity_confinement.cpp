@@ -11,8 +11,12 @@ VorticityConfinementEffect::VorticityConfinementEffect(const pf_sim_desc& desc)
     : cells_(uint64_t(desc.grid_size[0]) * desc.grid_size[1] * desc.grid_size[2]),
       settings_(pf_default_vorticity_confinement()) {}
 
+std::vector<gl::ProgramId> VorticityConfinementEffect::programs() const {
+    return {gl::ProgramId::vorticity, gl::ProgramId::confinement_force};
+}
+
 pf_result VorticityConfinementEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : {gl::ProgramId::vorticity, gl::ProgramId::confinement_force}) {
+    for (gl::ProgramId id : programs()) {
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }

@@ -14,9 +14,13 @@ WhitewaterEffect::WhitewaterEffect(const pf_sim_desc& desc)
       seed_(desc.seed),
       settings_(pf_default_whitewater()) {}
 
+std::vector<gl::ProgramId> WhitewaterEffect::programs() const {
+    return {gl::ProgramId::ww_fraction, gl::ProgramId::ww_advect, gl::ProgramId::ww_emit,
+            gl::ProgramId::ww_commit, gl::ProgramId::ww_copy};
+}
+
 pf_result WhitewaterEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : {gl::ProgramId::ww_fraction, gl::ProgramId::ww_advect, gl::ProgramId::ww_emit,
-                             gl::ProgramId::ww_commit, gl::ProgramId::ww_copy}) {
+    for (gl::ProgramId id : programs()) {
         if (std::string error = runner.prepare(id); !error.empty())
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }

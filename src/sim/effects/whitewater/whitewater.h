@@ -26,6 +26,7 @@ public:
     const char* name() const override { return "whitewater"; }
     uint32_t stages() const override { return stage_bit(EffectStage::after_substeps); }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
+    std::vector<gl::ProgramId> programs() const override;
     void begin_frame(const FrameInfo& frame) override;
     void begin_step() override;
     void run(EffectStage stage, PassRunner& runner, const EffectBuffers& buffers) override;
