@@ -20,6 +20,7 @@ from ._types import (MAX_EMITTERS, MAX_FORCE_FIELDS, MAX_OBSTACLES, MAX_SINKS, A
                      SsfPath, Stats, SurfaceTension, Transfer, Viscosity, VorticityConfinement, Whitewater,
                      WhitewaterBuffers, WhitewaterKind)
 from .errors import PflipError
+from .program_cache import ProgramCacheDirectory
 from .simulation import PassStats, Simulation
 
 __version__ = "%d.%d.%d" % version()
@@ -43,7 +44,7 @@ def render_pass_name(p):
 __all__ = [
     "ABI_VERSION", "Advection", "Camera", "DepthConvention", "Feature", "Flag", "ForceField", "ForceFieldType", "FreeSurface",
     "GlBuffers", "GpuTiming", "LogLevel", "MAX_FORCE_FIELDS", "MAX_OBSTACLES", "Obstacle", "ObstacleForce", "ObstacleShape", "P2G",
-    "ParticleColor", "ParticleParams", "Pass", "PassStats", "PflipError", "PressureSolver", "Quality",
+    "ParticleColor", "ParticleParams", "Pass", "PassStats", "PflipError", "PressureSolver", "ProgramCacheDirectory", "Quality",
     "RenderPass", "RenderTarget", "Result", "SimDesc", "SimParams", "Simulation", "SsfFilter", "SsfParams",
     "SsfPath", "Stats", "SurfaceTension", "Transfer", "Viscosity", "VorticityConfinement", "Whitewater",
     "WhitewaterBuffers", "WhitewaterKind",

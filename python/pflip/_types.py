@@ -229,11 +229,14 @@ class Logger(_Struct):
     _fields_ = [("fn", LogFn), ("user", ctypes.c_void_p)]
 
 
-class ProgramCache(_Struct):
-    """pf_program_cache: the callbacks stay NULL from Python (no program-binary cache); mirrored so
-    SimDesc's layout matches pf.h."""
+ProgramLoadFn = ctypes.CFUNCTYPE(ctypes.c_size_t, ctypes.c_void_p, ctypes.c_char_p, ctypes.c_void_p, ctypes.c_size_t)
+ProgramStoreFn = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_char_p, ctypes.c_void_p, ctypes.c_size_t)
 
-    _fields_ = [("user", ctypes.c_void_p), ("load", ctypes.c_void_p), ("store", ctypes.c_void_p)]
+
+class ProgramCache(_Struct):
+    """pf_program_cache: set through Simulation(program_cache=...) (pflip.program_cache)."""
+
+    _fields_ = [("user", ctypes.c_void_p), ("load", ProgramLoadFn), ("store", ProgramStoreFn)]
 
 
 def _lib():

@@ -14,6 +14,7 @@ import numpy as np
 from . import _types as t
 from ._lib import lib
 from .errors import PflipError
+from .program_cache import _Callbacks
 
 _log = logging.getLogger("pflip")
 _log.addHandler(logging.NullHandler())  # a library logs only where the application asks it to
@@ -113,21 +114,22 @@ class Simulation:
 
     desc: a SimDesc (default: SimDesc.default()); keyword arguments set its fields, e.g.
     Simulation(grid_size=(64, 32, 32), cell_size=0.05, max_particles=1 << 18, prepared_features=Feature.ALL).
-    The program-binary cache (SimDesc.program_cache) is C callbacks and stays NULL from Python.
+    program_cache: optional, an object with load(key) -> bytes | None and store(key, data), e.g.
+    pflip.ProgramCacheDirectory(path): pflip's compiled programs are kept there and a later
+    Simulation of the same configuration links them instead of compiling (docs/integration.md §11).
     get_proc_address: the GL loader, a GetProcAddressFn or a Python callable name(bytes) -> int
     (default: libEGL's eglGetProcAddress, right for moderngl's 'egl' backend).
     log: optional callable(level: LogLevel, code: Result, message: str); every message also goes
     to the Python logger "pflip".
     """
 
-    def __init__(self, desc=None, *, get_proc_address=None, log=None, **fields):
+    def __init__(self, desc=None, *, get_proc_address=None, log=None, program_cache=None, **fields):
         self._handle = None
         self._errors = []
         self._user_log = log
         d = t.SimDesc.default() if desc is None else t.SimDesc.from_buffer_copy(desc)
         for name, value in fields.items():
-            # program_cache holds C callbacks: it stays NULL from Python (no program-binary cache).
-            if name not in dict(t.SimDesc._fields_) or name in ("gl_get_proc_address", "logger", "program_cache"):
+            if name not in dict(t.SimDesc._fields_) or name in ("gl_get_proc_address", "logger"):
                 raise TypeError(f"Simulation: no descriptor field {name!r}")
             setattr(d, name, value)
         if get_proc_address is None:
@@ -139,6 +141,11 @@ class Simulation:
         self._log_fn = t.LogFn(self._on_log)
         d.gl_get_proc_address = get_proc_address
         d.logger = t.Logger(self._log_fn, None)
+        # C keeps the callbacks' addresses for the simulation's life (pf_set_features and the first
+        # render calls build programs too): held here, like the logger's.
+        self._program_cache = _Callbacks(program_cache) if program_cache is not None else None
+        if self._program_cache is not None:
+            d.program_cache = self._program_cache.struct()
         self._force_fields = {}  # id -> ForceField, as added / last set (the C API has no getter)
         self._obstacles = {}     # id -> Obstacle
         self._emitters = {}      # id -> Emitter
@@ -166,7 +173,7 @@ class Simulation:
         # pf_destroy needs the GL context current on this thread, which a finaliser cannot know:
         # an unclosed simulation is leaked (with a warning), never destroyed from here.
         if getattr(self, "_handle", None) is not None:
-            _orphaned_callbacks.append(self._log_fn)
+            _orphaned_callbacks.append((self._log_fn, self._program_cache))
             warnings.warn("pflip.Simulation was not closed; its GL objects leak", ResourceWarning)
 
     @property
