@@ -922,10 +922,7 @@ pf_result Simulation::prepare_features(uint32_t features, const char* fn) {
     // which then finds the programs built.
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (!(features & (1u << i))) continue;
-        for (ProgramId id : effects_[i]->programs()) {
-            if (std::string error = runner_->prepare(id); !error.empty())
-                return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-        }
+        if (pf_result r = effects_[i]->prepare_programs(*runner_, log_, fn); r != PF_OK) return r;
     }
     return PF_OK;
 }

@@ -13,6 +13,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -111,6 +112,15 @@ public:
     // The programs init builds (all of them: pf_sim_desc.prepared_features builds these alone
     // at pf_create, and init then finds them built).
     virtual std::vector<gl::ProgramId> programs() const = 0;
+    // Builds (or finds built) every program of programs(); the first failure is logged (prefixed
+    // with fn) and returned. init calls it, and so does pf_create for prepared features.
+    pf_result prepare_programs(PassRunner& runner, const Log& log, const char* fn) const {
+        for (gl::ProgramId id : programs()) {
+            if (std::string error = runner.prepare(id); !error.empty())
+                return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+        }
+        return PF_OK;
+    }
     // Start of a step (GL state guarded): upload what changed on the host since the last step.
     virtual void begin_step() = 0;
     // Records its passes of one substep at `stage`, one of its stages().

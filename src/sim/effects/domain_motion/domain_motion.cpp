@@ -36,10 +36,7 @@ std::vector<gl::ProgramId> DomainMotionEffect::programs() const {
 }
 
 pf_result DomainMotionEffect::init(const gl::Api&, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : programs()) {
-        if (std::string error = runner.prepare(id); !error.empty())
-            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    }
+    if (pf_result r = prepare_programs(runner, log, fn); r != PF_OK) return r;
     stat_ = runner.add_stat("domain_motion", PF_PASS_GRID_FORCES);
     return PF_OK;
 }

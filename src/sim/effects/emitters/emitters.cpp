@@ -29,10 +29,7 @@ std::vector<gl::ProgramId> EmittersEffect::programs() const {
 }
 
 pf_result EmittersEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : programs()) {
-        if (std::string error = runner.prepare(id); !error.empty())
-            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    }
+    if (pf_result r = prepare_programs(runner, log, fn); r != PF_OK) return r;
     records_ = gl::Buffer(gl, size_t(PF_MAX_EMITTERS) * PF_EMITTER_VEC4S * 16, GL_DYNAMIC_DRAW, "emitters");
     stat_ = runner.add_stat("emit", PF_PASS_ADVECT);
     return PF_OK;

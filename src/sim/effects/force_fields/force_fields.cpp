@@ -20,10 +20,7 @@ std::vector<gl::ProgramId> ForceFieldsEffect::programs() const {
 }
 
 pf_result ForceFieldsEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : programs()) {
-        if (std::string error = runner.prepare(id); !error.empty())
-            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    }
+    if (pf_result r = prepare_programs(runner, log, fn); r != PF_OK) return r;
     records_ = gl::Buffer(gl, size_t(PF_MAX_FORCE_FIELDS) * PF_FORCE_FIELD_VEC4S * 16, GL_DYNAMIC_DRAW, "force_fields");
     stat_ = runner.add_stat("force_fields", PF_PASS_GRID_FORCES);
     dirty_ = true;

@@ -70,10 +70,7 @@ std::vector<gl::ProgramId> ObstaclesEffect::programs() const {
 }
 
 pf_result ObstaclesEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : programs()) {
-        if (std::string error = runner.prepare(id); !error.empty())
-            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    }
+    if (pf_result r = prepare_programs(runner, log, fn); r != PF_OK) return r;
     gl_ = &gl;
     records_ = gl::Buffer(gl, size_t(PF_MAX_OBSTACLES) * PF_OBSTACLE_VEC4S * 16, GL_DYNAMIC_DRAW, "obstacles");
     forces_ = gl::Buffer(gl, kForceBytes, GL_DYNAMIC_COPY, "obstacle_forces");

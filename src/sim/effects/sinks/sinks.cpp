@@ -20,10 +20,7 @@ std::vector<gl::ProgramId> SinksEffect::programs() const {
 }
 
 pf_result SinksEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : programs()) {
-        if (std::string error = runner.prepare(id); !error.empty())
-            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    }
+    if (pf_result r = prepare_programs(runner, log, fn); r != PF_OK) return r;
     records_ = gl::Buffer(gl, size_t(PF_MAX_SINKS) * PF_SINK_VEC4S * 16, GL_DYNAMIC_DRAW, "sinks");
     state_ = gl::Buffer(gl, PF_SINK_STATE_WORDS * 4, GL_DYNAMIC_COPY, "sink_state");
     // Each list holds at most the removed count (<= capacity) entries.

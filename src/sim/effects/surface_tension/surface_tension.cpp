@@ -23,10 +23,7 @@ std::vector<gl::ProgramId> SurfaceTensionEffect::programs() const {
 }
 
 pf_result SurfaceTensionEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : programs()) {
-        if (std::string error = runner.prepare(id); !error.empty())
-            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    }
+    if (pf_result r = prepare_programs(runner, log, fn); r != PF_OK) return r;
     const uint64_t bytes = cells_ * 4;
     if (pf_result r = gl::check_storage_block(gl, log, bytes, std::string(fn) + ": surface tension needs",
                                               "(4 per cell)", "use a smaller grid");

@@ -31,10 +31,7 @@ std::vector<gl::ProgramId> ViscosityEffect::programs() const {
 }
 
 pf_result ViscosityEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : programs()) {
-        if (std::string error = runner.prepare(id); !error.empty())
-            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    }
+    if (pf_result r = prepare_programs(runner, log, fn); r != PF_OK) return r;
     const uint64_t faces = face_bound();
     if (pf_result r = gl::check_storage_block(gl, log, faces * 8, std::string(fn) + ": viscosity needs",
                                               "(8 per face)", "use a smaller grid");

@@ -20,10 +20,7 @@ std::vector<gl::ProgramId> WhitewaterEffect::programs() const {
 }
 
 pf_result WhitewaterEffect::init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) {
-    for (gl::ProgramId id : programs()) {
-        if (std::string error = runner.prepare(id); !error.empty())
-            return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
-    }
+    if (pf_result r = prepare_programs(runner, log, fn); r != PF_OK) return r;
     const uint64_t bytes = uint64_t(settings_.capacity) * 16;  // within every GL's block limit (kMaxCapacity)
     gl_ = &gl;
     allocate();
