@@ -64,6 +64,7 @@ class Advection(enum.IntEnum):
     EULER = 0
     RK2 = 1
     RK3 = 2
+    LEAPFROG = 3
 
 
 class Quality(enum.IntEnum):

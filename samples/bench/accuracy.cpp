@@ -120,6 +120,7 @@ std::vector<Config> sweep_configs() {
     add("advection", "euler", [](pf_sim_params&) {});
     add("advection", "rk2", [](pf_sim_params& p) { p.advection = PF_ADVECTION_RK2; });
     add("advection", "rk3", [](pf_sim_params& p) { p.advection = PF_ADVECTION_RK3; });
+    add("advection", "leapfrog", [](pf_sim_params& p) { p.advection = PF_ADVECTION_LEAPFROG; });
     add("cfl", "cfl_0.5", [](pf_sim_params& p) { p.cfl = 0.5f, p.max_substeps = 32; });
     add("cfl", "cfl_1", [](pf_sim_params&) {});
     add("cfl", "cfl_2", [](pf_sim_params& p) { p.cfl = 2.0f; });

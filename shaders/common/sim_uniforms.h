@@ -22,5 +22,5 @@ PF_UNIFORM(uint, separation)          /* 1: pressure is kept >= 0 (liquid may le
 PF_UNIFORM(float, rest_particles)     /* particles per cell at rest density (desc.fill_particles_per_cell) */
 PF_UNIFORM(float, volume_correction)  /* pressure setup: fraction of a cell's excess particle density removed per substep */
 PF_UNIFORM(uint, ghost_fluid)        /* 1: the free surface sits where the particles put it (PF_FREE_SURFACE_GHOST_FLUID) */
-PF_UNIFORM(uint, pad1)
+PF_UNIFORM(float, drift_dt)           /* length of this pass's particle move, s: dt, or dt/2 for a leapfrog half move */
 PF_UNIFORM(uint, pad2)

@@ -1,5 +1,6 @@
-// Advection, explicit Euler (the original's integrator): x += dt * v with the particle's own
-// velocity, then the wall clamp of common/sim.glsl keeps particles inside the domain and a wall
+// Advection, explicit Euler (the original's integrator): x += drift_dt * v with the particle's own
+// velocity (drift_dt: the substep, or half of it for the leapfrog's first and last moves of a
+// step, design.md §5), then the wall clamp of common/sim.glsl keeps particles inside the domain and a wall
 // a particle crossed stops its velocity into it. The path is a straight line, so one clamp at
 // its end stops it where sub-steps of the particle trace (common/particle_trace.glsl) would:
 // the walls are planes of the grid, and the velocity along them is unchanged by the stop. A move of
@@ -18,12 +19,12 @@ void main() {
     if (i >= sim.particle_count) return;
     vec3 v = vel[i].xyz;
     vec3 x0 = pos[i].xyz;
-    vec3 x = x0 + sim.dt * v;
-    int n = int(clamp(ceil(length(v) * sim.dt / (kTraceCells * sim.dx)), 1.0, float(kMaxTraceSubsteps)));
+    vec3 x = x0 + sim.drift_dt * v;
+    int n = int(clamp(ceil(length(v) * sim.drift_dt / (kTraceCells * sim.dx)), 1.0, float(kMaxTraceSubsteps)));
     vec3 before = x0;
     bool was_solid = n > 1 && in_solid_cell(x0);
     for (int s = 1; n > 1 && s <= n; ++s) {
-        vec3 after = s == n ? x : x0 + (float(s) / float(n) * sim.dt) * v;
+        vec3 after = s == n ? x : x0 + (float(s) / float(n) * sim.drift_dt) * v;
         bool solid = in_solid_cell(keep_in_domain(after));
         if (solid && !was_solid) {
             x = before;

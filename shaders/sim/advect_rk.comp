@@ -23,7 +23,7 @@ void main() {
     if (i >= sim.particle_count) return;
     vec3 x0 = pos[i].xyz;
     WallsCrossed walls = no_walls_crossed();
-    float remaining = sim.dt;
+    float remaining = sim.drift_dt;
     bool was_solid = false;  // read before the second sub-step: a single one never looks
     for (int s = 0; s < kMaxTraceSubsteps; ++s) {
         vec3 k1 = sample_velocity(x0);

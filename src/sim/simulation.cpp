@@ -272,6 +272,7 @@ void Simulation::upload_uniforms(float dt) {
     u.gravity = glm::vec4(desc_.params.gravity[0], desc_.params.gravity[1], desc_.params.gravity[2], 0.0f);
     u.dx = desc_.cell_size;
     u.dt = dt;
+    u.drift_dt = dt;
     u.density = desc_.density;
     u.max_speed = desc_.max_speed;
     const float weight_scale = p2g_.range().weight_scale();
@@ -290,9 +291,21 @@ void Simulation::upload_uniforms(float dt) {
     if (gpu_count_) copy_count_to_uniforms();  // the kernels compare with the GPU's live count
 }
 
-void Simulation::run_substep(bool correct_volume) {
+void Simulation::set_drift(float seconds) {
+    uniform_data_.drift_dt = seconds;
+    uniforms_.upload(offsetof(SimUniforms, drift_dt), sizeof(float), &uniform_data_.drift_dt);
+}
+
+void Simulation::run_half_move() {
     update_substep_table();
-    substep_.run(SubstepContext{correct_volume});
+    set_drift(0.5f * uniform_data_.dt);
+    substep_.run(SubstepContext{}, "advect");
+    set_drift(uniform_data_.dt);
+}
+
+void Simulation::run_substep(bool correct_volume, bool half_move) {
+    update_substep_table();
+    substep_.run(SubstepContext{correct_volume, half_move});
     cell_counts_current_ = true;
     counted_with_ = (desc_.features & PF_FEATURE_SINKS) ? PF_P2G_COUNT : desc_.params.p2g;
 }
@@ -384,7 +397,10 @@ void Simulation::build_substep_table() {
         }
     });
     t.add("g2p", [this](const SubstepContext&) { run_g2p(); });
-    t.add("advect", [this](const SubstepContext&) { run_advect(); });
+    t.add("advect", [this](const SubstepContext& c) {
+        if (c.half_move) set_drift(0.5f * uniform_data_.dt);  // the step's last pass: the next step sets it again
+        run_advect();
+    });
     // Effects that are on, after the core stage their stage follows (lowest feature bit first).
     const std::pair<EffectStage, const char*> hooks[] = {{EffectStage::after_grid_forces, "grid_forces"},
                                                          {EffectStage::after_classify, "classify"},
@@ -439,10 +455,11 @@ void Simulation::run_advect() {
     PassRunner& r = *runner_;
     const uint32_t np = particle_count_;
     const gl::ProgramId advect = particle_programs(desc_.params).advect;
-    // Euler moves particles with their own (G2P) velocity, Runge-Kutta through the grid's.
-    // Both stop a move of several cells before an obstacle's SOLID cell (common/particle_trace.glsl).
+    // Euler and leapfrog move particles with their own (G2P) velocity, Runge-Kutta through the
+    // grid's. All stop a move of several cells before an obstacle's SOLID cell
+    // (common/particle_trace.glsl).
     const Bind cell_type{PF_SLOT_CELL_TYPE, &cell_type_};
-    if (desc_.params.advection == PF_ADVECTION_EULER) {
+    if (advect == ProgramId::advect) {
         r.run({advect, stat_.advect, np, {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, cell_type}});
     } else {
         r.run({advect, stat_.advect, np,
@@ -515,10 +532,14 @@ pf_result Simulation::step(float frame_dt) {
     // not with frames: at 60 frames a second it runs once a step).
     const float substep_dt = frame_dt / float(substeps);
     float since_correction = 0.0f;
+    // Leapfrog: the projections see the positions half a substep ahead of the velocities, and the
+    // last move is half a substep, so the step ends with both at the frame's time.
+    const bool leapfrog = desc_.params.advection == PF_ADVECTION_LEAPFROG;
+    if (leapfrog) run_half_move();
     for (uint32_t s = 0; s < substeps; ++s) {
         const bool correct = s == 0 || since_correction >= VolumeCorrection::kInterval;
         if (correct) since_correction = 0.0f;
-        run_substep(correct);
+        run_substep(correct, leapfrog && s + 1 == substeps);
         since_correction += substep_dt;
     }
     run_count_stage(EffectStage::after_substeps);

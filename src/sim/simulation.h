@@ -194,13 +194,18 @@ private:
     pf_result prepare_particle_passes(const pf_sim_params& params, const char* fn);
     void zero_affine(uint32_t first, uint32_t count);
     void upload_uniforms(float dt);
+    // Sets the length of the next particle moves (advection and the passes after it: sim.drift_dt).
+    void set_drift(float seconds);
     // Test hooks: one step of length dt that runs `passes` (timed and counted like a step).
     template <typename Passes>
     void run_one_step_for_test(float dt, Passes&& passes);
     // One substep: the substep table (rebuilt first when its shape changed); with
     // `correct_volume` the volume correction's entry runs (after classify, on this substep's
-    // counts).
-    void run_substep(bool correct_volume);
+    // counts); with `half_move` its particles move half the substep.
+    void run_substep(bool correct_volume, bool half_move = false);
+    // PF_ADVECTION_LEAPFROG's first move of a step: half a substep at the velocities the last
+    // step left, with the passes that follow advection (design.md §5).
+    void run_half_move();
     // Rebuilds the substep table when what decides its entries changed since it was built.
     void update_substep_table();
     // Fills the table: the core stages in order, the entries params ask for, and the entries

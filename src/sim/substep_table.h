@@ -13,6 +13,7 @@ namespace pf {
 // What one substep's entries may ask that the table's shape does not say.
 struct SubstepContext {
     bool correct_volume = false;  // the volume correction runs in this substep
+    bool half_move = false;       // the particles move half the substep (the leapfrog's last move of a step)
 };
 
 class SubstepTable {

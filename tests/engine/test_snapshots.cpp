@@ -22,6 +22,7 @@ struct Config {
     pf_pressure_solver solver;
     pf_transfer transfer;
     uint32_t features;
+    pf_advection advection = PF_ADVECTION_EULER;
 };
 
 class Snapshots : public GpuTest {
@@ -43,6 +44,7 @@ protected:
         d.features = c.features;
         d.params.pressure_solver = c.solver;
         d.params.transfer = c.transfer;
+        d.params.advection = c.advection;
         SimPtr s = create(d);
         const float lo[3] = {0.05f, 0.05f, 0.05f}, hi[3] = {0.4f, 0.6f, 0.5f}, v[3] = {0.8f, 0.0f, 0.3f};
         EXPECT_EQ(pf_fill_box(s.get(), lo, hi, v), PF_OK) << last_log();
@@ -156,6 +158,11 @@ TEST_F(Snapshots, RestoreContinuesBitIdenticallyJacobiScheme) {
 
 TEST_F(Snapshots, RestoreContinuesBitIdenticallyMgpcgApicEffects) {
     continuation({"mgpcg+apic+effects", PF_PRESSURE_SOLVER_MGPCG, PF_TRANSFER_APIC, PF_FEATURE_ALL});
+}
+
+// Leapfrog's positions and velocities meet at every step's end: a snapshot holds all of its state.
+TEST_F(Snapshots, RestoreContinuesBitIdenticallyLeapfrog) {
+    continuation({"leapfrog", PF_PRESSURE_SOLVER_MGPCG, PF_TRANSFER_PIC_FLIP, 0, PF_ADVECTION_LEAPFROG});
 }
 
 TEST_F(Snapshots, BadBuffersAreRefusedAndChangeNothing) {

@@ -105,7 +105,7 @@ TEST_P(Ladder, TwoMirroredCornersAgree) {
 std::string combination_name(const ::testing::TestParamInfo<Combination>& info) {
     static const char* solvers[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
     static const char* transfers[] = {"flip", "apic"};
-    static const char* advections[] = {"euler", "rk2", "rk3"};
+    static const char* advections[] = {"euler", "rk2", "rk3", "leapfrog"};
     static const char* p2g[] = {"", "_float_atomic", "_sorted_gather"};  // fixed point: the names of old
     return std::string(solvers[std::get<0>(info.param)]) + "_" + transfers[std::get<1>(info.param)] + "_" +
            advections[std::get<2>(info.param)] + p2g[std::get<3>(info.param)];
@@ -116,7 +116,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Combine(::testing::Values(PF_PRESSURE_SOLVER_JACOBI, PF_PRESSURE_SOLVER_RBGS, PF_PRESSURE_SOLVER_CG,
                                          PF_PRESSURE_SOLVER_PCG, PF_PRESSURE_SOLVER_MGPCG),
                        ::testing::Values(PF_TRANSFER_PIC_FLIP, PF_TRANSFER_APIC),
-                       ::testing::Values(PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_RK3),
+                       ::testing::Values(PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_RK3, PF_ADVECTION_LEAPFROG),
                        ::testing::Values(PF_P2G_FIXED_POINT)),
     combination_name);
 

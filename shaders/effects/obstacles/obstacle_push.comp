@@ -48,7 +48,7 @@ vec3 axis_exit(uint o, vec3 x, float margin, out vec3 n) {
     return out_x;
 }
 
-// A particle inside obstacle o that was outside a substep ago (going back along its motion
+// A particle inside obstacle o that was outside a move ago (going back along its last move
 // relative to the obstacle) and moves towards the surface nearest to it came in through the other
 // side: a thin obstacle or a fast particle put it past the middle. Pushed along the gradient it
 // would pass through (tests/engine/test_tunnelling.cpp: a jet against a slab one cell thick); it
@@ -57,7 +57,7 @@ vec3 axis_exit(uint o, vec3 x, float margin, out vec3 n) {
 vec3 came_through(uint o, vec3 x, float d, vec3 rel, vec3 n, float margin) {
     float speed = length(rel);
     if (d >= 0.0 || speed <= 0.0 || dot(rel, n) <= 0.0) return x;
-    if (obstacle_distance(o, x - sim.dt * rel) < 0.0) return x;  // overtaken inside, or started there
+    if (obstacle_distance(o, x - sim.drift_dt * rel) < 0.0) return x;  // overtaken inside, or started there
     vec3 e = -rel / speed, p = x;
     for (int s = 0; s < 32; ++s) {
         float dp = obstacle_distance(o, p);
