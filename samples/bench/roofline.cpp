@@ -212,6 +212,27 @@ Ceilings measure_ceilings() {
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
         glDeleteBuffers(1, &words);
     }
+    if (timed) {
+        // 1,000 copies of 2 MiB, alternating between two buffer pairs: a barrier before each, or
+        // one before each pair.
+        constexpr GLuint kVec4s = 131072;
+        GLuint pairs[4];
+        for (GLuint& b : pairs) b = make_buffer(GLsizeiptr(kVec4s) * 16);
+        glUseProgram(copy);
+        glUniform1ui(0, 1u);
+        for (bool paired : {false, true}) {
+            const double ns = median_ns(5, [&] {
+                for (int k = 0; k < 1000; ++k) {
+                    if (!paired || k % 2 == 0) glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+                    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, pairs[2 * (k % 2)]);
+                    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, pairs[2 * (k % 2) + 1]);
+                    glDispatchCompute(kVec4s / 256, 1, 1);
+                }
+            });
+            (paired ? c.paired_copy_dispatch_us : c.copy_dispatch_us) = ns * 1e-3 / 1000;
+        }
+        glDeleteBuffers(4, pairs);
+    }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
     glUseProgram(0);
