@@ -80,18 +80,32 @@ StatId PassRunner::kernel_stat(StatId stat, gl::ProgramId program) {
     return id;
 }
 
-void PassRunner::run(const Pass& pass) {
-    if (!pass.indirect.buffer && pass.invocations == 0) return;
-    StatId stat = override_ != kNoOverride ? override_ : pass.stat;
-    if (kernel_timing_ && step_open_) stat = kernel_stat(stat, pass.program);
-    // Outside a step (creation, pf_clear_particles) passes run untimed and uncounted.
+void PassRunner::open_timing(StatId stat) {
     if (step_open_ && (!pair_open_ || open_stat_ != stat)) {
         if (pair_open_) timers_.end_pass();
         timers_.begin_pass(int(stat));
         pair_open_ = true;
         open_stat_ = stat;
     }
+}
+
+void PassRunner::run(const Pass& pass) {
+    if (!pass.indirect.buffer && pass.invocations == 0) return;
+    StatId stat = override_ != kNoOverride ? override_ : pass.stat;
+    if (recording_) {
+        RecordedOp op{pass};
+        op.pass.stat = stat;
+        recording_->push_back(op);
+        return;
+    }
+    if (kernel_timing_ && step_open_) stat = kernel_stat(stat, pass.program);
+    // Outside a step (creation, pf_clear_particles) passes run untimed and uncounted.
+    open_timing(stat);
     if (step_open_ && stat < stats_.size()) ++stats_[stat].dispatches;
+    issue(pass, stat, true, records_written_);
+}
+
+void PassRunner::issue(const Pass& pass, StatId stat, bool barrier, bool& records_written) {
     const GLuint program = programs_.built(pass.program);
     const size_t pid = size_t(pass.program);
     const uint32_t missing = used_slots_[pid] & ~pass.binds.mask();
@@ -113,10 +127,10 @@ void PassRunner::run(const Pass& pass) {
     // Every pass may read what earlier passes wrote; an indirect one also reads its workgroup
     // counts, which the record-writing programs change (the barrier goes before the dispatch,
     // so a copy or readback after the last pass brings its own: copy() and the step's end).
-    const bool command = pass.indirect.buffer && records_written_;
-    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (command ? GL_COMMAND_BARRIER_BIT : 0));
-    if (command) records_written_ = false;
-    if (writes_indirect_records(pass.program)) records_written_ = true;
+    const bool command = pass.indirect.buffer && records_written;
+    if (barrier || command) gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (command ? GL_COMMAND_BARRIER_BIT : 0));
+    if (command) records_written = false;
+    if (writes_indirect_records(pass.program)) records_written = true;
     const gl::DebugGroup debug_group(gl_, stat < stats_.size() ? stats_[stat].debug_group.c_str() : "pflip/pass");
     gl_.UseProgram(program);
     gl_.BindBufferBase(GL_UNIFORM_BUFFER, uniform_slot_, uniforms_.id());
@@ -158,6 +172,31 @@ void PassRunner::run(const Pass& pass) {
     }
 }
 
+void PassRunner::run_interleaved(const Recorded& a, const Recorded& b) {
+    if (a.empty() && b.empty()) return;
+    open_timing((a.empty() ? b : a).front().pass.stat);
+    // Each stream's own "a record may have changed" (the other's records are not its concern);
+    // the barrier before a pair carries the command bit when either needs it.
+    bool written[2] = {records_written_, records_written_};
+    const Recorded* streams[2] = {&a, &b};
+    for (size_t i = 0; i < std::max(a.size(), b.size()); ++i) {
+        const bool command = written[0] || written[1];
+        gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (command ? GL_COMMAND_BARRIER_BIT : 0));
+        if (command) written[0] = written[1] = false;
+        for (int s = 0; s < 2; ++s) {
+            if (i >= streams[s]->size()) continue;
+            const RecordedOp& op = (*streams[s])[i];
+            if (op.copy_bytes) {
+                copy(*op.copy_src, op.copy_src_offset, *op.copy_dst, op.copy_dst_offset, op.copy_bytes);
+                continue;
+            }
+            if (step_open_ && op.pass.stat < stats_.size()) ++stats_[op.pass.stat].dispatches;
+            issue(op.pass, op.pass.stat, false, written[s]);
+        }
+    }
+    records_written_ = written[0] || written[1];
+}
+
 bool PassRunner::writes_indirect_records(gl::ProgramId id) {
     switch (id) {
         case gl::ProgramId::solver_begin:
@@ -184,6 +223,13 @@ bool PassRunner::writes_indirect_records(gl::ProgramId id) {
 }
 
 void PassRunner::copy(const gl::Buffer& src, size_t src_offset, const gl::Buffer& dst, size_t dst_offset, size_t bytes) {
+    if (recording_) {
+        RecordedOp op{Pass{gl::ProgramId::fill, 0, 0, {}}};
+        op.copy_src = &src, op.copy_dst = &dst;
+        op.copy_src_offset = src_offset, op.copy_dst_offset = dst_offset, op.copy_bytes = bytes;
+        recording_->push_back(op);
+        return;
+    }
     gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // copies read what shaders wrote
     gl_.BindBuffer(GL_COPY_READ_BUFFER, src.id());
     gl_.BindBuffer(GL_COPY_WRITE_BUFFER, dst.id());

@@ -98,6 +98,35 @@ public:
         StatId saved_;
     };
 
+    // A pass (its statistics entry resolved when it was recorded) or, when copy_bytes is not 0,
+    // a copy, kept by a Recording instead of being issued.
+    struct RecordedOp {
+        Pass pass;
+        const gl::Buffer* copy_src = nullptr;
+        const gl::Buffer* copy_dst = nullptr;
+        size_t copy_src_offset = 0, copy_dst_offset = 0, copy_bytes = 0;
+    };
+    using Recorded = std::vector<RecordedOp>;
+    // While alive, run(), fill() and copy() append to `into` instead of issuing; nothing is
+    // counted or timed until run_interleaved issues it. The passes' buffers must outlive that.
+    class Recording {
+    public:
+        Recording(PassRunner& runner, Recorded& into) : runner_(runner), saved_(runner.recording_) { runner.recording_ = &into; }
+        ~Recording() { runner_.recording_ = saved_; }
+        Recording(const Recording&) = delete;
+        Recording& operator=(const Recording&) = delete;
+
+    private:
+        PassRunner& runner_;
+        Recorded* saved_;
+    };
+    // Issues two recordings of independent work (neither reads what the other writes) in
+    // lockstep: one barrier before each pair of their passes and none between the two, so the
+    // GPU may overlap them (docs/performance.md, "Independent dispatches overlap"). Each pass is
+    // counted under its own entry; the whole is timed as one pair under the entry of the first
+    // pass (a timestamp between the two would wait for the first).
+    void run_interleaved(const Recorded& a, const Recorded& b);
+
     uint32_t binding_errors() const { return binding_errors_; }
     // The workgroups run() dispatches for `invocations` on this GL.
     Workgroups workgroups(uint64_t invocations) const { return workgroups_for(invocations, max_groups_x_); }
@@ -122,6 +151,13 @@ private:
     std::unordered_map<uint32_t, StatId> kernel_stats_;
     bool kernel_timing_ = false;
     void set_uniforms(GLuint program, size_t pid, const Uniforms& uniforms);
+    // Starts a timing pair for `stat` unless one is open for it (inside a step).
+    void open_timing(StatId stat);
+    // Checks, binds and dispatches `pass` (inside the debug group of `stat`): after a storage
+    // barrier when `barrier`, or when it is indirect and `records_written` (a command barrier
+    // too), which it then clears and sets again if the pass writes records.
+    void issue(const Pass& pass, StatId stat, bool barrier, bool& records_written);
+    Recorded* recording_ = nullptr;  // Recording
 
     std::vector<uint32_t> used_slots_;   // per ProgramId: bit mask of storage slots in use
     std::vector<uint32_t> used_uniforms_;  // per ProgramId: bit mask of explicit uniform locations in use

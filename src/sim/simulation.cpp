@@ -148,7 +148,7 @@ pf_result Simulation::init() {
             return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
     }
     if (pf_result res = prepare_particle_passes(desc_.params, "pf_create"); res != PF_OK) return res;
-    if (pf_result res = solver_for(desc_.params, "pf_create", &solver_); res != PF_OK) return res;
+    if (pf_result res = solvers_for(desc_.params, "pf_create", &solvers_in_use_); res != PF_OK) return res;
     warn_about_free_surface(desc_.params, "pf_create");
     if (std::string error = volume_correction_.init(gl_, r, uint32_t(cells_)); !error.empty())
         return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
@@ -196,8 +196,18 @@ uint32_t Simulation::live_count() const {
     return live;
 }
 
-pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out) {
-    std::unique_ptr<PressureSolver>& slot = solvers_[params.pressure_solver];
+pf_result Simulation::solvers_for(const pf_sim_params& params, const char* fn, SolversInUse* out) {
+    SolversInUse s;
+    if (pf_result r = solver_for(params, fn, &s.pressure, false); r != PF_OK) return r;
+    if (params.volume_correction > 0.0f) {
+        if (pf_result r = solver_for(params, fn, &s.correction, true); r != PF_OK) return r;
+    }
+    *out = s;
+    return PF_OK;
+}
+
+pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out, bool correction) {
+    std::unique_ptr<PressureSolver>& slot = (correction ? correction_solvers_ : solvers_)[params.pressure_solver];
     if (!slot) {
         std::unique_ptr<PressureSolver> made = make_pressure_solver(params.pressure_solver);
         if (!made) return log_.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": unknown pressure solver");
@@ -353,8 +363,15 @@ void Simulation::build_substep_table() {
     if (desc_.params.volume_correction > 0.0f) {
         t.add("volume_correction", [this, cells](const SubstepContext& c) {
             if (!c.correct_volume) return;
-            volume_correction_.run(*runner_, *solver_, solve_params(),
-                                   {pos_, cell_type_, cell_count_, pressure_, face_fraction_, cells, particle_count_});
+            const VolumeCorrection::Inputs in{pos_, cell_type_, cell_count_, pressure_, face_fraction_, cells, particle_count_};
+            // Its solve goes alongside the projection's (pressure_solve below), on its own solver's
+            // buffers; per-kernel timing, which times every pass apart, keeps the two in turn.
+            if (solvers_in_use_.correction && !runner_->kernel_timing()) {
+                volume_correction_.setup(*runner_, in);
+                correction_pending_ = true;
+            } else {
+                volume_correction_.run(*runner_, *solvers_in_use_.pressure, solve_params(), in);
+            }
         });
     }
     // After every force on the faces and the obstacles' SOLID cells: which walls let go.
@@ -375,14 +392,34 @@ void Simulation::build_substep_table() {
                       {{PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_}}});
         hydrostatic_start_pending_ = false;
     });
-    t.add("pressure_solve", [this](const SubstepContext&) {
+    t.add("pressure_solve", [this, cells](const SubstepContext&) {
         // What this solver needed recently (a readback of another solver's step says nothing).
         const bool known = recent_solver_ == desc_.params.pressure_solver;
-        solver_->solve(*runner_, PressureProblem{cell_type_, rhs_, pressure_, status_, solve_params(),
-                                                 known ? recent_iterations_ : kUnknownIterations,
-                                                 known ? recent_later_iterations_ : kUnknownIterations,
-                                                 known && solver_residual_ <= desc_.params.pressure_tolerance,
-                                                 known ? solver_residual_ : -1.0f});
+        const PressureProblem problem{cell_type_, rhs_, pressure_, status_, solve_params(),
+                                      known ? recent_iterations_ : kUnknownIterations,
+                                      known ? recent_later_iterations_ : kUnknownIterations,
+                                      known && solver_residual_ <= desc_.params.pressure_tolerance,
+                                      known ? solver_residual_ : -1.0f};
+        if (!correction_pending_) {
+            solvers_in_use_.pressure->solve(*runner_, problem);
+            return;
+        }
+        // The volume correction's solve and the projection's read none of each other's buffers
+        // (the correction's setup read the pressure before this solve changes it; its move
+        // waits for both): issued in lockstep, one barrier a pair.
+        correction_pending_ = false;
+        const VolumeCorrection::Inputs in{pos_, cell_type_, cell_count_, pressure_, face_fraction_, cells, particle_count_};
+        PassRunner::Recorded correction, projection;
+        {
+            const PassRunner::Recording recording(*runner_, correction);
+            volume_correction_.solve(*runner_, *solvers_in_use_.correction, solve_params(), in);
+        }
+        {
+            const PassRunner::Recording recording(*runner_, projection);
+            solvers_in_use_.pressure->solve(*runner_, problem);
+        }
+        runner_->run_interleaved(projection, correction);
+        volume_correction_.move(*runner_, in);
     });
     t.add("velocity_update", [this](const SubstepContext&) {
         run_velocity_update(*runner_, stat_.velocity_update, pressure_);
@@ -605,7 +642,7 @@ pf_result Simulation::run_effect_stages_for_test(std::initializer_list<EffectSta
 
 pf_result Simulation::run_volume_correction_for_test() {
     run_one_step_for_test(0.01f, [&] {
-        volume_correction_.run(*runner_, *solver_, desc_.params,
+        volume_correction_.run(*runner_, *solvers_in_use_.pressure, desc_.params,
                                {pos_, cell_type_, cell_count_, pressure_, face_fraction_, uint64_t(cells_), particle_count_});
     });
     return PF_OK;
@@ -629,7 +666,7 @@ pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, con
     const uint32_t zeros[2] = {0, 0};
     status_.upload(PF_STATUS_SOLVER_ITERATIONS * 4, sizeof(zeros), zeros);
     run_one_step_for_test(0.01f, [&] {
-        solver_->solve(*runner_, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params});
+        solvers_in_use_.pressure->solve(*runner_, PressureProblem{cell_type_, rhs_, pressure_, status_, desc_.params});
     });
     pressure_.download(0, pressure.size() * 4, pressure.data());
     return PF_OK;
@@ -924,13 +961,13 @@ pf_result Simulation::set_params(const pf_sim_params& params) {
     // Everything the new parameters need is built first, so a failure changes nothing.
     gl::StateGuard guard(gl_, gl_state_);
     if (pf_result r = prepare_particle_passes(params, "pf_set_params"); r != PF_OK) return r;
-    PressureSolver* solver = nullptr;
-    if (pf_result r = solver_for(params, "pf_set_params", &solver); r != PF_OK) return r;
+    SolversInUse solvers;
+    if (pf_result r = solvers_for(params, "pf_set_params", &solvers); r != PF_OK) return r;
     // Affine vectors left from an earlier APIC period do not belong to today's velocities:
     // entering APIC starts every particle from C = 0 (plain PIC for its first transfer).
     if (params.transfer == PF_TRANSFER_APIC && desc_.params.transfer != PF_TRANSFER_APIC)
         zero_affine(0, particle_count_);
-    solver_ = solver;
+    solvers_in_use_ = solvers;
     desc_.params = params;
     warn_about_free_surface(params, "pf_set_params");
     for (auto& effect : effects_) effect->params_changed(params);
@@ -1017,7 +1054,7 @@ void Simulation::project(PassRunner& runner, const gl::Buffer& potential, const 
     run_pressure_setup(runner, stat, potential);
     pf_sim_params params = desc_.params;
     params.separation = 0;  // a correction of either sign, not a pressure
-    solver_->solve(runner, PressureProblem{cell_type_, rhs_, potential, report, params, recent_iterations,
+    solvers_in_use_.pressure->solve(runner, PressureProblem{cell_type_, rhs_, potential, report, params, recent_iterations,
                                            kUnknownIterations,
                                            recent_residual >= 0.0f && recent_residual <= params.pressure_tolerance,
                                            recent_residual});

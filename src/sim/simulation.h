@@ -180,8 +180,17 @@ private:
     size_t snapshot_gpu_bytes(uint32_t particles, bool affine) const;
     void drain_status();
     pf_result init();
-    // The solver for params.pressure_solver, made and initialised on first use (kept after).
-    pf_result solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out);
+    // The solver for params.pressure_solver, made and initialised on first use (kept after);
+    // `correction`: the volume correction's own instance of it (its solve runs alongside the
+    // projection's, on its own buffers).
+    pf_result solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out, bool correction);
+    // The solvers `params` select (the correction's only while it is on): every place that
+    // changes the parameters (pf_create, pf_set_params, a restore) takes both from here.
+    struct SolversInUse {
+        PressureSolver* pressure = nullptr;
+        PressureSolver* correction = nullptr;
+    };
+    pf_result solvers_for(const pf_sim_params& params, const char* fn, SolversInUse* out);
     // The per-particle programs params select after P2G (its scheme's sums, transfer, flip
     // ratio, advection); the P2G scheme must be prepared.
     struct ParticlePrograms {
@@ -282,7 +291,9 @@ private:
     std::unique_ptr<PassRunner> runner_;
     CoreStats stat_{};
     std::unique_ptr<PressureSolver> solvers_[PF_PRESSURE_SOLVER_COUNT];
-    PressureSolver* solver_ = nullptr;  // the one params.pressure_solver selects
+    std::unique_ptr<PressureSolver> correction_solvers_[PF_PRESSURE_SOLVER_COUNT];
+    SolversInUse solvers_in_use_;  // the ones params select (the correction's null while it is off)
+    bool correction_pending_ = false;  // this substep's correction waits to be solved with the projection
     VolumeCorrection volume_correction_;
     ParticleToGrid p2g_;  // the schemes, their fixed-point range and the "p2g" statistics entry
     SubstepTable substep_;

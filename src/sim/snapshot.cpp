@@ -280,8 +280,8 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     // failure here changes nothing either.
     gl::StateGuard guard(gl_, gl_state_);
     if (pf_result res = prepare_particle_passes(params, fn); res != PF_OK) return res;
-    PressureSolver* solver = nullptr;
-    if (pf_result res = solver_for(params, fn, &solver); res != PF_OK) return res;
+    SolversInUse solvers;
+    if (pf_result res = solvers_for(params, fn, &solvers); res != PF_OK) return res;
     const uint32_t features_before = desc_.features;
     if (pf_result res = set_features(features | features_before, fn); res != PF_OK) return res;
     desc_.features = features_before;
@@ -310,7 +310,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     desc_.params = params;
     desc_.features = features;
     gpu_count_ = (features & kGpuCountFeatures) != 0;
-    solver_ = solver;
+    solvers_in_use_ = solvers;
     // Step-valued fields are kept relative to the step count (which keeps counting pf_step calls).
     const int64_t shift = int64_t(steps_) - int64_t(s.steps);
     const auto rebase = [&](uint64_t step) { return uint64_t(std::max<int64_t>(0, int64_t(step) + shift)); };

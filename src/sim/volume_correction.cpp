@@ -34,6 +34,12 @@ pf_sim_params VolumeCorrection::solve_params(const pf_sim_params& params) {
 
 void VolumeCorrection::run(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in) {
     if (params.volume_correction <= 0.0f) return;
+    setup(runner, in);
+    solve(runner, solver, params, in);
+    move(runner, in);
+}
+
+void VolumeCorrection::setup(PassRunner& runner, const Inputs& in) {
     runner.run({gl::ProgramId::volume_correction_setup,
                 setup_stat_,
                 in.cells,
@@ -42,11 +48,14 @@ void VolumeCorrection::run(PassRunner& runner, PressureSolver& solver, const pf_
                  {PF_SLOT_PRESSURE, &in.pressure},
                  {PF_SLOT_RHS, &rhs_},
                  {PF_SLOT_VOLUME_POTENTIAL_OUT, &potential_}}});
-    const pf_sim_params solve = solve_params(params);
-    {
-        const PassRunner::StatScope as_correction(runner, solve_stat_);
-        solver.solve(runner, PressureProblem{in.cell_type, rhs_, potential_, report_, solve});
-    }
+}
+
+void VolumeCorrection::solve(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in) {
+    const PassRunner::StatScope as_correction(runner, solve_stat_);
+    solver.solve(runner, PressureProblem{in.cell_type, rhs_, potential_, report_, solve_params(params)});
+}
+
+void VolumeCorrection::move(PassRunner& runner, const Inputs& in) {
     runner.run({gl::ProgramId::volume_correction_move,
                 move_stat_,
                 in.particles,

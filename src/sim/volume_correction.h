@@ -1,7 +1,7 @@
 // The volume correction (docs/design.md §4.5): once per step (and per 1/60 s of simulated
 // time in longer steps), particles in over-full cells
-// are moved apart along the gradient of a displacement potential, solved with the
-// simulation's own pressure solver. It moves positions only: velocities, and so FLIP's
+// are moved apart along the gradient of a displacement potential, solved with a solver of the
+// simulation's kind (an instance of its own, issued alongside the projection's). It moves positions only: velocities, and so FLIP's
 // velocity difference and the kinetic energy, never see it (issue 17: as a divergence target
 // of the projection it added energy when the solve was unconverged and smothered waves when
 // it was converged).
@@ -40,6 +40,13 @@ public:
     // Records the correction (setup, the solve, the particle move); nothing when
     // params.volume_correction is 0.
     void run(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in);
+    // Its three parts, for a step that issues its solve alongside the projection's (the solve
+    // reads only the setup's buffers and the cell types; the move, only the solved potential):
+    // the right-hand side (and q = 0), the solve with `solver` (its own buffers, not the
+    // projection's, when the two are interleaved), and the particles' move.
+    void setup(PassRunner& runner, const Inputs& in);
+    void solve(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in);
+    void move(PassRunner& runner, const Inputs& in);
 
     // The solve's parameters: the simulation's solver without separation (the potential has
     // either sign), to the pressure's tolerance but never below kTolerance, with at most

@@ -3,6 +3,7 @@
 // every explicit-location uniform its program uses (checked by the runner against the linked
 // program); a pass that forgets one is caught.
 #include <cstring>
+#include <vector>
 
 #include "api/handle.h"
 #include "common/slots.h"
@@ -131,6 +132,47 @@ TEST_F(PassPipeline, AMissingBindingIsCaught) {
     const Uniform u = Uniform::uint1(PF_LOC_FILL_COUNT, 64);
     runner.run({gl::ProgramId::fill, stat, 64, {{PF_SLOT_FILL, &a}}, {}, {u, u, u, u, u, u, u}});
     EXPECT_EQ(runner.binding_errors(), 4u);
+}
+
+// Passes and copies run under a Recording are kept, not issued; run_interleaved issues both
+// recordings, each in its own order (a copy after the fill it reads).
+TEST_F(PassPipeline, RecordedPassesRunWhenIssuedInterleaved) {
+    SimPtr handle = create(test_desc(8, 8, 8));
+    ASSERT_TRUE(handle);
+    const Simulation& sim = *pf::entry(handle)->impl;
+    gl::Buffer uniforms(sim.api(), sizeof(SimUniforms), GL_DYNAMIC_DRAW, "test_uniforms");
+    const std::vector<uint32_t> zeros(64, 0u);
+    gl::Buffer a(sim.api(), 64 * 4, GL_DYNAMIC_COPY, "test_a"), b(sim.api(), 64 * 4, GL_DYNAMIC_COPY, "test_b"),
+        c(sim.api(), 64 * 4, GL_DYNAMIC_COPY, "test_c");
+    for (gl::Buffer* x : {&a, &b, &c}) x->upload(0, 64 * 4, zeros.data());
+    Log log;
+    PassRunner runner(sim.api(), log, uniforms, PF_UBO_SIM);
+    const StatId stat = runner.add_stat("fill", PF_PASS_CLEAR);
+    ASSERT_EQ(runner.prepare(gl::ProgramId::fill), "");
+    PassRunner::Recorded first, second;
+    {
+        const PassRunner::Recording recording(runner, first);
+        runner.fill(a, 64, 7u, stat);
+        runner.copy(a, c, 64 * 4);
+    }
+    {
+        const PassRunner::Recording recording(runner, second);
+        runner.fill(b, 64, 9u, stat);
+    }
+    ASSERT_EQ(first.size(), 2u);
+    ASSERT_EQ(second.size(), 1u);
+    const auto word = [](const gl::Buffer& x) {
+        uint32_t w = 0;
+        x.download(63 * 4, 4, &w);
+        return w;
+    };
+    EXPECT_EQ(word(a), 0u) << "a recorded pass ran";
+    EXPECT_EQ(word(c), 0u) << "a recorded copy ran";
+    runner.run_interleaved(first, second);
+    EXPECT_EQ(word(a), 7u);
+    EXPECT_EQ(word(b), 9u);
+    EXPECT_EQ(word(c), 7u) << "the copy did not wait for the fill it reads";
+    EXPECT_EQ(runner.binding_errors(), 0u);
 }
 
 }  // namespace
