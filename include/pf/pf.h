@@ -186,7 +186,8 @@ typedef enum pf_transfer {
     PF_TRANSFER_FORCE32 = 0x7fffffff
 } pf_transfer;
 
-/** Particle advection integrators, cheapest first (docs/design.md §4). */
+/** Particle advection integrators: Euler and leapfrog move a particle at its own velocity, RK2 and RK3
+ *  through the grid's (docs/design.md §4, §5). */
 typedef enum pf_advection {
     PF_ADVECTION_EULER = 0,       /**< explicit Euler with the particle's velocity (the original) */
     PF_ADVECTION_RK2 = 1,         /**< midpoint rule through the grid velocity (2 samples per substep) */

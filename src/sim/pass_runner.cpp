@@ -93,7 +93,7 @@ void PassRunner::run(const Pass& pass) {
     if (!pass.indirect.buffer && pass.invocations == 0) return;
     StatId stat = override_ != kNoOverride ? override_ : pass.stat;
     if (recording_) {
-        RecordedOp op{pass};
+        RecordedOp op{RecordedOp::Kind::pass, pass};
         op.pass.stat = stat;
         recording_->push_back(op);
         return;
@@ -173,8 +173,13 @@ void PassRunner::issue(const Pass& pass, StatId stat, bool barrier, bool& record
 }
 
 void PassRunner::run_interleaved(const Recorded& a, const Recorded& b) {
-    if (a.empty() && b.empty()) return;
-    open_timing((a.empty() ? b : a).front().pass.stat);
+    for (const Recorded* stream : {&a, &b}) {
+        const auto first = std::find_if(stream->begin(), stream->end(),
+                                        [](const RecordedOp& op) { return op.kind == RecordedOp::Kind::pass; });
+        if (first == stream->end()) continue;
+        open_timing(first->pass.stat);
+        break;
+    }
     // Each stream's own "a record may have changed" (the other's records are not its concern);
     // the barrier before a pair carries the command bit when either needs it.
     bool written[2] = {records_written_, records_written_};
@@ -186,7 +191,7 @@ void PassRunner::run_interleaved(const Recorded& a, const Recorded& b) {
         for (int s = 0; s < 2; ++s) {
             if (i >= streams[s]->size()) continue;
             const RecordedOp& op = (*streams[s])[i];
-            if (op.copy_bytes) {
+            if (op.kind == RecordedOp::Kind::copy) {
                 copy(*op.copy_src, op.copy_src_offset, *op.copy_dst, op.copy_dst_offset, op.copy_bytes);
                 continue;
             }
@@ -223,8 +228,9 @@ bool PassRunner::writes_indirect_records(gl::ProgramId id) {
 }
 
 void PassRunner::copy(const gl::Buffer& src, size_t src_offset, const gl::Buffer& dst, size_t dst_offset, size_t bytes) {
+    if (bytes == 0) return;
     if (recording_) {
-        RecordedOp op{Pass{gl::ProgramId::fill, 0, 0, {}}};
+        RecordedOp op{RecordedOp::Kind::copy, Pass{gl::ProgramId::fill, 0, 0, {}}};
         op.copy_src = &src, op.copy_dst = &dst;
         op.copy_src_offset = src_offset, op.copy_dst_offset = dst_offset, op.copy_bytes = bytes;
         recording_->push_back(op);

@@ -98,9 +98,11 @@ public:
         StatId saved_;
     };
 
-    // A pass (its statistics entry resolved when it was recorded) or, when copy_bytes is not 0,
-    // a copy, kept by a Recording instead of being issued.
+    // A pass (its statistics entry resolved when it was recorded) or a copy, kept by a
+    // Recording instead of being issued.
     struct RecordedOp {
+        enum class Kind : uint8_t { pass, copy };
+        Kind kind = Kind::pass;
         Pass pass;
         const gl::Buffer* copy_src = nullptr;
         const gl::Buffer* copy_dst = nullptr;
@@ -124,7 +126,7 @@ public:
     // lockstep: one barrier before each pair of their passes and none between the two, so the
     // GPU may overlap them (docs/performance.md, "Independent dispatches overlap"). Each pass is
     // counted under its own entry; the whole is timed as one pair under the entry of the first
-    // pass (a timestamp between the two would wait for the first).
+    // pass of `a` (else of `b`; a timestamp between the two would wait for the first).
     void run_interleaved(const Recorded& a, const Recorded& b);
 
     uint32_t binding_errors() const { return binding_errors_; }

@@ -308,6 +308,10 @@ void Simulation::set_drift(float seconds) {
 
 void Simulation::run_half_move() {
     update_substep_table();
+    // The move stops before SOLID cells (common/particle_trace.glsl): the obstacles as they stand
+    // now, on cells otherwise AIR (nothing else is known before P2G; classify rewrites them all).
+    runner_->fill(cell_type_, uint32_t(cells_), PF_CELL_AIR, stat_.classify);
+    run_effects(EffectStage::before_first_move);
     set_drift(0.5f * uniform_data_.dt);
     substep_.run(SubstepContext{}, "advect");
     set_drift(uniform_data_.dt);
@@ -435,7 +439,7 @@ void Simulation::build_substep_table() {
     });
     t.add("g2p", [this](const SubstepContext&) { run_g2p(); });
     t.add("advect", [this](const SubstepContext& c) {
-        if (c.half_move) set_drift(0.5f * uniform_data_.dt);  // the step's last pass: the next step sets it again
+        if (c.half_move) set_drift(0.5f * uniform_data_.dt);  // the step's last move: the next step sets it again
         run_advect();
     });
     // Effects that are on, after the core stage their stage follows (lowest feature bit first).

@@ -78,6 +78,8 @@ struct FrameInfo {
 // substep stages repeat every substep, the others run once per step.
 enum class EffectStage : uint8_t {
     before_substeps,    // once per step, before the first substep (emitters add particles)
+    before_first_move,  // once per step, PF_ADVECTION_LEAPFROG only: cells are all AIR before the
+                        // half move that precedes the first projection (obstacles mark SOLID)
     after_grid_forces,  // face velocities hold u_old + gravity (force fields)
     after_classify,     // cells are FLUID / AIR (obstacles mark SOLID and set their faces)
     after_velocity_update,  // the pressure is solved and applied (obstacles sum their forces)

@@ -141,7 +141,10 @@ void ObstaclesEffect::run(EffectStage stage, PassRunner& runner, const EffectBuf
     if (uploaded_ == 0) return;
     const Bind records{PF_SLOT_OBSTACLES, &records_};
     const Uniforms count{Uniform::uint1(PF_LOC_EFFECT_COUNT, uploaded_)};
-    if (stage == EffectStage::after_classify) {
+    if (stage == EffectStage::before_first_move) {
+        // Only the cells: a leapfrog's first half move stops before them as every move does.
+        runner.run({gl::ProgramId::obstacle_cells, grid_stat_, b.cells, {{PF_SLOT_CELL_TYPE, &b.cell_type}, records}, {}, count, sdf_textures_});
+    } else if (stage == EffectStage::after_classify) {
         runner.run({gl::ProgramId::obstacle_cells, grid_stat_, b.cells, {{PF_SLOT_CELL_TYPE, &b.cell_type}, records}, {}, count, sdf_textures_});
         runner.run({gl::ProgramId::obstacle_faces, grid_stat_, b.faces,
                     {{PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_FACE_VEL, &b.face_vel}, records},

@@ -43,8 +43,8 @@ public:
     uint32_t feature() const override { return kFeature; }
     const char* name() const override { return "obstacles"; }
     uint32_t stages() const override {
-        return stage_bit(EffectStage::after_classify) | stage_bit(EffectStage::after_velocity_update) |
-               stage_bit(EffectStage::after_advect);
+        return stage_bit(EffectStage::before_first_move) | stage_bit(EffectStage::after_classify) |
+               stage_bit(EffectStage::after_velocity_update) | stage_bit(EffectStage::after_advect);
     }
     pf_result init(const gl::Api& gl, PassRunner& runner, const Log& log, const char* fn) override;
     std::vector<gl::ProgramId> programs() const override;
