@@ -513,7 +513,9 @@ typedef struct pf_stats {
 typedef struct pf_pass_stats {
     const char* name;             /**< stable short name ("p2g", "jacobi", ...); valid until pf_destroy */
     pf_pass group;                /**< the pf_stats.gpu_ms / dispatches entry this pass adds to */
-    float gpu_ms;                 /**< GPU ms in the measured step (pf_stats.gpu_step), summed over substeps */
+    float gpu_ms;                 /**< GPU ms in the measured step (pf_stats.gpu_step), summed over substeps; a
+                                       pass issued alongside another entry's is timed within that entry
+                                       ("volume_correction_solve" within the pressure solver's) and reads 0 */
     uint32_t dispatches;          /**< compute dispatches in the last pf_step (0: did not run) */
 } pf_pass_stats;
 
