@@ -301,6 +301,10 @@ void Simulation::upload_uniforms(float dt) {
     if (gpu_count_) copy_count_to_uniforms();  // the kernels compare with the GPU's live count
 }
 
+VolumeCorrection::Inputs Simulation::correction_inputs() const {
+    return {pos_, cell_type_, cell_count_, pressure_, face_fraction_, uint64_t(cells_), particle_count_};
+}
+
 void Simulation::set_drift(float seconds) {
     uniform_data_.drift_dt = seconds;
     uniforms_.upload(offsetof(SimUniforms, drift_dt), sizeof(float), &uniform_data_.drift_dt);
@@ -365,9 +369,9 @@ void Simulation::build_substep_table() {
         });
     }
     if (desc_.params.volume_correction > 0.0f) {
-        t.add("volume_correction", [this, cells](const SubstepContext& c) {
+        t.add("volume_correction", [this](const SubstepContext& c) {
             if (!c.correct_volume) return;
-            const VolumeCorrection::Inputs in{pos_, cell_type_, cell_count_, pressure_, face_fraction_, cells, particle_count_};
+            const VolumeCorrection::Inputs in = correction_inputs();
             // Its solve goes alongside the projection's (pressure_solve below), on its own solver's
             // buffers; per-kernel timing, which times every pass apart, keeps the two in turn.
             if (solvers_in_use_.correction && !runner_->kernel_timing()) {
@@ -396,7 +400,7 @@ void Simulation::build_substep_table() {
                       {{PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_}}});
         hydrostatic_start_pending_ = false;
     });
-    t.add("pressure_solve", [this, cells](const SubstepContext&) {
+    t.add("pressure_solve", [this](const SubstepContext&) {
         // What this solver needed recently (a readback of another solver's step says nothing).
         const bool known = recent_solver_ == desc_.params.pressure_solver;
         const PressureProblem problem{cell_type_, rhs_, pressure_, status_, solve_params(),
@@ -412,7 +416,7 @@ void Simulation::build_substep_table() {
         // (the correction's setup read the pressure before this solve changes it; its move
         // waits for both): issued in lockstep, one barrier a pair.
         correction_pending_ = false;
-        const VolumeCorrection::Inputs in{pos_, cell_type_, cell_count_, pressure_, face_fraction_, cells, particle_count_};
+        const VolumeCorrection::Inputs in = correction_inputs();
         PassRunner::Recorded correction, projection;
         {
             const PassRunner::Recording recording(*runner_, correction);
@@ -646,8 +650,7 @@ pf_result Simulation::run_effect_stages_for_test(std::initializer_list<EffectSta
 
 pf_result Simulation::run_volume_correction_for_test() {
     run_one_step_for_test(0.01f, [&] {
-        volume_correction_.run(*runner_, *solvers_in_use_.pressure, desc_.params,
-                               {pos_, cell_type_, cell_count_, pressure_, face_fraction_, uint64_t(cells_), particle_count_});
+        volume_correction_.run(*runner_, *solvers_in_use_.pressure, desc_.params, correction_inputs());
     });
     return PF_OK;
 }

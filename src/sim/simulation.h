@@ -203,6 +203,8 @@ private:
     pf_result prepare_particle_passes(const pf_sim_params& params, const char* fn);
     void zero_affine(uint32_t first, uint32_t count);
     void upload_uniforms(float dt);
+    // What the volume correction reads and moves (this substep's buffers).
+    VolumeCorrection::Inputs correction_inputs() const;
     // Sets the length of the next particle moves (advection and the passes after it: sim.drift_dt).
     void set_drift(float seconds);
     // Test hooks: one step of length dt that runs `passes` (timed and counted like a step).

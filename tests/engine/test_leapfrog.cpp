@@ -65,50 +65,5 @@ TEST_F(Leapfrog, AThrownBlockFollowsItsParabola) {
     EXPECT_NEAR(euler.vy, vy, 1e-3) << "both integrate the velocity alike";
 }
 
-// A leapfrog step starts with half a move, which stops before obstacles' SOLID cells like every
-// move: it takes them from the obstacles as they stand, not from the cells the step before left.
-// A jet at 8 m/s against a one-cell slab, one projection a frame (half moves of 3.3 cells): saved
-// after 2 frames and run 4 more; then the slab is moved across the jet's path, a frame stepped,
-// the snapshot restored and 4 frames run again: the same particles, bit for bit.
-TEST_F(Leapfrog, ARestoredJetContinuesAsTheOriginal) {
-    constexpr float dx = 0.02f;
-    pf_sim_desc d = test_desc(40, 10, 10, dx);
-    d.params.gravity[1] = 0.0f;
-    d.params.cfl = 16.0f;
-    d.params.max_substeps = 1;
-    d.params.advection = PF_ADVECTION_LEAPFROG;
-    d.features = PF_FEATURE_OBSTACLES;
-    SimPtr sim = create(d);
-    ASSERT_TRUE(sim);
-    pf_obstacle slab = pf_default_obstacle();
-    slab.shape = PF_OBSTACLE_BOX;
-    slab.position[0] = 0.51f, slab.position[1] = 0.1f, slab.position[2] = 0.1f;
-    slab.half_extents[0] = 0.5f * dx, slab.half_extents[1] = 0.2f, slab.half_extents[2] = 0.2f;
-    uint32_t id = 0;
-    ASSERT_EQ(pf_add_obstacle(sim.get(), &slab, &id), PF_OK) << last_log();
-    const float lo[3] = {0.06f, 0.04f, 0.04f}, hi[3] = {0.26f, 0.16f, 0.16f}, v[3] = {8.0f, 0.0f, 0.0f};
-    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, v), PF_OK);
-    const auto frames = [&](int n) {
-        for (int f = 0; f < n; ++f) ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
-    };
-    frames(2);
-    size_t size = 0;
-    ASSERT_EQ(pf_snapshot_size(sim.get(), &size), PF_OK);
-    std::vector<uint8_t> snap(size);
-    ASSERT_EQ(pf_save_snapshot(sim.get(), snap.data(), snap.size()), PF_OK) << last_log();
-    frames(4);
-    const ParticleState original = read_all(sim.get());
-    slab.position[0] = 0.31f;
-    ASSERT_EQ(pf_set_obstacle(sim.get(), id, &slab), PF_OK) << last_log();
-    frames(1);
-    ASSERT_EQ(pf_restore_snapshot(sim.get(), snap.data(), snap.size()), PF_OK) << last_log();
-    frames(4);
-    const ParticleState again = read_all(sim.get());
-    ASSERT_EQ(again.pos.size(), original.pos.size());
-    size_t differ = 0;
-    for (size_t i = 0; i < again.pos.size(); ++i) differ += again.pos[i] != original.pos[i];
-    EXPECT_EQ(differ, 0u) << "floats differing from the original continuation";
-}
-
 }  // namespace
 }  // namespace pf::test

@@ -318,11 +318,8 @@ void Volume::expect_same_in_turn(pf_pressure_solver solver, uint32_t separation,
         ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
         for (int f = 0; f < 20; ++f) ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
         pos[in_turn] = read_all(sim.get()).pos;
-        for (uint32_t i = 0;; ++i) {
-            pf_pass_stats ps{};
-            if (pf_get_pass_stats(sim.get(), i, &ps) != PF_OK) break;
+        for (const pf_pass_stats& ps : pass_list(sim.get()))
             if (std::string(ps.name).rfind("volume_correction_solve", 0) == 0) correction_dispatches[in_turn] += ps.dispatches;
-        }
     }
     ASSERT_EQ(pos[0].size(), pos[1].size());
     EXPECT_EQ(0, std::memcmp(pos[0].data(), pos[1].data(), pos[0].size() * 4)) << "the schedule changed the particles";
