@@ -19,6 +19,9 @@
 // --scale S builds every experiment S times larger: the runs use neither viscosity nor surface
 // tension (both off by default), so by Froude similarity only the number of 1/60 s frames per unit
 // of dimensionless time changes.
+// --perturb SEED... repeats every run from a lattice whose particles are each moved by up to a
+// thousandth of their spacing (seeded): a FLIP flow amplifies differences of that size, so one
+// run's RMS is one sample, and the mean and spread over seeds compare two schemes fairly.
 
 #include <glad/gl.h>
 
@@ -38,6 +41,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -127,14 +131,20 @@ std::vector<float> read_positions(pf_sim* sim) {
 
 // Particles on a 2x2x2 sub-lattice of every cell, those inside [lo, hi): the rest count of 8 per
 // cell with no jitter, so a resolution's initial state is exactly reproducible.
-void add_lattice(pf_sim* sim, glm::uvec3 n, double dx, glm::dvec3 lo, glm::dvec3 hi) {
+// The resting lattice of 2 x 2 x 2 particles a cell filling [lo, hi); perturb_seed > 0 moves each
+// particle by up to kPerturbation of the spacing along each axis (seeded), 0 keeps it exact.
+constexpr double kPerturbation = 1e-3;
+void add_lattice(pf_sim* sim, glm::uvec3 n, double dx, glm::dvec3 lo, glm::dvec3 hi, uint32_t perturb_seed) {
+    std::mt19937 rng(perturb_seed);
+    std::uniform_real_distribution<double> offset(-kPerturbation * dx / 2, kPerturbation * dx / 2);
     std::vector<float> pos;
     for (uint32_t k = 0; k < 2 * n.z; ++k)
         for (uint32_t j = 0; j < 2 * n.y; ++j)
             for (uint32_t i = 0; i < 2 * n.x; ++i) {
-                const glm::dvec3 p = (glm::dvec3(i, j, k) + 0.5) * (dx / 2);
-                if (glm::all(glm::greaterThanEqual(p, lo)) && glm::all(glm::lessThan(p, hi)))
-                    pos.insert(pos.end(), {float(p.x), float(p.y), float(p.z)});
+                glm::dvec3 p = (glm::dvec3(i, j, k) + 0.5) * (dx / 2);
+                if (!glm::all(glm::greaterThanEqual(p, lo)) || !glm::all(glm::lessThan(p, hi))) continue;
+                if (perturb_seed > 0) p += glm::dvec3(offset(rng), offset(rng), offset(rng));
+                pos.insert(pos.end(), {float(p.x), float(p.y), float(p.z)});
             }
     pfs::check(pf_add_particles(sim, pos.data(), nullptr, uint32_t(pos.size() / 3)), "pf_add_particles");
 }
@@ -255,6 +265,7 @@ struct Run {
     double wall_s = 0, substeps = 0;
     pf_advection advection = PF_ADVECTION_EULER;  // the integrator the run used
     float flip_ratio = 0.95f;                      // and its PIC/FLIP blend
+    float cfl = 1.0f;                              // and its projection CFL
     std::vector<double> t;                  // s, one per measurement (frame 0 is the initial state)
     std::map<std::string, std::vector<double>> measured;  // per quantity, m
     std::vector<Comparison> comparisons;    // one per series
@@ -279,7 +290,7 @@ double value_in(const Case& c, const std::string& var, double v, double scale) {
 double max_shift_in(const std::string& var) { return var == "t_s" ? 0.25 : 1.0; }
 
 Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, float cfl, const pf_advection* advection,
-             const float* flip_ratio, bool verbose) {
+             const float* flip_ratio, uint32_t perturb_seed, bool verbose) {
     Run r;
     pf_sim_desc desc = pf_default_sim_desc();
     desc.gl_get_proc_address = pfs::get_proc;
@@ -292,6 +303,7 @@ Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, fl
     if (flip_ratio) desc.params.flip_ratio = *flip_ratio;
     r.advection = desc.params.advection;
     r.flip_ratio = desc.params.flip_ratio;
+    r.cfl = desc.params.cfl;
 
     // The experiment's last data time (s, at this scale) and the frames to cover it, plus room for
     // the alignment shift.
@@ -342,7 +354,7 @@ Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, fl
         for (int k = 0; k < 3; ++k) box.position[k] = float(0.5 * (lo[k] + hi[k])), box.half_extents[k] = float(0.5 * (hi[k] - lo[k]));
         pfs::check(pf_add_obstacle(sim.get(), &box, nullptr), "pf_add_obstacle");
     }
-    add_lattice(sim.get(), r.grid, r.dx, water_lo, water_hi);
+    add_lattice(sim.get(), r.grid, r.dx, water_lo, water_hi, perturb_seed);
 
     auto measure = [&](double t) {
         const std::vector<float> pos = read_positions(sim.get());
@@ -387,6 +399,20 @@ Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, fl
     return r;
 }
 
+// Each series' RMS over the perturbed runs: mean, sample standard deviation, range.
+void print_spread(const Case& c, const std::string& preset, const std::vector<std::vector<double>>& rms) {
+    std::printf("\n%s / %s over %zu perturbed lattices:\n  %-22s %9s %9s %9s %9s\n", c.name.c_str(), preset.c_str(),
+                rms.empty() ? size_t(0) : rms[0].size(), "series", "rms mean", "sd", "min", "max");
+    for (size_t k = 0; k < c.series.size(); ++k) {
+        const std::vector<double>& v = rms[k];
+        double mean = 0, var = 0;
+        for (double x : v) mean += x / double(v.size());
+        for (double x : v) var += (x - mean) * (x - mean) / double(std::max<size_t>(v.size() - 1, 1));
+        std::printf("  %-22s %9.4f %9.4f %9.4f %9.4f\n", c.series[k].id.c_str(), mean, std::sqrt(var),
+                    *std::min_element(v.begin(), v.end()), *std::max_element(v.begin(), v.end()));
+    }
+}
+
 int run(int argc, char** argv) {
     uint32_t cells = 16;
     double scale = 1.0;
@@ -395,6 +421,7 @@ int run(int argc, char** argv) {
     float flip_ratio = 0.95f;
     std::vector<pf_quality> presets;
     std::vector<std::string> case_names;
+    std::vector<uint32_t> perturb_seeds;
     std::string json_path, data_path = PF_VALIDATION_DATA;
     bool verbose = false;
     CLI::App app{"pf_validation: pflip against published dam-break experiments (docs/validation_data.json)"};
@@ -418,6 +445,11 @@ int run(int argc, char** argv) {
     const CLI::Option* flip_given =
         app.add_option("--flip-ratio", flip_ratio, "override the presets' PIC/FLIP blend (0 = PIC, 1 = FLIP)")
             ->check(CLI::Range(0.0f, 1.0f));
+    app.add_option("--perturb", perturb_seeds,
+                   "run each case from the lattice moved by up to 1e-3 of its spacing, once per seed (repeatable; "
+                   "1 and up), and print each series' RMS mean and spread over the seeds")
+        ->check(CLI::Range(1u, 1000000u))
+        ->type_name("SEED");
     app.add_flag("--verbose", verbose, "pflip's info messages");
     try {
         app.parse(argc, argv);
@@ -426,6 +458,7 @@ int run(int argc, char** argv) {
     }
     if (presets.empty())
         for (const auto& [name, quality] : pfs::preset_choices()) presets.push_back(quality);
+    if (perturb_seeds.empty()) perturb_seeds.push_back(0);  // the exact lattice
 
     const std::vector<Case> all = load_cases(data_path);
     std::vector<Case> cases;
@@ -445,64 +478,70 @@ int run(int argc, char** argv) {
     for (const Case& c : cases) {
         for (const pf_quality quality : presets) {
             const std::string pname = pfs::choice_name(pfs::preset_choices(), quality);
-            const Run r = run_case(c, quality, cells, scale, cfl, advection_given->count() ? &advection : nullptr,
-                                   flip_given->count() ? &flip_ratio : nullptr, verbose);
-            std::printf("\n%s / %s: grid %ux%ux%u, dx %.4g m, %u particles, %u frames, %.2f substeps/frame, %.1f s, flags 0x%x\n",
-                        c.name.c_str(), pname.c_str(), r.grid.x, r.grid.y, r.grid.z, r.dx, r.particles, r.frames,
-                        r.substeps, r.wall_s, r.flags);
-            std::printf("  %-22s %-9s %4s %9s %9s %9s %9s %11s\n", "series", "value(t)", "n", "rms", "max", "bias", "sim_lead",
-                        "rms_aligned");
-            ojson row;
-            row["case"] = c.name;
-            row["preset"] = pname;
-            row["cells"] = cells;
-            row["scale"] = scale;
-            row["cfl"] = cfl > 0 ? double(cfl) : 1.0;  // every preset's is 1
-            row["advection"] = pfs::advection_name(r.advection);
-            row["flip_ratio"] = r.flip_ratio;
-            row["grid"] = {r.grid.x, r.grid.y, r.grid.z};
-            row["cell_size_m"] = r.dx;
-            row["particles"] = r.particles;
-            row["frames"] = r.frames;
-            row["substeps_per_frame"] = r.substeps;
-            row["flags"] = r.flags;
-            row["wall_s"] = r.wall_s;
-            ojson series = ojson::array();
-            for (size_t k = 0; k < c.series.size(); ++k) {
-                const Series& s = c.series[k];
-                const Comparison& cmp = r.comparisons[k];
-                const std::string vars = s.value + "(" + s.time + ")";
-                std::printf("  %-22s %-9s %4zu %9.4f %9.4f %+9.4f %+9.3f%s %10.4f\n", s.id.c_str(), vars.c_str(), cmp.n, cmp.rms,
-                            cmp.max_abs, cmp.bias, cmp.sim_lead, cmp.lead_at_bound ? "*" : " ", cmp.rms_aligned);
-                ojson js;
-                js["id"] = s.id;
-                js["label"] = s.label;
-                js["time"] = s.time;
-                js["value"] = s.value;
-                js["n"] = cmp.n;
-                js["rms"] = cmp.rms;
-                js["max_abs"] = cmp.max_abs;
-                js["bias"] = cmp.bias;
-                js["sim_lead"] = cmp.sim_lead;
-                js["sim_lead_at_bound"] = cmp.lead_at_bound;
-                js["rms_aligned"] = cmp.rms_aligned;
-                js["points"] = cmp.points;  // [time, data, simulation]
-                series.push_back(js);
+            std::vector<std::vector<double>> rms_over_seeds(c.series.size());
+            for (const uint32_t seed : perturb_seeds) {
+                const Run r = run_case(c, quality, cells, scale, cfl, advection_given->count() ? &advection : nullptr,
+                                       flip_given->count() ? &flip_ratio : nullptr, seed, verbose);
+                std::printf("\n%s / %s%s: grid %ux%ux%u, dx %.4g m, %u particles, %u frames, %.2f substeps/frame, %.1f s, flags 0x%x\n",
+                            c.name.c_str(), pname.c_str(), seed ? (", perturb " + std::to_string(seed)).c_str() : "", r.grid.x,
+                            r.grid.y, r.grid.z, r.dx, r.particles, r.frames, r.substeps, r.wall_s, r.flags);
+                std::printf("  %-22s %-9s %4s %9s %9s %9s %9s %11s\n", "series", "value(t)", "n", "rms", "max", "bias", "sim_lead",
+                            "rms_aligned");
+                ojson row;
+                row["case"] = c.name;
+                row["preset"] = pname;
+                row["cells"] = cells;
+                row["scale"] = scale;
+                row["cfl"] = r.cfl;
+                row["perturb_seed"] = seed;
+                row["advection"] = pfs::advection_name(r.advection);
+                row["flip_ratio"] = r.flip_ratio;
+                row["grid"] = {r.grid.x, r.grid.y, r.grid.z};
+                row["cell_size_m"] = r.dx;
+                row["particles"] = r.particles;
+                row["frames"] = r.frames;
+                row["substeps_per_frame"] = r.substeps;
+                row["flags"] = r.flags;
+                row["wall_s"] = r.wall_s;
+                ojson series = ojson::array();
+                for (size_t k = 0; k < c.series.size(); ++k) {
+                    const Series& s = c.series[k];
+                    const Comparison& cmp = r.comparisons[k];
+                    rms_over_seeds[k].push_back(cmp.rms);
+                    const std::string vars = s.value + "(" + s.time + ")";
+                    std::printf("  %-22s %-9s %4zu %9.4f %9.4f %+9.4f %+9.3f%s %10.4f\n", s.id.c_str(), vars.c_str(), cmp.n, cmp.rms,
+                                cmp.max_abs, cmp.bias, cmp.sim_lead, cmp.lead_at_bound ? "*" : " ", cmp.rms_aligned);
+                    ojson js;
+                    js["id"] = s.id;
+                    js["label"] = s.label;
+                    js["time"] = s.time;
+                    js["value"] = s.value;
+                    js["n"] = cmp.n;
+                    js["rms"] = cmp.rms;
+                    js["max_abs"] = cmp.max_abs;
+                    js["bias"] = cmp.bias;
+                    js["sim_lead"] = cmp.sim_lead;
+                    js["sim_lead_at_bound"] = cmp.lead_at_bound;
+                    js["rms_aligned"] = cmp.rms_aligned;
+                    js["points"] = cmp.points;  // [time, data, simulation]
+                    series.push_back(js);
+                }
+                row["series"] = series;
+                // The raw histories in seconds and metres at the experiment's size, for plotting.
+                ojson history;
+                std::vector<double> t;
+                for (double v : r.t) t.push_back(v / std::sqrt(scale));
+                history["t_s"] = t;
+                for (const auto& [name, values] : r.measured) {
+                    std::vector<double> v;
+                    for (double x : values) v.push_back(x / scale);
+                    history[name + "_m"] = v;
+                }
+                row["history"] = history;
+                results.push_back(row);
+                std::fflush(stdout);
             }
-            row["series"] = series;
-            // The raw histories in seconds and metres at the experiment's size, for plotting.
-            ojson history;
-            std::vector<double> t;
-            for (double v : r.t) t.push_back(v / std::sqrt(scale));
-            history["t_s"] = t;
-            for (const auto& [name, values] : r.measured) {
-                std::vector<double> v;
-                for (double x : values) v.push_back(x / scale);
-                history[name + "_m"] = v;
-            }
-            row["history"] = history;
-            results.push_back(row);
-            std::fflush(stdout);
+            if (perturb_seeds.size() > 1) print_spread(c, pname, rms_over_seeds);
         }
     }
     if (!json_path.empty()) {
