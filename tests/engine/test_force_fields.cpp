@@ -206,7 +206,7 @@ TEST_F(ForceFields, SubstepsCountTheFieldsAccelerations) {
     ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
     pf_stats st{};
     ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
-    EXPECT_EQ(int(st.substeps), int(std::ceil(kFrame * ((9.81 + 500.0 + 100.0) * kFrame) / 0.05)));
+    EXPECT_EQ(int(st.substeps), int(std::ceil(kFrame * ((9.81 + 500.0 + 100.0) * kFrame) / (d.params.cfl * 0.05))));
 
     pf_force_field wind = pf_default_force_field();
     wind.vector[2] = 20.0f, wind.drag = 1.0f;
@@ -216,7 +216,7 @@ TEST_F(ForceFields, SubstepsCountTheFieldsAccelerations) {
     ASSERT_EQ(pf_remove_force_field(sim.get(), swirl_id), PF_OK);
     ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK);
     ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
-    EXPECT_EQ(int(st.substeps), int(std::ceil(kFrame * 20.0 / 0.05)));
+    EXPECT_EQ(int(st.substeps), int(std::ceil(kFrame * 20.0 / (d.params.cfl * 0.05))));
 }
 
 TEST_F(ForceFields, BadFieldsAreRefusedAndChangeNothing) {
