@@ -130,9 +130,9 @@ std::vector<float> read_positions(pf_sim* sim) {
 }
 
 // Particles on a 2x2x2 sub-lattice of every cell, those inside [lo, hi): the rest count of 8 per
-// cell with no jitter, so a resolution's initial state is exactly reproducible.
-// The resting lattice of 2 x 2 x 2 particles a cell filling [lo, hi); perturb_seed > 0 moves each
-// particle by up to kPerturbation of the spacing along each axis (seeded), 0 keeps it exact.
+// cell with no jitter, so a resolution's initial state is exactly reproducible. perturb_seed > 0
+// moves each particle by up to kPerturbation of the spacing along each axis, seeded (so also
+// reproducible); 0 keeps the exact lattice.
 constexpr double kPerturbation = 1e-3;
 void add_lattice(pf_sim* sim, glm::uvec3 n, double dx, glm::dvec3 lo, glm::dvec3 hi, uint32_t perturb_seed) {
     std::mt19937 rng(perturb_seed);
@@ -399,6 +399,66 @@ Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, fl
     return r;
 }
 
+// Prints one run's comparisons and returns its JSON row (the time series and the comparisons).
+ojson report_run(const Case& c, const std::string& pname, const Run& r, uint32_t cells, double scale, uint32_t seed) {
+    std::printf("\n%s / %s%s: grid %ux%ux%u, dx %.4g m, %u particles, %u frames, %.2f substeps/frame, %.1f s, flags 0x%x\n",
+                c.name.c_str(), pname.c_str(), seed ? (", perturb " + std::to_string(seed)).c_str() : "", r.grid.x,
+                r.grid.y, r.grid.z, r.dx, r.particles, r.frames, r.substeps, r.wall_s, r.flags);
+    std::printf("  %-22s %-9s %4s %9s %9s %9s %9s %11s\n", "series", "value(t)", "n", "rms", "max", "bias", "sim_lead",
+                "rms_aligned");
+    ojson row;
+    row["case"] = c.name;
+    row["preset"] = pname;
+    row["cells"] = cells;
+    row["scale"] = scale;
+    row["cfl"] = r.cfl;
+    row["perturb_seed"] = seed;
+    row["advection"] = pfs::advection_name(r.advection);
+    row["flip_ratio"] = r.flip_ratio;
+    row["grid"] = {r.grid.x, r.grid.y, r.grid.z};
+    row["cell_size_m"] = r.dx;
+    row["particles"] = r.particles;
+    row["frames"] = r.frames;
+    row["substeps_per_frame"] = r.substeps;
+    row["flags"] = r.flags;
+    row["wall_s"] = r.wall_s;
+    ojson series = ojson::array();
+    for (size_t k = 0; k < c.series.size(); ++k) {
+        const Series& s = c.series[k];
+        const Comparison& cmp = r.comparisons[k];
+        const std::string vars = s.value + "(" + s.time + ")";
+        std::printf("  %-22s %-9s %4zu %9.4f %9.4f %+9.4f %+9.3f%s %10.4f\n", s.id.c_str(), vars.c_str(), cmp.n, cmp.rms,
+                    cmp.max_abs, cmp.bias, cmp.sim_lead, cmp.lead_at_bound ? "*" : " ", cmp.rms_aligned);
+        ojson js;
+        js["id"] = s.id;
+        js["label"] = s.label;
+        js["time"] = s.time;
+        js["value"] = s.value;
+        js["n"] = cmp.n;
+        js["rms"] = cmp.rms;
+        js["max_abs"] = cmp.max_abs;
+        js["bias"] = cmp.bias;
+        js["sim_lead"] = cmp.sim_lead;
+        js["sim_lead_at_bound"] = cmp.lead_at_bound;
+        js["rms_aligned"] = cmp.rms_aligned;
+        js["points"] = cmp.points;  // [time, data, simulation]
+        series.push_back(js);
+    }
+    row["series"] = series;
+    // The raw histories in seconds and metres at the experiment's size, for plotting.
+    ojson history;
+    std::vector<double> t;
+    for (double v : r.t) t.push_back(v / std::sqrt(scale));
+    history["t_s"] = t;
+    for (const auto& [name, values] : r.measured) {
+        std::vector<double> v;
+        for (double x : values) v.push_back(x / scale);
+        history[name + "_m"] = v;
+    }
+    row["history"] = history;
+    return row;
+}
+
 // Each series' RMS over the perturbed runs: mean, sample standard deviation, range.
 void print_spread(const Case& c, const std::string& preset, const std::vector<std::vector<double>>& rms) {
     std::printf("\n%s / %s over %zu perturbed lattices:\n  %-22s %9s %9s %9s %9s\n", c.name.c_str(), preset.c_str(),
@@ -482,63 +542,8 @@ int run(int argc, char** argv) {
             for (const uint32_t seed : perturb_seeds) {
                 const Run r = run_case(c, quality, cells, scale, cfl, advection_given->count() ? &advection : nullptr,
                                        flip_given->count() ? &flip_ratio : nullptr, seed, verbose);
-                std::printf("\n%s / %s%s: grid %ux%ux%u, dx %.4g m, %u particles, %u frames, %.2f substeps/frame, %.1f s, flags 0x%x\n",
-                            c.name.c_str(), pname.c_str(), seed ? (", perturb " + std::to_string(seed)).c_str() : "", r.grid.x,
-                            r.grid.y, r.grid.z, r.dx, r.particles, r.frames, r.substeps, r.wall_s, r.flags);
-                std::printf("  %-22s %-9s %4s %9s %9s %9s %9s %11s\n", "series", "value(t)", "n", "rms", "max", "bias", "sim_lead",
-                            "rms_aligned");
-                ojson row;
-                row["case"] = c.name;
-                row["preset"] = pname;
-                row["cells"] = cells;
-                row["scale"] = scale;
-                row["cfl"] = r.cfl;
-                row["perturb_seed"] = seed;
-                row["advection"] = pfs::advection_name(r.advection);
-                row["flip_ratio"] = r.flip_ratio;
-                row["grid"] = {r.grid.x, r.grid.y, r.grid.z};
-                row["cell_size_m"] = r.dx;
-                row["particles"] = r.particles;
-                row["frames"] = r.frames;
-                row["substeps_per_frame"] = r.substeps;
-                row["flags"] = r.flags;
-                row["wall_s"] = r.wall_s;
-                ojson series = ojson::array();
-                for (size_t k = 0; k < c.series.size(); ++k) {
-                    const Series& s = c.series[k];
-                    const Comparison& cmp = r.comparisons[k];
-                    rms_over_seeds[k].push_back(cmp.rms);
-                    const std::string vars = s.value + "(" + s.time + ")";
-                    std::printf("  %-22s %-9s %4zu %9.4f %9.4f %+9.4f %+9.3f%s %10.4f\n", s.id.c_str(), vars.c_str(), cmp.n, cmp.rms,
-                                cmp.max_abs, cmp.bias, cmp.sim_lead, cmp.lead_at_bound ? "*" : " ", cmp.rms_aligned);
-                    ojson js;
-                    js["id"] = s.id;
-                    js["label"] = s.label;
-                    js["time"] = s.time;
-                    js["value"] = s.value;
-                    js["n"] = cmp.n;
-                    js["rms"] = cmp.rms;
-                    js["max_abs"] = cmp.max_abs;
-                    js["bias"] = cmp.bias;
-                    js["sim_lead"] = cmp.sim_lead;
-                    js["sim_lead_at_bound"] = cmp.lead_at_bound;
-                    js["rms_aligned"] = cmp.rms_aligned;
-                    js["points"] = cmp.points;  // [time, data, simulation]
-                    series.push_back(js);
-                }
-                row["series"] = series;
-                // The raw histories in seconds and metres at the experiment's size, for plotting.
-                ojson history;
-                std::vector<double> t;
-                for (double v : r.t) t.push_back(v / std::sqrt(scale));
-                history["t_s"] = t;
-                for (const auto& [name, values] : r.measured) {
-                    std::vector<double> v;
-                    for (double x : values) v.push_back(x / scale);
-                    history[name + "_m"] = v;
-                }
-                row["history"] = history;
-                results.push_back(row);
+                results.push_back(report_run(c, pname, r, cells, scale, seed));
+                for (size_t k = 0; k < c.series.size(); ++k) rms_over_seeds[k].push_back(r.comparisons[k].rms);
                 std::fflush(stdout);
             }
             if (perturb_seeds.size() > 1) print_spread(c, pname, rms_over_seeds);
