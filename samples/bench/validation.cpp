@@ -464,12 +464,8 @@ void print_spread(const Case& c, const std::string& preset, const std::vector<st
     std::printf("\n%s / %s over %zu perturbed lattices:\n  %-22s %9s %9s %9s %9s\n", c.name.c_str(), preset.c_str(),
                 rms.empty() ? size_t(0) : rms[0].size(), "series", "rms mean", "sd", "min", "max");
     for (size_t k = 0; k < c.series.size(); ++k) {
-        const std::vector<double>& v = rms[k];
-        double mean = 0, var = 0;
-        for (double x : v) mean += x / double(v.size());
-        for (double x : v) var += (x - mean) * (x - mean) / double(std::max<size_t>(v.size() - 1, 1));
-        std::printf("  %-22s %9.4f %9.4f %9.4f %9.4f\n", c.series[k].id.c_str(), mean, std::sqrt(var),
-                    *std::min_element(v.begin(), v.end()), *std::max_element(v.begin(), v.end()));
+        const pfs::Summary v = pfs::summarize(rms[k]);
+        std::printf("  %-22s %9.4f %9.4f %9.4f %9.4f\n", c.series[k].id.c_str(), v.mean, v.stddev, v.min, v.max);
     }
 }
 
