@@ -187,7 +187,7 @@ typedef enum pf_transfer {
 } pf_transfer;
 
 /** Particle advection integrators: Euler and leapfrog move a particle at its own velocity, RK2 and RK3
- *  through the grid's (docs/design.md §4, §5). */
+ *  through the grid's, RK2_OFFSET at its own along the grid's path (docs/design.md §4, §5). */
 typedef enum pf_advection {
     PF_ADVECTION_EULER = 0,       /**< explicit Euler with the particle's velocity (the original) */
     PF_ADVECTION_RK2 = 1,         /**< midpoint rule through the grid velocity (2 samples per substep) */
@@ -199,7 +199,11 @@ typedef enum pf_advection {
                                        frame's end. Ballistic motion is exact and the collapse of a column
                                        lags less at large CFL (docs/accuracy.md); one extra advection pass a
                                        pf_step */
-    PF_ADVECTION_COUNT = 4,
+    PF_ADVECTION_RK2_OFFSET = 4,  /**< RK2's path through the grid velocity plus the particle's own difference
+                                       from it at the substep's start: FLIP's velocity where the grid is uniform,
+                                       bent by the grid's change along the path (walls, obstacles); holds the
+                                       validation bounds at a larger cfl than Euler (docs/accuracy.md) */
+    PF_ADVECTION_COUNT = 5,
     PF_ADVECTION_FORCE32 = 0x7fffffff
 } pf_advection;
 

@@ -65,6 +65,7 @@ class Advection(enum.IntEnum):
     RK2 = 1
     RK3 = 2
     LEAPFROG = 3
+    RK2_OFFSET = 4
 
 
 class Quality(enum.IntEnum):

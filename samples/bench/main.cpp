@@ -353,7 +353,8 @@ std::vector<RooflineRow> roofline_rows(const Result& r, const pfb::Ceilings& cei
     in.faces = (nx + 1) * ny * nz + nx * (ny + 1) * nz + nx * ny * (nz + 1);
     in.p2g = r.params.p2g;
     in.apic = r.params.transfer == PF_TRANSFER_APIC;
-    in.rk_advection = r.params.advection == PF_ADVECTION_RK2 || r.params.advection == PF_ADVECTION_RK3;
+    in.rk_advection = r.params.advection == PF_ADVECTION_RK2 || r.params.advection == PF_ADVECTION_RK3 ||
+                      r.params.advection == PF_ADVECTION_RK2_OFFSET;
     in.volume_correction = r.params.volume_correction > 0.0f;
     std::vector<RooflineRow> rows;
     for (pf_pass pass : {PF_PASS_P2G, PF_PASS_G2P, PF_PASS_ADVECT}) {

@@ -208,7 +208,7 @@ const char* solver_name(pf_pressure_solver solver) {
 
 namespace {
 const char* const kTransferNames[PF_TRANSFER_COUNT] = {"pic_flip", "apic"};
-const char* const kAdvectionNames[PF_ADVECTION_COUNT] = {"euler", "rk2", "rk3", "leapfrog"};
+const char* const kAdvectionNames[PF_ADVECTION_COUNT] = {"euler", "rk2", "rk3", "leapfrog", "rk2_offset"};
 const char* const kP2gNames[] = {"fixed", "float", "gather", "tiled"};
 static_assert(std::size(kP2gNames) == PF_P2G_COUNT, "a name per pf_p2g value");
 

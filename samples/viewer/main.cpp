@@ -297,7 +297,7 @@ const std::vector<ParamPreset>& param_presets() {
 const char* const kSolverLabels[] = {"Jacobi", "red-black GS / SOR", "CG", "PCG (Jacobi)", "MGPCG (multigrid)"};
 static_assert(sizeof(kSolverLabels) / sizeof(kSolverLabels[0]) == PF_PRESSURE_SOLVER_COUNT, "a label for every solver");
 const char* const kTransferLabels[PF_TRANSFER_COUNT] = {"PIC/FLIP", "APIC"};
-const char* const kAdvectionLabels[PF_ADVECTION_COUNT] = {"Euler", "RK2 (midpoint)", "RK3 (Ralston)", "Leapfrog"};
+const char* const kAdvectionLabels[PF_ADVECTION_COUNT] = {"Euler", "RK2 (midpoint)", "RK3 (Ralston)", "Leapfrog", "RK2 + own velocity"};
 
 /// One measured step in the rolling plots.
 struct StepSample {

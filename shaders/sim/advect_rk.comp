@@ -1,5 +1,9 @@
 // Advection through the grid velocity with an explicit Runge-Kutta scheme (design.md §4.10).
-// PF_RK_ORDER 2: the midpoint rule; 3: Ralston's third-order method. The particle is traced in
+// PF_RK_ORDER 2: the midpoint rule; 3: Ralston's third-order method. PF_RK_OFFSET 1
+// (PF_ADVECTION_RK2_OFFSET): every stage adds the particle's own difference from the grid velocity
+// at its start, d = v - u(x0), so a particle keeps its FLIP velocity where the grid is uniform and
+// the grid's change along the path bends it (at a wall, u's normal part and so the path's go to 0
+// instead of the move ending against the wall). The particle is traced in
 // sub-steps that cross at most one cell each, sized by the velocity at their start
 // (common/particle_trace.glsl). Every stage samples the projected, extrapolated face velocity
 // with G2P's clamped trilinear stencil (§3) at the stage position, and every stage position,
@@ -22,20 +26,28 @@ void main() {
     uint i = flat_id();
     if (i >= sim.particle_count) return;
     vec3 x0 = pos[i].xyz;
+#if PF_RK_OFFSET
+    const vec3 d = vel[i].xyz - sample_velocity(keep_in_domain(x0));  // sampled inside, as every stage
+#else
+    const vec3 d = vec3(0.0);
+#endif
     WallsCrossed walls = no_walls_crossed();
     float remaining = sim.drift_dt;
     bool was_solid = false;  // read before the second sub-step: a single one never looks
     for (int s = 0; s < kMaxTraceSubsteps; ++s) {
-        vec3 k1 = sample_velocity(x0);
+        vec3 k1 = sample_velocity(x0) + d;
         float dt = trace_substep(length(k1), remaining, s);
-        vec3 k2 = sample_velocity(keep_in_domain(x0 + (0.5 * dt) * k1));
+        vec3 k2 = sample_velocity(keep_in_domain(x0 + (0.5 * dt) * k1)) + d;
 #if PF_RK_ORDER == 2
         vec3 x = x0 + dt * k2;
 #elif PF_RK_ORDER == 3
-        vec3 k3 = sample_velocity(keep_in_domain(x0 + (0.75 * dt) * k2));
+        vec3 k3 = sample_velocity(keep_in_domain(x0 + (0.75 * dt) * k2)) + d;
         vec3 x = x0 + dt * ((2.0 / 9.0) * k1 + (1.0 / 3.0) * k2 + (4.0 / 9.0) * k3);
 #else
 #error PF_RK_ORDER must be 2 or 3
+#endif
+#ifndef PF_RK_OFFSET
+#error PF_RK_OFFSET must be 0 or 1
 #endif
         bool whole = s == 0 && dt == remaining;  // a single sub-step: the one-clock move
         WallsCrossed crossed = walls;

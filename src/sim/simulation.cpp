@@ -236,9 +236,10 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
     const uint64_t face_bytes = uint64_t(faces_) * sizeof(float) * (flip ? 2u : 1u);
     const bool ordered = !apic && face_bytes >= ordered_g2p_face_bytes_ && p2g_.has_particle_order(params);
     p.g2p_ordered = !ordered ? p.g2p : flip ? ProgramId::g2p_flip_ordered : ProgramId::g2p_pic_ordered;
-    p.advect = params.advection == PF_ADVECTION_RK2   ? ProgramId::advect_rk2
-               : params.advection == PF_ADVECTION_RK3 ? ProgramId::advect_rk3
-                                                      : ProgramId::advect;
+    p.advect = params.advection == PF_ADVECTION_RK2          ? ProgramId::advect_rk2
+               : params.advection == PF_ADVECTION_RK3        ? ProgramId::advect_rk3
+               : params.advection == PF_ADVECTION_RK2_OFFSET ? ProgramId::advect_rk2_offset
+                                                             : ProgramId::advect;
     return p;
 }
 

@@ -97,7 +97,8 @@ TEST_F(TransferAdvection, SwitchingBetweenStepsKeepsEveryParticle) {
         {PF_TRANSFER_APIC, PF_ADVECTION_EULER}, {PF_TRANSFER_APIC, PF_ADVECTION_RK3},
         {PF_TRANSFER_PIC_FLIP, PF_ADVECTION_RK2}, {PF_TRANSFER_APIC, PF_ADVECTION_RK2},
         {PF_TRANSFER_PIC_FLIP, PF_ADVECTION_RK3}, {PF_TRANSFER_APIC, PF_ADVECTION_LEAPFROG},
-        {PF_TRANSFER_PIC_FLIP, PF_ADVECTION_LEAPFROG}, {PF_TRANSFER_PIC_FLIP, PF_ADVECTION_EULER}};
+        {PF_TRANSFER_PIC_FLIP, PF_ADVECTION_LEAPFROG}, {PF_TRANSFER_PIC_FLIP, PF_ADVECTION_RK2_OFFSET},
+        {PF_TRANSFER_APIC, PF_ADVECTION_RK2_OFFSET}, {PF_TRANSFER_PIC_FLIP, PF_ADVECTION_EULER}};
     for (const auto& [transfer, advection] : sequence) {
         SCOPED_TRACE("transfer " + std::to_string(transfer) + ", advection " + std::to_string(advection));
         pf_sim_params p = sized_params();

@@ -1,8 +1,8 @@
 // Nothing tunnels at one projection a frame: a jet at 8 m/s crosses 6.7 cells of 2 cm
 // in a 1/60 s frame, traced in sub-steps of at most a cell. Against an obstacle one cell thick no
 // particle may end inside it or beyond it, and against each of the six walls none may leave the
-// domain; with Euler (the particle's own velocity), RK2 (the grid's) and leapfrog (Euler's move in
-// halves around the projection). A single move of
+// domain; with Euler (the particle's own velocity), RK2 (the grid's), leapfrog (Euler's move in
+// halves around the projection) and RK2_OFFSET (its own along the grid's path). A single move of
 // several cells puts the jet's front beyond the obstacle in one frame, where the obstacles' push
 // after advection never sees it.
 #include <cmath>
@@ -127,10 +127,11 @@ TEST_P(Tunnelling, AJetAtEachWallStaysInTheDomain) {
 }
 
 std::string scheme_name(const ::testing::TestParamInfo<pf_advection>& info) {
-    static const char* names[PF_ADVECTION_COUNT] = {"euler", "rk2", "rk3", "leapfrog"};
+    static const char* names[PF_ADVECTION_COUNT] = {"euler", "rk2", "rk3", "leapfrog", "rk2_offset"};
     return names[info.param];
 }
-INSTANTIATE_TEST_SUITE_P(Schemes, Tunnelling, ::testing::Values(PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_LEAPFROG),
+INSTANTIATE_TEST_SUITE_P(Schemes, Tunnelling, ::testing::Values(PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_LEAPFROG,
+                                                              PF_ADVECTION_RK2_OFFSET),
                          scheme_name);
 
 }  // namespace

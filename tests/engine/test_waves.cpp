@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <iterator>
 #include <string>
 #include <vector>
@@ -66,20 +67,23 @@ constexpr double kMarkerCellPeriodErrorBound = 0.05;
 
 class Waves : public GpuTest {
 protected:
-    // surface: PF_FREE_SURFACE_COUNT keeps the preset's own.
+    // surface: PF_FREE_SURFACE_COUNT keeps the preset's own; adjust, when given, changes the
+    // preset's parameters further.
     WaveRun run_wave(pf_quality quality, uint32_t thickness_cells, double periods, const char* label,
-                     pf_free_surface surface = PF_FREE_SURFACE_COUNT);
+                     pf_free_surface surface = PF_FREE_SURFACE_COUNT,
+                     const std::function<void(pf_sim_params&)>& adjust = {});
     // Every preset, or (with_accurate false) the fast and balanced ones.
     void check_presets(uint32_t thickness, bool with_accurate = true);
 };
 
 WaveRun Waves::run_wave(pf_quality quality, uint32_t thickness_cells, double periods, const char* label,
-                        pf_free_surface surface) {
+                        pf_free_surface surface, const std::function<void(pf_sim_params&)>& adjust) {
     pfs::StandingWave wave;
     wave.thickness = thickness_cells * wave.dx;
     pf_sim_desc d = test_desc(64, 48, thickness_cells, float(wave.dx));
     EXPECT_EQ(pf_quality_params(quality, &d.params), PF_OK);
     if (surface != PF_FREE_SURFACE_COUNT) d.params.free_surface = surface;
+    if (adjust) adjust(d.params);
     SimPtr sim = create(d);
     WaveRun run;
     if (!sim) return run;
@@ -162,6 +166,19 @@ TEST_F(Waves, MarkerCellSurfaceAddsNoEnergy) {
         const WaveRun r = run_wave(kPresets[i], thickness, periods_to_run(), label.c_str(), PF_FREE_SURFACE_MARKER_CELL);
         expect_wave(r, label, kMarkerCellLossPerPeriodBound, kMarkerCellPeriodErrorBound);
     }
+}
+
+// PF_ADVECTION_RK2_OFFSET (the particle's own velocity along the grid's path) in the balanced
+// preset at the projection CFL where it holds pf_validation's bounds (1.5, docs/accuracy.md): a
+// scheme that bends paths by the grid must not add energy on its own, and the wave keeps the
+// presets' bounds. The 1-cell tank, as the presets' fast mode.
+TEST_F(Waves, Rk2OffsetAddsNoEnergy) {
+    const WaveRun r = run_wave(PF_QUALITY_BALANCED, 1, periods_to_run(), "balanced_rk2_offset_cfl1.5_1",
+                               PF_FREE_SURFACE_COUNT, [](pf_sim_params& p) {
+                                   p.advection = PF_ADVECTION_RK2_OFFSET;
+                                   p.cfl = 1.5f;
+                               });
+    expect_wave(r, "balanced_rk2_offset_cfl1.5_1", kLossPerPeriodBound, kPeriodErrorBound);
 }
 
 }  // namespace pf::test

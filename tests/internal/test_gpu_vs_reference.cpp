@@ -131,7 +131,8 @@ struct Pipeline {
 void PrintTo(const Pipeline& p, std::ostream* os) { *os << p.name; }
 const Pipeline kPipelines[] = {{"FlipEuler", PF_TRANSFER_PIC_FLIP, PF_ADVECTION_EULER},
                                {"ApicRk2", PF_TRANSFER_APIC, PF_ADVECTION_RK2},
-                               {"ApicRk3", PF_TRANSFER_APIC, PF_ADVECTION_RK3}};
+                               {"ApicRk3", PF_TRANSFER_APIC, PF_ADVECTION_RK3},
+                               {"FlipRk2Offset", PF_TRANSFER_PIC_FLIP, PF_ADVECTION_RK2_OFFSET}};
 
 class GpuVsReference : public GpuTest, public ::testing::WithParamInterface<std::tuple<uint32_t, Pipeline>> {};
 

@@ -5,7 +5,9 @@
 // puts it. Particles start everywhere, walls included, so the clamp of every sub-step is
 // exercised. With RK2 and RK3 the reference's own single move (a trace of sub-steps of 16 cells)
 // lands far from its trace: the comparison can tell a trace from a single move. (Euler's path is
-// a straight line at the particle's velocity, the same in sub-steps as in one move.)
+// a straight line at the particle's velocity, the same in sub-steps as in one move.) RK2_OFFSET's
+// particles carry velocities of their own (FLIP with the grid unchanged keeps them), so its
+// offset from the field is not zero.
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -41,7 +43,10 @@ protected:
     TraceRun run(pf_advection scheme) {
         pf_sim_desc d = test_desc(kN, kN, kN, kDx);
         d.params.gravity[1] = 0.0f;
-        d.params.flip_ratio = 0.0f;  // Euler moves with G2P's (PIC) velocity: the same field
+        // Euler moves with G2P's (PIC) velocity: the same field. RK2_OFFSET's particles keep
+        // their own (FLIP: the grid's change, zero here, added to them).
+        const bool own = scheme == PF_ADVECTION_RK2_OFFSET;
+        d.params.flip_ratio = own ? 1.0f : 0.0f;
         d.params.advection = scheme;
         d.max_speed = 100.0f;
         SimPtr handle = create(d);
@@ -70,24 +75,26 @@ protected:
 
         std::mt19937 rng(7);
         std::uniform_real_distribution<float> u01(0.0f, 1.0f);
-        std::vector<float> pos;
+        std::vector<float> pos, vel;
         ref::Particles particles;
         for (int p = 0; p < 2000; ++p) {
-            glm::vec3 x;
+            glm::vec3 x, v(0.0f);
             for (int a = 0; a < 3; ++a) x[a] = d.origin[a] + kDx * kN * u01(rng);
+            if (own) v = float(kSpeed) * (glm::vec3(u01(rng), u01(rng), u01(rng)) - 0.5f);
             pos.insert(pos.end(), {x.x, x.y, x.z});
+            vel.insert(vel.end(), {v.x, v.y, v.z});
             particles.pos.emplace_back(x);
+            particles.vel.emplace_back(v);
         }
-        particles.vel.assign(particles.pos.size(), glm::dvec3(0.0));
-        EXPECT_EQ(pf_add_particles(handle.get(), pos.data(), nullptr, uint32_t(pos.size() / 3)), PF_OK) << last_log();
+        EXPECT_EQ(pf_add_particles(handle.get(), pos.data(), vel.data(), uint32_t(pos.size() / 3)), PF_OK) << last_log();
         EXPECT_EQ(sim.run_g2p_and_advect_for_test(float(kDt)), PF_OK) << last_log();
         const ParticleState end = read_all(handle.get());
 
         // The reference's trace (sub-steps of at most one cell), and its single move.
         const ref::Particles start = particles;
-        ref::g2p(grid, particles, field, field, 0.0, double(d.max_speed));
+        ref::g2p(grid, particles, field, field, double(d.params.flip_ratio), double(d.max_speed));
         ref::Particles single = particles;
-        const ref::Advection rk = scheme == PF_ADVECTION_RK2 ? ref::Advection::rk2 : ref::Advection::rk3;
+        const ref::Advection rk = ref::Advection(scheme);  // the reference's values are pf_advection's
         if (scheme == PF_ADVECTION_EULER) {
             ref::advect(grid, particles, kDt);
             single = particles;
@@ -109,7 +116,7 @@ protected:
 };
 
 TEST_F(ParticleTrace, MovesOfSeveralCellsFollowTheReferenceTrace) {
-    for (pf_advection scheme : {PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_RK3}) {
+    for (pf_advection scheme : {PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_RK3, PF_ADVECTION_RK2_OFFSET}) {
         const TraceRun traced = run(scheme);
         std::printf("scheme %d: moved %.2f cells on average; |GPU - reference trace| at most %.2e cells; a single "
                     "move lands up to %.2e cells from the trace\n",

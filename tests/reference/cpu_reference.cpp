@@ -585,15 +585,16 @@ void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>
     for (size_t p = 0; p < particles.pos.size(); ++p) {
         glm::dvec3& x0 = particles.pos[p];
         glm::dvec3 stopped = p < particles.vel.size() ? particles.vel[p] : glm::dvec3(0.0);
+        const glm::dvec3 offset = scheme == Advection::rk2_offset ? stopped - u(x0) : glm::dvec3(0.0);
         double remaining = dt;
         for (int s = 0; s < kMaxTraceSubsteps; ++s) {
-            const glm::dvec3 k1 = u(x0);
+            const glm::dvec3 k1 = u(x0) + offset;
             const double speed = glm::length(k1);
             const bool last = speed * remaining <= reach || s == kMaxTraceSubsteps - 1;
             const double h = last ? remaining : reach / speed;
-            const glm::dvec3 k2 = u(x0 + 0.5 * h * k1);
+            const glm::dvec3 k2 = u(x0 + 0.5 * h * k1) + offset;
             glm::dvec3 x;
-            if (scheme == Advection::rk2) {
+            if (scheme != Advection::rk3) {
                 x = x0 + h * k2; // midpoint
             } else {
                 const glm::dvec3 k3 = u(x0 + 0.75 * h * k2); // Ralston's third order
