@@ -1,9 +1,11 @@
 // Advection through the grid velocity with an explicit Runge-Kutta scheme (design.md §4.10).
 // PF_RK_ORDER 2: the midpoint rule; 3: Ralston's third-order method. PF_RK_OFFSET 1
-// (PF_ADVECTION_RK2_OFFSET): every stage adds the particle's own difference from the grid velocity
-// at its start, d = v - u(x0), so a particle keeps its FLIP velocity where the grid is uniform and
-// the grid's change along the path bends it (at a wall, u's normal part and so the path's go to 0
-// instead of the move ending against the wall). The particle is traced in
+// (PF_ADVECTION_RK2_OFFSET): the first stage is the particle's own velocity v and every later one
+// adds its difference from the grid velocity at its start, d = v - u(x0), so a particle keeps its
+// FLIP velocity where the grid is uniform and the grid's change along the path bends it (at a
+// wall, u's normal part and so the path's go to 0 instead of the move ending against the wall);
+// PF_ORDERED walks the particles in the tiled P2G's order, as G2P does on large grids (its reads
+// of the faces are gathers too). The particle is traced in
 // sub-steps that cross at most one cell each, sized by the velocity at their start
 // (common/particle_trace.glsl). Every stage samples the projected, extrapolated face velocity
 // with G2P's clamped trilinear stencil (§3) at the stage position, and every stage position,
@@ -18,16 +20,19 @@ layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
 layout(std430, binding = PF_SLOT_PARTICLE_VEL) buffer Vel { vec4 vel[]; };
 layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_vel[]; };
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+#include "common/particle_order.glsl"
 #include "common/particle_trace.glsl"
 
 #include "common/face_velocity.glsl"
 
 void main() {
-    uint i = flat_id();
-    if (i >= sim.particle_count) return;
+    uint t = flat_id();
+    if (t >= sim.particle_count) return;
+    uint i = particle_slot(t);
     vec3 x0 = pos[i].xyz;
 #if PF_RK_OFFSET
-    const vec3 d = vel[i].xyz - sample_velocity(keep_in_domain(x0));  // sampled inside, as every stage
+    const vec3 v0 = vel[i].xyz;
+    const vec3 d = v0 - sample_velocity(keep_in_domain(x0));  // sampled inside, as every stage
 #else
     const vec3 d = vec3(0.0);
 #endif
@@ -35,7 +40,11 @@ void main() {
     float remaining = sim.drift_dt;
     bool was_solid = false;  // read before the second sub-step: a single one never looks
     for (int s = 0; s < kMaxTraceSubsteps; ++s) {
-        vec3 k1 = sample_velocity(x0) + d;
+#if PF_RK_OFFSET
+        vec3 k1 = s == 0 ? v0 : sample_velocity(x0) + d;
+#else
+        vec3 k1 = sample_velocity(x0);
+#endif
         float dt = trace_substep(length(k1), remaining, s);
         vec3 k2 = sample_velocity(keep_in_domain(x0 + (0.5 * dt) * k1)) + d;
 #if PF_RK_ORDER == 2

@@ -196,6 +196,7 @@ private:
     struct ParticlePrograms {
         gl::ProgramId grid_forces, g2p, advect;
         gl::ProgramId g2p_ordered;  // G2P in the P2G scheme's particle order, if it has one (else g2p)
+        gl::ProgramId advect_ordered;  // the advection in that order where it gathers from the grid too (else advect)
     };
     ParticlePrograms particle_programs(const pf_sim_params& params) const;
     // Prepares the P2G scheme, builds those programs and, for APIC, allocates the affine buffer

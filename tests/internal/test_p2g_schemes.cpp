@@ -658,13 +658,17 @@ TEST_F(P2gSchemes, TiledCountsReturnToZeroWhereParticlesLeft) {
 // G2P in the tiled P2G's order (large grids only, so forced here by the test hook) computes every
 // particle as in slot order: 30 frames of a dam break, PIC/FLIP and pure PIC, bit-identical with
 // and without it, and the ordered kernel is the one that ran (counted per kernel).
+// RK2_OFFSET's trace walks the same order (its reads of the faces are gathers too).
 TEST_F(P2gSchemes, OrderedG2pGivesBitIdenticalParticles) {
-    for (float flip_ratio : {0.95f, 0.0f}) {
+    const std::pair<float, pf_advection> cases[] = {
+        {0.95f, PF_ADVECTION_EULER}, {0.0f, PF_ADVECTION_EULER}, {0.95f, PF_ADVECTION_RK2_OFFSET}};
+    for (const auto& [flip_ratio, advection] : cases) {
         ParticleState result[2];
         for (int ordered = 0; ordered < 2; ++ordered) {
             pf_sim_desc d = test_desc(32, 16, 16, 1.0f / 16.0f);
             ASSERT_EQ(pf_quality_params(PF_QUALITY_BALANCED, &d.params), PF_OK);
             d.params.flip_ratio = flip_ratio;
+            d.params.advection = advection;
             SimPtr handle = create(d);
             ASSERT_TRUE(handle);
             Simulation& sim = *pf::entry(handle)->impl;
@@ -674,18 +678,21 @@ TEST_F(P2gSchemes, OrderedG2pGivesBitIdenticalParticles) {
             ASSERT_EQ(pf_fill_box(handle.get(), lo, hi, nullptr), PF_OK);
             for (int f = 0; f < 30; ++f) ASSERT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);
             result[ordered] = read_all(handle.get());
-            const std::string kernel = flip_ratio > 0.0f ? "g2p:g2p_flip_ordered" : "g2p:g2p_pic_ordered";
-            uint32_t dispatches = 0;
-            for (const pf_pass_stats& st : pass_list(handle.get()))
-                if (kernel == st.name) dispatches += st.dispatches;
-            if (ordered)
-                EXPECT_GT(dispatches, 0u) << kernel << " never ran";
-            else
-                EXPECT_EQ(dispatches, 0u) << kernel << " ran below its threshold";
+            std::vector<std::string> kernels{flip_ratio > 0.0f ? "g2p:g2p_flip_ordered" : "g2p:g2p_pic_ordered"};
+            if (advection == PF_ADVECTION_RK2_OFFSET) kernels.push_back("advect:advect_rk2_offset_ordered");
+            for (const std::string& kernel : kernels) {
+                uint32_t dispatches = 0;
+                for (const pf_pass_stats& st : pass_list(handle.get()))
+                    if (kernel == st.name) dispatches += st.dispatches;
+                if (ordered)
+                    EXPECT_GT(dispatches, 0u) << kernel << " never ran";
+                else
+                    EXPECT_EQ(dispatches, 0u) << kernel << " ran below its threshold";
+            }
         }
         ASSERT_EQ(result[0].count(), result[1].count());
-        EXPECT_TRUE(result[0].pos == result[1].pos) << "positions differ, flip ratio " << flip_ratio;
-        EXPECT_TRUE(result[0].vel == result[1].vel) << "velocities differ, flip ratio " << flip_ratio;
+        EXPECT_TRUE(result[0].pos == result[1].pos) << "positions differ, flip ratio " << flip_ratio << ", advection " << advection;
+        EXPECT_TRUE(result[0].vel == result[1].vel) << "velocities differ, flip ratio " << flip_ratio << ", advection " << advection;
     }
 }
 

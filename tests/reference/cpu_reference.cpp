@@ -585,10 +585,11 @@ void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>
     for (size_t p = 0; p < particles.pos.size(); ++p) {
         glm::dvec3& x0 = particles.pos[p];
         glm::dvec3 stopped = p < particles.vel.size() ? particles.vel[p] : glm::dvec3(0.0);
-        const glm::dvec3 offset = scheme == Advection::rk2_offset ? stopped - u(x0) : glm::dvec3(0.0);
+        const bool own = scheme == Advection::rk2_offset;
+        const glm::dvec3 v0 = stopped, offset = own ? v0 - u(x0) : glm::dvec3(0.0);
         double remaining = dt;
         for (int s = 0; s < kMaxTraceSubsteps; ++s) {
-            const glm::dvec3 k1 = u(x0) + offset;
+            const glm::dvec3 k1 = own && s == 0 ? v0 : u(x0) + offset;
             const double speed = glm::length(k1);
             const bool last = speed * remaining <= reach || s == kMaxTraceSubsteps - 1;
             const double h = last ? remaining : reach / speed;
