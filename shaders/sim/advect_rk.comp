@@ -15,6 +15,9 @@
 // the particle's velocity spirals out of a rotating flow by sqrt(1 + w^2 dt^2) per step; these
 // schemes follow the grid's flow to O(dt^3) and O(dt^4) per sub-step.
 #include "common/sim.glsl"
+#if !defined(PF_RK_OFFSET) || (PF_RK_OFFSET && PF_RK_ORDER != 2)
+#error PF_RK_OFFSET must be 0, or 1 with PF_RK_ORDER 2
+#endif
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
 layout(std430, binding = PF_SLOT_PARTICLE_VEL) buffer Vel { vec4 vel[]; };
@@ -50,13 +53,10 @@ void main() {
 #if PF_RK_ORDER == 2
         vec3 x = x0 + dt * k2;
 #elif PF_RK_ORDER == 3
-        vec3 k3 = sample_velocity(keep_in_domain(x0 + (0.75 * dt) * k2)) + d;
+        vec3 k3 = sample_velocity(keep_in_domain(x0 + (0.75 * dt) * k2));
         vec3 x = x0 + dt * ((2.0 / 9.0) * k1 + (1.0 / 3.0) * k2 + (4.0 / 9.0) * k3);
 #else
 #error PF_RK_ORDER must be 2 or 3
-#endif
-#ifndef PF_RK_OFFSET
-#error PF_RK_OFFSET must be 0 or 1
 #endif
         bool whole = s == 0 && dt == remaining;  // a single sub-step: the one-clock move
         WallsCrossed crossed = walls;
