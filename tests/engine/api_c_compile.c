@@ -16,3 +16,9 @@ int pf_test_c_header_defaults_ok(void) {
     return field.radius > 0.0f && obstacle.half_extents[0] > 0.0f && desc.grid_size[0] > 0 && params.pressure_iterations > 0 && pf_version() == PF_VERSION &&
            pf_result_string(PF_OK) != 0;
 }
+
+/* A C caller may pass any bits where the API takes an enum (C converts them; a C++ program may not
+ * even load a value beyond the enum's range, which UBSan reports): the library must refuse them. */
+pf_result pf_test_c_set_gpu_timing_bits(pf_sim* sim, unsigned bits);
+
+pf_result pf_test_c_set_gpu_timing_bits(pf_sim* sim, unsigned bits) { return pf_set_gpu_timing(sim, (pf_gpu_timing)bits); }
