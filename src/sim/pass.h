@@ -41,10 +41,12 @@ class Bindings {
 public:
     Bindings() = default;
     Bindings(std::initializer_list<Bind> binds) {
-        for (const Bind& b : binds) {
-            if (count_ < binds_.size()) binds_[count_++] = b;
-            else overflow_ = true;  // PassRunner refuses the pass
-        }
+        for (const Bind& b : binds) add(b);
+    }
+    // One more binding, for passes whose optional buffers depend on the program chosen.
+    void add(const Bind& b) {
+        if (count_ < binds_.size()) binds_[count_++] = b;
+        else overflow_ = true;  // PassRunner refuses the pass
     }
     bool overflow() const { return overflow_; }
     const Bind* begin() const { return binds_.data(); }

@@ -494,11 +494,9 @@ void Simulation::run_g2p() {
     const gl::ProgramId g2p = ordered ? programs.g2p_ordered : programs.g2p;
     const Bind last = desc_.params.transfer == PF_TRANSFER_APIC ? Bind{PF_SLOT_PARTICLE_AFFINE, &affine_}
                                                                 : Bind{PF_SLOT_FACE_VEL_OLD, &face_vel_old_};
-    if (ordered) {
-        r.run({g2p, stat_.g2p, np, {pos, vel, face_vel, last, status, {PF_SLOT_PARTICLE_ORDER, g2p_order_}}});
-    } else {
-        r.run({g2p, stat_.g2p, np, {pos, vel, face_vel, last, status}});
-    }
+    Bindings binds{pos, vel, face_vel, last, status};
+    if (ordered) binds.add({PF_SLOT_PARTICLE_ORDER, g2p_order_});
+    r.run({g2p, stat_.g2p, np, binds});
 }
 
 void Simulation::run_advect() {
@@ -513,17 +511,10 @@ void Simulation::run_advect() {
     // Euler and leapfrog move particles with their own (G2P) velocity, Runge-Kutta through the
     // grid's. All stop a move of several cells before an obstacle's SOLID cell
     // (common/particle_trace.glsl).
-    const Bind cell_type{PF_SLOT_CELL_TYPE, &cell_type_};
-    if (advect == ProgramId::advect) {
-        r.run({advect, stat_.advect, np, {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, cell_type}});
-    } else if (ordered) {
-        r.run({advect, stat_.advect, np,
-               {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_}, cell_type,
-                {PF_SLOT_PARTICLE_ORDER, order}}});
-    } else {
-        r.run({advect, stat_.advect, np,
-               {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_}, cell_type}});
-    }
+    Bindings binds{{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}};
+    if (advect != ProgramId::advect) binds.add({PF_SLOT_FACE_VEL, &face_vel_});
+    if (ordered) binds.add({PF_SLOT_PARTICLE_ORDER, order});
+    r.run({advect, stat_.advect, np, binds});
 }
 
 ProjectionCount Simulation::substeps_for(float frame_dt) const {

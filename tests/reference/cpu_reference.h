@@ -197,9 +197,10 @@ glm::dvec3 wall_stopped_velocity(const Grid& grid, glm::dvec3 world_pos, glm::dv
 
 // §4.10 Runge-Kutta through the grid velocity (vel, interpolated as in §3): midpoint (rk2) or
 // Ralston's third order (rk3), or the midpoint whose first stage is the particle's own velocity v
-// and every later one the field plus v - vel(x0), its difference at the start (rk2_offset), traced in sub-steps (§5) of h = remaining time, or trace_cells dx /
-// |k1| when the particle would cross more than trace_cells cells in the rest of dt (the 64th takes
-// the rest; the GPU's trace_cells is 1); every stage position and every sub-step's end go through
+// and every later one the field plus v - vel(x0), its difference at the start (rk2_offset), traced
+// in sub-steps (§5) of h = remaining time, or trace_cells dx / |k1| when the particle would cross
+// more than trace_cells cells in the rest of dt (the 64th takes the rest; the GPU's trace_cells
+// is 1); every stage position and every sub-step's end go through
 // keep_in_domain, and a wall any sub-step crossed stops particles.vel (wall_stopped_velocity).
 void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>& vel, double dt,
                Advection scheme, double trace_cells = 1.0);
