@@ -10,7 +10,10 @@
 // (common/particle_trace.glsl). Every stage samples the projected, extrapolated face velocity
 // with G2P's clamped trilinear stencil (§3) at the stage position, and every stage position,
 // like each sub-step's end, goes through Euler's wall clamp, so the field is only sampled inside
-// the domain; a wall any sub-step crossed stops the particle's velocity into it, and a trace of
+// the domain; a wall any sub-step crossed stops the particle's velocity into it, and so does a wall
+// its own velocity would cross in the substep (Euler's rule: the grid's velocity into a wall goes
+// to 0 at the wall, so a traced path slows to it without crossing, and a lone particle's velocity
+// into the floor, never stopped, grew with gravity for ever); a trace of
 // several sub-steps ends before one that would enter a SOLID cell. Why: Euler with
 // the particle's velocity spirals out of a rotating flow by sqrt(1 + w^2 dt^2) per step; these
 // schemes follow the grid's flow to O(dt^3) and O(dt^4) per sub-step.
@@ -33,13 +36,14 @@ void main() {
     if (t >= sim.particle_count) return;
     uint i = particle_slot(t);
     vec3 x0 = pos[i].xyz;
-#if PF_RK_OFFSET
     const vec3 v0 = vel[i].xyz;
+    WallsCrossed walls = no_walls_crossed();
+    trace_wall_clamp(x0 + sim.drift_dt * v0, walls);  // the walls its own velocity would cross
+#if PF_RK_OFFSET
     const vec3 d = v0 - sample_velocity(keep_in_domain(x0));  // sampled inside, as every stage
 #else
     const vec3 d = vec3(0.0);
 #endif
-    WallsCrossed walls = no_walls_crossed();
     float remaining = sim.drift_dt;
     bool was_solid = false;  // read before the second sub-step: a single one never looks
     for (int s = 0; s < kMaxTraceSubsteps; ++s) {
@@ -73,5 +77,5 @@ void main() {
         remaining -= dt;
     }
     pos[i] = vec4(x0, 0.0);
-    vel[i].xyz = stopped_at_walls(walls.low, walls.high, vel[i].xyz);
+    vel[i].xyz = stopped_at_walls(walls.low, walls.high, v0);
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "support/sim_fixture.h"
+#include "util.h"
 
 namespace pf::test {
 namespace {
@@ -126,10 +127,7 @@ TEST_P(Tunnelling, AJetAtEachWallStaysInTheDomain) {
     }
 }
 
-std::string scheme_name(const ::testing::TestParamInfo<pf_advection>& info) {
-    static const char* names[PF_ADVECTION_COUNT] = {"euler", "rk2", "rk3", "leapfrog", "rk2_offset"};
-    return names[info.param];
-}
+std::string scheme_name(const ::testing::TestParamInfo<pf_advection>& info) { return pfs::advection_name(info.param); }
 INSTANTIATE_TEST_SUITE_P(Schemes, Tunnelling, ::testing::Values(PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_LEAPFROG,
                                                               PF_ADVECTION_RK2_OFFSET),
                          scheme_name);

@@ -587,6 +587,7 @@ void advect_rk(const Grid& grid, Particles& particles, const std::vector<double>
         glm::dvec3 stopped = p < particles.vel.size() ? particles.vel[p] : glm::dvec3(0.0);
         const bool own = scheme == Advection::rk2_offset;
         const glm::dvec3 v0 = stopped, offset = own ? v0 - u(x0) : glm::dvec3(0.0);
+        stopped = wall_stopped_velocity(grid, x0 + dt * v0, stopped);  // the walls its own velocity would cross
         double remaining = dt;
         for (int s = 0; s < kMaxTraceSubsteps; ++s) {
             const glm::dvec3 k1 = own && s == 0 ? v0 : u(x0) + offset;

@@ -520,11 +520,19 @@ TEST(Reference, RungeKuttaKeepsStagesInsideTheDomain) {
         for (int j = 0; j < 4; ++j)
             for (int i = 0; i <= 4; ++i) faces[grid.face_index(0, i, j, k)] = 10.0 + i;
     for (Advection scheme : {Advection::rk2, Advection::rk3}) {
-        Particles p{{grid.to_world(glm::dvec3(3.5, 2.0, 2.0))}, {glm::dvec3(1.0, -2.0, 0.0)}, {}};
+        // Its own velocity would reach x = 3.9 and y = 1: only the traced path crosses a wall.
+        Particles p{{grid.to_world(glm::dvec3(3.5, 2.0, 2.0))}, {glm::dvec3(0.2, -0.5, 0.0)}, {}};
         advect_rk(grid, p, faces, 1.0, scheme, kOneMove);
         EXPECT_NEAR(grid.to_grid(p.pos[0]).x, 4.0 - 0.25, 1e-12);  // returned a quarter cell inside
         EXPECT_NEAR(grid.to_grid(p.pos[0]).y, 2.0, 1e-12);
-        EXPECT_EQ(p.vel[0], glm::dvec3(0.0, -2.0, 0.0));  // the wall stops the motion into it
+        EXPECT_EQ(p.vel[0], glm::dvec3(0.0, -0.5, 0.0));  // the wall stops the motion into it
+        // The path (v = 0 on the y lattice) stays at y = 0.5, but the particle's own velocity
+        // would cross the floor in the substep: Euler's rule stops that motion too.
+        Particles q{{grid.to_world(glm::dvec3(2.0, 0.5, 2.0))}, {glm::dvec3(0.0, -2.0, 0.0)}, {}};
+        std::vector<double> still(grid.faces(), 0.0);
+        advect_rk(grid, q, still, 1.0, scheme, kOneMove);
+        EXPECT_NEAR(grid.to_grid(q.pos[0]).y, 0.5, 1e-12);
+        EXPECT_EQ(q.vel[0], glm::dvec3(0.0));
     }
     // Midpoint from g = 1.2 with dt such that the half step lands beyond the wall: the stage is
     // returned to 4 - 1/4, where u = 10 + 3.75 (in grid units 2 * 13.75 per second).
