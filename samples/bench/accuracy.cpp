@@ -3,7 +3,7 @@
 // Sweeps the simulation's knobs over fixed physical test cases and records, for each
 // (configuration, case), accuracy metrics measured from the particles (read back after the run)
 // and the GPU milliseconds per frame (pf_get_stats timer queries, each measured step once).
-// Configurations vary one knob at a time from the fast preset (the original's scheme), plus the
+// Configurations vary one knob at a time from the original's scheme, plus the
 // three presets; scripts/plot_accuracy.py draws metric against time per knob and the Pareto
 // front across all of them (docs/accuracy.md).
 //
@@ -121,6 +121,7 @@ std::vector<Config> sweep_configs() {
     add("advection", "rk2", [](pf_sim_params& p) { p.advection = PF_ADVECTION_RK2; });
     add("advection", "rk3", [](pf_sim_params& p) { p.advection = PF_ADVECTION_RK3; });
     add("advection", "leapfrog", [](pf_sim_params& p) { p.advection = PF_ADVECTION_LEAPFROG; });
+    add("advection", "rk2_offset", [](pf_sim_params& p) { p.advection = PF_ADVECTION_RK2_OFFSET; });
     add("cfl", "cfl_0.5", [](pf_sim_params& p) { p.cfl = 0.5f, p.max_substeps = 32; });
     add("cfl", "cfl_1", [](pf_sim_params&) {});
     add("cfl", "cfl_2", [](pf_sim_params& p) { p.cfl = 2.0f; });

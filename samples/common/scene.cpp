@@ -139,7 +139,7 @@ Scene parse_scene(const std::string& text, const std::string& path) {
         const json& pr = p.object(*it, "/params");
         p.check_keys(pr, "/params", {"gravity", "flip_ratio", "pressure_iterations", "jacobi_omega", "cfl",
                                      "max_substeps", "extrapolation_layers", "separation", "pressure_solver",
-                                     "pressure_tolerance", "sor_omega", "free_surface"});
+                                     "pressure_tolerance", "sor_omega", "free_surface", "transfer", "advection"});
         if (auto v = pr.find("gravity"); v != pr.end()) {
             const vec3f g = p.vec3(*v, "/params/gravity");
             for (int a = 0; a < 3; ++a) s.params.gravity[a] = g[a];
@@ -170,6 +170,20 @@ Scene parse_scene(const std::string& text, const std::string& path) {
                 s.params.free_surface = parse_free_surface(p.string(*v, "/params/free_surface"), "value");
             } catch (const Error& e) {
                 p.fail("/params/free_surface", e.what());
+            }
+        }
+        if (auto v = pr.find("transfer"); v != pr.end()) {
+            try {
+                s.params.transfer = parse_transfer(p.string(*v, "/params/transfer"), "value");
+            } catch (const Error& e) {
+                p.fail("/params/transfer", e.what());
+            }
+        }
+        if (auto v = pr.find("advection"); v != pr.end()) {
+            try {
+                s.params.advection = parse_advection(p.string(*v, "/params/advection"), "value");
+            } catch (const Error& e) {
+                p.fail("/params/advection", e.what());
             }
         }
     }

@@ -231,6 +231,14 @@ const char* advection_name(pf_advection advection) {
     return advection >= 0 && advection < PF_ADVECTION_COUNT ? kAdvectionNames[advection] : "unknown";
 }
 
+pf_transfer parse_transfer(const std::string& name, const char* what) {
+    return pf_transfer(parse_name(kTransferNames, name, what, "transfer"));
+}
+
+pf_advection parse_advection(const std::string& name, const char* what) {
+    return pf_advection(parse_name(kAdvectionNames, name, what, "advection"));
+}
+
 const char* const kFreeSurfaceNames[PF_FREE_SURFACE_COUNT] = {"marker_cell", "ghost_fluid"};
 
 pf_free_surface parse_free_surface(const std::string& name, const char* what) {

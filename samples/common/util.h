@@ -84,8 +84,12 @@ pf_pressure_solver parse_solver(const std::string& name, const char* what);
 const char* solver_name(pf_pressure_solver solver);
 /// The name of a grid-particle transfer ("pic_flip", "apic").
 const char* transfer_name(pf_transfer transfer);
+/// The transfer transfer_name names; throws Error naming `what` otherwise.
+pf_transfer parse_transfer(const std::string& name, const char* what);
 /// The name of a particle advection ("euler", "rk2", "rk3", "leapfrog", "rk2_offset").
 const char* advection_name(pf_advection advection);
+/// The advection advection_name names; throws Error naming `what` otherwise.
+pf_advection parse_advection(const std::string& name, const char* what);
 /// "marker_cell" or "ghost_fluid" (pf_free_surface); throws Error naming `what` otherwise.
 pf_free_surface parse_free_surface(const std::string& name, const char* what);
 /// The name parse_free_surface takes for `surface`.

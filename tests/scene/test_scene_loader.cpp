@@ -94,6 +94,9 @@ std::vector<BadScene> bad_scenes() {
         {"solver_name", with(R"("params": {"pressure_solver": "gauss"})"), "/params/pressure_solver", "gauss"},
         {"solver_not_string", with(R"("params": {"pressure_solver": 2})"), "/params/pressure_solver",
          "must be a string"},
+        {"advection_name", with(R"("params": {"advection": "rk4"})"), "/params/advection", "rk4"},
+        {"transfer_name", with(R"("params": {"transfer": "mpm"})"), "/params/transfer", "mpm"},
+        {"advection_not_string", with(R"("params": {"advection": 0})"), "/params/advection", "must be a string"},
         {"name_not_string", with(R"("name": ["a"])"), "/name", "must be a string, found an array of 1"},
         {"camera_degenerate", with(R"("camera": {"eye": [1, 1, 1], "target": [1, 1, 1]})"), "/camera/target",
          "coincides with /camera/eye"},
@@ -233,9 +236,11 @@ TEST(SceneLoader, EffectsSceneCarriesEveryEffectsObjects) {
     EXPECT_EQ(s.preset, PF_QUALITY_FAST);
     const pfs::Scene b = pfs::parse_scene(
         R"({"grid": {"size": [4, 4, 4], "cell_size": 0.1}, "max_particles": 10, "preset": "balanced",
-            "params": {"pressure_tolerance": 0.01}})", "preset.json");
+            "params": {"pressure_tolerance": 0.01, "transfer": "apic", "advection": "leapfrog"}})", "preset.json");
     EXPECT_EQ(b.params.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
     EXPECT_FLOAT_EQ(b.params.pressure_tolerance, 0.01f);
+    EXPECT_EQ(b.params.transfer, PF_TRANSFER_APIC);
+    EXPECT_EQ(b.params.advection, PF_ADVECTION_LEAPFROG);
 }
 
 // The viscosity scene pours from its emitter with the viscosity it names; a viscosity object
