@@ -274,9 +274,9 @@ typedef struct pf_sim_params {
  *  has their cost and accuracy on an H100). Each is a complete pf_sim_params with the default
  *  gravity; change any field afterwards. */
 typedef enum pf_quality {
-    PF_QUALITY_FAST = 0,         /**< MGPCG to a relative residual of 3e-3, otherwise balanced (the
-                                      original's 40 Jacobi sweeps, and 1e-2 with the ghost-fluid surface,
-                                      added energy to waves: docs/accuracy.md) */
+    PF_QUALITY_FAST = 0,         /**< MGPCG to a relative residual of 3e-3, PF_ADVECTION_RK2_OFFSET at a
+                                      projection CFL of 1.5 (a third fewer projections), otherwise
+                                      balanced (docs/accuracy.md) */
     PF_QUALITY_BALANCED = 1,     /**< the defaults (pf_default_sim_params): MGPCG to a relative residual of
                                       1e-3, separation off, PIC/FLIP 0.95, explicit Euler, volume
                                       correction 0.5, ghost-fluid free surface */

@@ -924,6 +924,9 @@ TEST(QualityPresets, EachIsValidDistinctAndBalancedIsTheDefault) {
     // added energy to a standing wave).
     EXPECT_EQ(fast.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
     EXPECT_GT(fast.pressure_tolerance, balanced.pressure_tolerance);
+    // Fewer projections a frame, traced so that moves of more than a cell stop at walls.
+    EXPECT_GT(fast.cfl, balanced.cfl);
+    EXPECT_EQ(fast.advection, PF_ADVECTION_RK2_OFFSET);
     EXPECT_FALSE(same_params(accurate, balanced));
     EXPECT_EQ(balanced.pressure_solver, PF_PRESSURE_SOLVER_MGPCG);
     EXPECT_EQ(accurate.transfer, PF_TRANSFER_APIC);
