@@ -131,7 +131,7 @@ TEST_F(TransferAdvection, SwitchingBetweenStepsKeepsEveryParticle) {
 // pressure leaves a particle alone (its own FLUID cell, AIR all round), so only the wall stops
 // it; the grid's velocity into the floor goes to 0 at the floor, so a traced path slows to the
 // floor without crossing it, and the velocity the particle carries must stop there all the same
-// (kept, it grew with gravity for ever: 1.67 m/s after 1.5 s under RK2 and APIC).
+// (kept, it grew with gravity for ever: 2.5 m/s after 1.5 s under APIC with RK2 or RK2_OFFSET).
 class LoneParticle : public GpuTest, public ::testing::WithParamInterface<std::tuple<pf_transfer, pf_advection>> {};
 
 TEST_P(LoneParticle, FallsAndComesToRestOnTheFloor) {
