@@ -137,6 +137,19 @@ Scene parse_scene(const std::string& text, const std::string& path) {
     // params
     if (auto it = root.find("params"); it != root.end()) {
         const json& pr = p.object(*it, "/params");
+        // An enum by name: parse(name, what) throws the known names, reported at the key's path
+        // (the string check stays outside, so its own report is not wrapped again).
+        auto named = [&p, &pr](const char* key, auto parse, auto& field) {
+            auto v = pr.find(key);
+            if (v == pr.end()) return;
+            const std::string path = std::string("/params/") + key;
+            const std::string name = p.string(*v, path);
+            try {
+                field = parse(name, "value");
+            } catch (const Error& e) {
+                p.fail(path, e.what());
+            }
+        };
         p.check_keys(pr, "/params", {"gravity", "flip_ratio", "pressure_iterations", "jacobi_omega", "cfl",
                                      "max_substeps", "extrapolation_layers", "separation", "pressure_solver",
                                      "pressure_tolerance", "sor_omega", "free_surface", "transfer", "advection"});
@@ -154,38 +167,13 @@ Scene parse_scene(const std::string& text, const std::string& path) {
         if (auto v = pr.find("extrapolation_layers"); v != pr.end())
             s.params.extrapolation_layers = p.u32(*v, "/params/extrapolation_layers", 1, 16);
         if (auto v = pr.find("separation"); v != pr.end()) s.params.separation = p.u32(*v, "/params/separation", 0, 1);
-        if (auto v = pr.find("pressure_solver"); v != pr.end()) {
-            const std::string name = p.string(*v, "/params/pressure_solver");
-            try {
-                s.params.pressure_solver = parse_solver(name, "value");
-            } catch (const Error& e) {
-                p.fail("/params/pressure_solver", e.what());
-            }
-        }
+        named("pressure_solver", parse_solver, s.params.pressure_solver);
         if (auto v = pr.find("pressure_tolerance"); v != pr.end())
             s.params.pressure_tolerance = p.real(*v, "/params/pressure_tolerance", 0.0, 1.0, true);
         if (auto v = pr.find("sor_omega"); v != pr.end()) s.params.sor_omega = p.real(*v, "/params/sor_omega", 0.0, 2.0, true);
-        if (auto v = pr.find("free_surface"); v != pr.end()) {
-            try {
-                s.params.free_surface = parse_free_surface(p.string(*v, "/params/free_surface"), "value");
-            } catch (const Error& e) {
-                p.fail("/params/free_surface", e.what());
-            }
-        }
-        if (auto v = pr.find("transfer"); v != pr.end()) {
-            try {
-                s.params.transfer = parse_transfer(p.string(*v, "/params/transfer"), "value");
-            } catch (const Error& e) {
-                p.fail("/params/transfer", e.what());
-            }
-        }
-        if (auto v = pr.find("advection"); v != pr.end()) {
-            try {
-                s.params.advection = parse_advection(p.string(*v, "/params/advection"), "value");
-            } catch (const Error& e) {
-                p.fail("/params/advection", e.what());
-            }
-        }
+        named("free_surface", parse_free_surface, s.params.free_surface);
+        named("transfer", parse_transfer, s.params.transfer);
+        named("advection", parse_advection, s.params.advection);
     }
 
     if (auto it = root.find("frame_dt"); it != root.end()) s.frame_dt = p.real(*it, "/frame_dt", 0.0, 1.0, true);

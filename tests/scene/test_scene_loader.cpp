@@ -97,6 +97,8 @@ std::vector<BadScene> bad_scenes() {
         {"advection_name", with(R"("params": {"advection": "rk4"})"), "/params/advection", "rk4"},
         {"transfer_name", with(R"("params": {"transfer": "mpm"})"), "/params/transfer", "mpm"},
         {"advection_not_string", with(R"("params": {"advection": 0})"), "/params/advection", "must be a string"},
+        {"free_surface_not_string", with(R"("params": {"free_surface": true})"), "/params/free_surface",
+         "must be a string"},
         {"name_not_string", with(R"("name": ["a"])"), "/name", "must be a string, found an array of 1"},
         {"camera_degenerate", with(R"("camera": {"eye": [1, 1, 1], "target": [1, 1, 1]})"), "/camera/target",
          "coincides with /camera/eye"},
@@ -188,6 +190,7 @@ TEST_P(MalformedScene, IsRefusedWithFilePathAndReason) {
     } catch (const pfs::Error& e) {
         const std::string msg = e.what();
         EXPECT_EQ(msg.rfind(file + ": ", 0), 0u) << "does not start with the file name: " << msg;
+        EXPECT_EQ(msg.find(file, 1), std::string::npos) << "a report wrapped in another: " << msg;
         EXPECT_NE(msg.find(": " + c.pointer + ": "), std::string::npos) << "no JSON path " << c.pointer << ": " << msg;
         EXPECT_NE(msg.find(c.reason), std::string::npos) << "no reason '" << c.reason << "': " << msg;
         // The value is never re-serialised into the message (a nested one could be huge).
