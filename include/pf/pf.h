@@ -275,8 +275,8 @@ typedef struct pf_sim_params {
  *  gravity; change any field afterwards. */
 typedef enum pf_quality {
     PF_QUALITY_FAST = 0,         /**< MGPCG to a relative residual of 3e-3, PF_ADVECTION_RK2_OFFSET at a
-                                      projection CFL of 1.5 (a third fewer projections), otherwise
-                                      balanced (docs/accuracy.md) */
+                                      projection CFL of 3 (about 2.3 times cheaper than balanced; column
+                                      heights less accurate), otherwise balanced (docs/accuracy.md) */
     PF_QUALITY_BALANCED = 1,     /**< the defaults (pf_default_sim_params): MGPCG to a relative residual of
                                       1e-3, separation off, PIC/FLIP 0.95, explicit Euler, volume
                                       correction 0.5, ghost-fluid free surface */
