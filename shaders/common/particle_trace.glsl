@@ -5,8 +5,9 @@
 // whole substep, which is the single move of one-clock stepping exactly. A trace of several
 // sub-steps ends where it stands before a sub-step that would enter a SOLID cell (an obstacle's):
 // moved several cells at once it could jump over a thin obstacle, which the obstacles' push after
-// advection would then never see. (A single sub-step of at most a cell ends where it lands, as a
-// one-clock move did, and the push moves it out.) The including kernel declares cell_type[]
+// advection would then never see. (Euler's single sub-step of at most a cell ends where it lands,
+// as a one-clock move did, and the push moves it out; the Runge-Kutta traces stop before a SOLID
+// cell at every sub-step: sim/advect_rk.comp.) The including kernel declares cell_type[]
 // (PF_SLOT_CELL_TYPE).
 
 // Cells a particle crosses at most in one sub-step (tests/reference/cpu_reference.cpp: the same).
@@ -34,6 +35,15 @@ vec3 trace_wall_clamp(vec3 x, inout WallsCrossed walls) {
 bool in_solid_cell(vec3 x) {
     ivec3 c = clamp(ivec3(floor(grid_coord(x))), ivec3(0), sim.grid.xyz - 1);
     return PF_CELL_KIND(cell_type[cell_index(c)]) == PF_CELL_SOLID;
+}
+
+// Whether the straight move from x0 to x (both inside the domain) passes through a SOLID cell:
+// sampled at its quarters, so that a move of up to four cells cannot step over a wall one cell
+// thick (a sub-step sized by its first stage's speed can move more than a cell).
+bool move_enters_solid(vec3 x0, vec3 x) {
+    for (int k = 1; k <= 4; ++k)
+        if (in_solid_cell(mix(x0, x, 0.25 * float(k)))) return true;
+    return false;
 }
 
 // The length of the next sub-step at speed `speed` with `remaining` seconds of the substep left:

@@ -2,7 +2,8 @@
 // clamped trilinear stencil as P2G. Non-finite results are zeroed and speeds above
 // max_speed clamped (both flagged); the largest speed goes to the status buffer for the
 // next frame's CFL estimate. Permutation PF_PIC_ONLY (flip ratio 0) skips u_old; PF_ORDERED
-// walks the particles in the tiled P2G's order (common/particle_order.glsl).
+// walks the particles in the tiled P2G's order (common/particle_order.glsl); PF_SOLID_WALLS stops
+// the stencil at obstacles (common/solid_walls.glsl).
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
@@ -12,6 +13,10 @@ layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_
 layout(std430, binding = PF_SLOT_FACE_VEL_OLD) readonly buffer FaceVelOld { float face_vel_old[]; };
 #endif
 layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
+#if PF_SOLID_WALLS
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+#endif
+#include "common/solid_walls.glsl"
 #include "common/particle_velocity.glsl"
 #include "common/particle_order.glsl"
 
@@ -23,7 +28,7 @@ void main() {
     vec3 v_pic = vec3(0.0);
     vec3 delta = vec3(0.0);
     for (int axis = 0; axis < 3; ++axis) {
-        Stencil st = face_stencil(axis, g);
+        Stencil st = sampling_stencil(axis, g);
         float pic[8];
         float dif[8];
         for (int n = 0; n < 8; ++n) {

@@ -6,7 +6,7 @@
 // without FLIP's noise. Same clamped trilinear stencil, NaN guard and speed clamp as g2p.comp;
 // C is zeroed when v or C is non-finite, scaled by v's factor when v is clamped, and limited to
 // |C|_F dx <= max_speed (flagged as a speed clamp), which bounds every APIC P2G addend
-// (design.md §4.2, §4.9).
+// (design.md §4.2, §4.9). PF_SOLID_WALLS stops the stencil at obstacles (common/solid_walls.glsl).
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) readonly buffer Pos { vec4 pos[]; };
@@ -14,6 +14,10 @@ layout(std430, binding = PF_SLOT_PARTICLE_VEL) writeonly buffer Vel { vec4 vel[]
 layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_vel[]; };
 layout(std430, binding = PF_SLOT_PARTICLE_AFFINE) writeonly buffer Affine { vec4 affine[]; };
 layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
+#if PF_SOLID_WALLS
+layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+#endif
+#include "common/solid_walls.glsl"
 #include "common/particle_velocity.glsl"
 
 void main() {
@@ -23,7 +27,8 @@ void main() {
     vec3 v;
     vec3 c[3];
     for (int axis = 0; axis < 3; ++axis) {
-        Stencil st = face_stencil(axis, g);
+        vec3 slope = stencil_slope(axis, g);
+        Stencil st = sampling_stencil(axis, g, slope);
         float value[8], ds_x[8], ds_y[8], ds_z[8];
         for (int n = 0; n < 8; ++n) {
             ivec3 d = stencil_offset(n);
@@ -38,7 +43,7 @@ void main() {
         }
         v[axis] = mirror_sum(value);
         // d/dx_p = (ds/dg) (dg/dx_p) d/ds, with dg/dx_p = 1/dx.
-        c[axis] = vec3(mirror_sum(ds_x), mirror_sum(ds_y), mirror_sum(ds_z)) * stencil_slope(axis, g) / sim.dx;
+        c[axis] = vec3(mirror_sum(ds_x), mirror_sum(ds_y), mirror_sum(ds_z)) * slope / sim.dx;
     }
     uint flags = 0u;
     float speed;

@@ -147,7 +147,7 @@ pf_result Simulation::init() {
         if (std::string error = r.prepare(id); !error.empty())
             return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
     }
-    if (pf_result res = prepare_particle_passes(desc_.params, "pf_create"); res != PF_OK) return res;
+    if (pf_result res = prepare_particle_passes(desc_.params, requested_features_, "pf_create"); res != PF_OK) return res;
     if (pf_result res = solvers_for(desc_.params, "pf_create", &solvers_in_use_); res != PF_OK) return res;
     warn_about_free_surface(desc_.params, "pf_create");
     if (std::string error = volume_correction_.init(gl_, r, uint32_t(cells_)); !error.empty())
@@ -222,7 +222,26 @@ pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, Pr
     return PF_OK;
 }
 
-Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& params) const {
+namespace {
+// The permutation of a G2P or trace kernel whose stencil stops at obstacles; Euler's move samples
+// no grid and is its own.
+ProgramId with_solid_walls(ProgramId id) {
+    switch (id) {
+        case ProgramId::g2p_flip: return ProgramId::g2p_flip_walls;
+        case ProgramId::g2p_pic: return ProgramId::g2p_pic_walls;
+        case ProgramId::g2p_apic: return ProgramId::g2p_apic_walls;
+        case ProgramId::g2p_flip_ordered: return ProgramId::g2p_flip_ordered_walls;
+        case ProgramId::g2p_pic_ordered: return ProgramId::g2p_pic_ordered_walls;
+        case ProgramId::advect_rk2: return ProgramId::advect_rk2_walls;
+        case ProgramId::advect_rk3: return ProgramId::advect_rk3_walls;
+        case ProgramId::advect_rk2_offset: return ProgramId::advect_rk2_offset_walls;
+        case ProgramId::advect_rk2_offset_ordered: return ProgramId::advect_rk2_offset_ordered_walls;
+        default: return id;
+    }
+}
+}  // namespace
+
+Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& params, uint32_t features) const {
     ParticlePrograms p{};
     const bool apic = params.transfer == PF_TRANSFER_APIC;
     p.grid_forces = p2g_.float_sums(params) ? ProgramId::grid_forces_float : ProgramId::grid_forces;
@@ -245,15 +264,23 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
     // other schemes keep their memory order.
     p.advect_ordered =
         ordered && params.advection == PF_ADVECTION_RK2_OFFSET ? ProgramId::advect_rk2_offset_ordered : p.advect;
+    if (features & PF_FEATURE_OBSTACLES) {
+        // Their stencils stop at SOLID cells (common/solid_walls.glsl).
+        for (ProgramId* id : {&p.g2p, &p.g2p_ordered, &p.advect, &p.advect_ordered}) *id = with_solid_walls(*id);
+    }
     return p;
 }
 
-pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, const char* fn) {
+pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, uint32_t features, const char* fn) {
     if (pf_result r = p2g_.prepare(gl_, *runner_, params, log_, fn); r != PF_OK) return r;
-    const ParticlePrograms programs = particle_programs(params);
-    for (ProgramId id : {programs.grid_forces, programs.g2p, programs.g2p_ordered, programs.advect, programs.advect_ordered}) {
-        if (std::string error = runner_->prepare(id); !error.empty())
-            return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+    // With obstacles prepared (pf_sim_desc.prepared_features), their permutations are built too, so
+    // that turning obstacles on builds nothing.
+    for (uint32_t with : {features, features | (desc_.prepared_features & PF_FEATURE_OBSTACLES)}) {
+        const ParticlePrograms programs = particle_programs(params, with);
+        for (ProgramId id : {programs.grid_forces, programs.g2p, programs.g2p_ordered, programs.advect, programs.advect_ordered}) {
+            if (std::string error = runner_->prepare(id); !error.empty())
+                return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+        }
     }
     if (params.transfer != PF_TRANSFER_APIC || affine_.bytes() != 0) return PF_OK;
     const uint64_t bytes = uint64_t(desc_.max_particles) * 48u;
@@ -496,6 +523,7 @@ void Simulation::run_g2p() {
                                                                 : Bind{PF_SLOT_FACE_VEL_OLD, &face_vel_old_};
     Bindings binds{pos, vel, face_vel, last, status};
     if (ordered) binds.add({PF_SLOT_PARTICLE_ORDER, g2p_order_});
+    if (desc_.features & PF_FEATURE_OBSTACLES) binds.add({PF_SLOT_CELL_TYPE, &cell_type_});
     r.run({g2p, stat_.g2p, np, binds});
 }
 
@@ -1007,6 +1035,10 @@ pf_result Simulation::set_features(uint32_t features, const char* fn) {
         if (pf_result r = gl::check_allocated(gl_, log_, std::string(fn) + ": allocating an effect's buffers"); r != PF_OK)
             return r;
         effects_ready_ |= bit;
+    }
+    // G2P and the traces have permutations of their own with obstacles.
+    if ((features ^ desc_.features) & PF_FEATURE_OBSTACLES) {
+        if (pf_result r = prepare_particle_passes(desc_.params, features, fn); r != PF_OK) return r;
     }
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         const uint32_t bit = 1u << i;

@@ -198,10 +198,15 @@ private:
         gl::ProgramId g2p_ordered;  // G2P in the P2G scheme's particle order, if it has one (else g2p)
         gl::ProgramId advect_ordered;  // the advection in that order where it gathers from the grid too (else advect)
     };
-    ParticlePrograms particle_programs(const pf_sim_params& params) const;
+    // `features`: the effects on (desc_.features unless they are about to change).
+    ParticlePrograms particle_programs(const pf_sim_params& params, uint32_t features) const;
+    ParticlePrograms particle_programs(const pf_sim_params& params) const { return particle_programs(params, desc_.features); }
     // Prepares the P2G scheme, builds those programs and, for APIC, allocates the affine buffer
     // (first use only), so that a failure leaves the running simulation untouched.
-    pf_result prepare_particle_passes(const pf_sim_params& params, const char* fn);
+    pf_result prepare_particle_passes(const pf_sim_params& params, uint32_t features, const char* fn);
+    pf_result prepare_particle_passes(const pf_sim_params& params, const char* fn) {
+        return prepare_particle_passes(params, desc_.features, fn);
+    }
     void zero_affine(uint32_t first, uint32_t count);
     void upload_uniforms(float dt);
     // What the volume correction reads and moves (this substep's buffers).

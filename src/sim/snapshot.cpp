@@ -279,7 +279,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     // Everything the restored state needs is built first (programs, solver, effects), so a
     // failure here changes nothing either.
     gl::StateGuard guard(gl_, gl_state_);
-    if (pf_result res = prepare_particle_passes(params, fn); res != PF_OK) return res;
+    if (pf_result res = prepare_particle_passes(params, features, fn); res != PF_OK) return res;
     SolversInUse solvers;
     if (pf_result res = solvers_for(params, fn, &solvers); res != PF_OK) return res;
     const uint32_t features_before = desc_.features;

@@ -12,8 +12,10 @@ namespace {
 class EffectsPipeline : public GpuTest {};
 
 const gl::ProgramId kForceFieldPrograms[] = {gl::ProgramId::force_fields};
+// With G2P's permutation whose stencil stops at obstacles (this simulation's FLIP; Euler has none).
 const gl::ProgramId kObstaclePrograms[] = {gl::ProgramId::obstacle_cells, gl::ProgramId::obstacle_faces,
-                                           gl::ProgramId::obstacle_push, gl::ProgramId::obstacle_forces};
+                                           gl::ProgramId::obstacle_push, gl::ProgramId::obstacle_forces,
+                                           gl::ProgramId::g2p_flip_walls};
 const gl::ProgramId kEmitterPrograms[] = {gl::ProgramId::emit, gl::ProgramId::emit_apic, gl::ProgramId::emit_commit};
 const gl::ProgramId kDomainPrograms[] = {gl::ProgramId::domain_forces};
 const gl::ProgramId kVorticityPrograms[] = {gl::ProgramId::vorticity, gl::ProgramId::confinement_force};

@@ -1,0 +1,41 @@
+// Sampling the face velocities beside an obstacle. With PF_SOLID_WALLS 1 (a simulation with
+// PF_FEATURE_OBSTACLES) a tangential lattice's stencil stops at a SOLID cell one cell thick as
+// face_stencil's does at the domain's walls: it takes the particle's own column only. Why: a face
+// inside such a wall is filled by extrapolation from both of its sides, so a particle read the
+// liquid beyond it (a still pool behind such a wall reached 2 m/s beside a jet). A thicker wall's
+// inner faces are filled from their own side first, and its stencil is left as it was. The
+// includer declares cell_type[] (PF_SLOT_CELL_TYPE) when PF_SOLID_WALLS is 1.
+#ifndef PF_SOLID_WALLS
+#define PF_SOLID_WALLS 0
+#endif
+
+// face_stencil(axis, g), stopped at SOLID cells beside the particle's own cell across each
+// tangential axis; `slope` (stencil_slope's factor, APIC's) is 0 on the axes it stopped.
+Stencil sampling_stencil(int axis, vec3 g, inout vec3 slope) {
+    Stencil st = face_stencil(axis, g);
+#if PF_SOLID_WALLS
+    ivec3 c = clamp(ivec3(floor(g)), ivec3(0), sim.grid.xyz - 1);
+    if (PF_CELL_KIND(cell_type[cell_index(c)]) == PF_CELL_SOLID) return st;
+    for (int a = 0; a < 3; ++a) {
+        if (a == axis) continue;  // the normal lattice's two faces are the own cell's
+        // On a cell-centred axis the stencil spans the own column and one beside it.
+        bool own_low = c[a] == st.base[a];
+        ivec3 other = c;
+        other[a] += own_low ? 1 : -1;
+        if (PF_CELL_KIND(cell_type[cell_index(other)]) != PF_CELL_SOLID) continue;
+        // Only a wall one cell thick: a thicker one's inner faces come from the near side alone.
+        ivec3 beyond = other;
+        beyond[a] += own_low ? 1 : -1;
+        if (beyond[a] < 0 || beyond[a] >= sim.grid[a]) continue;
+        if (PF_CELL_KIND(cell_type[cell_index(beyond)]) == PF_CELL_SOLID) continue;
+        st.frac[a] = own_low ? 0.0 : 1.0;
+        slope[a] = 0.0;
+    }
+#endif
+    return st;
+}
+
+Stencil sampling_stencil(int axis, vec3 g) {
+    vec3 unused = vec3(1.0);
+    return sampling_stencil(axis, g, unused);
+}
