@@ -13,9 +13,10 @@
 // the domain; a wall any sub-step crossed stops the particle's velocity into it, and so does a wall
 // its own velocity would cross in the substep (Euler's rule: the grid's velocity into a wall goes
 // to 0 at the wall, so a traced path slows to it without crossing, and a lone particle's velocity
-// into the floor, never stopped, grew with gravity for ever); the trace ends before any sub-step,
-// a single one too, whose move would enter a SOLID cell (landed inside a wall one cell thick past
-// its middle, the obstacles' push would put a particle out on the far side). Why: Euler with
+// into the floor, never stopped, grew with gravity for ever); with PF_SOLID_WALLS (obstacles) the
+// trace ends before any sub-step, a single one too, whose move would enter a SOLID cell (landed
+// inside a wall one cell thick past its middle, the obstacles' push would put a particle out on
+// the far side), and common/solid_walls.glsl stops its stencils at such walls. Why: Euler with
 // the particle's velocity spirals out of a rotating flow by sqrt(1 + w^2 dt^2) per step; these
 // schemes follow the grid's flow to O(dt^3) and O(dt^4) per sub-step.
 #include "common/sim.glsl"
@@ -46,7 +47,9 @@ void main() {
     const vec3 d = vec3(0.0);
 #endif
     float remaining = sim.drift_dt;
+#if PF_SOLID_WALLS
     bool was_solid = false;  // whether the sub-step starts in a SOLID cell (read at the first)
+#endif
     for (int s = 0; s < kMaxTraceSubsteps; ++s) {
 #if PF_RK_OFFSET
         vec3 k1 = s == 0 ? v0 : sample_velocity(x0) + d;
@@ -65,9 +68,11 @@ void main() {
 #endif
         WallsCrossed crossed = walls;
         vec3 next = trace_wall_clamp(x, crossed);
+#if PF_SOLID_WALLS  // only obstacles make SOLID cells
         if (s == 0) was_solid = in_solid_cell(x0);
         if (!was_solid && move_enters_solid(x0, next)) break;
         was_solid = in_solid_cell(next);
+#endif
         x0 = next;
         walls = crossed;
         if (dt == remaining) break;
