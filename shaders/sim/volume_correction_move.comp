@@ -5,13 +5,15 @@
 // energy. Walls and faces beside SOLID cells do not move (d = 0); q = 0 at the free surface,
 // so a face between FLUID and AIR divides its difference by theta as the velocity update does. A
 // displacement is kept within half a cell per axis, then the wall clamp of every advection
-// scheme applies.
+// scheme applies. PF_ORDERED walks the particles in the tiled P2G's order, as G2P does on large
+// grids (common/particle_order.glsl): its reads of the potential are gathers too.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 layout(std430, binding = PF_SLOT_PARTICLE_POS) buffer Pos { vec4 pos[]; };
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_VOLUME_POTENTIAL) readonly buffer Potential { float potential[]; };
 layout(std430, binding = PF_SLOT_FACE_FRACTION) readonly buffer Fraction { float face_fraction[]; };
+#include "common/particle_order.glsl"
 
 float face_displacement(int axis, ivec3 f) {
     // A grid one cell thick gives the clamped stencil a zero-weight face outside the grid.
@@ -27,8 +29,9 @@ float face_displacement(int axis, ivec3 f) {
 }
 
 void main() {
-    uint i = flat_id();
-    if (i >= sim.particle_count) return;
+    uint t = flat_id();
+    if (t >= sim.particle_count) return;
+    uint i = particle_slot(t);
     vec3 x = pos[i].xyz;
     vec3 g = grid_coord(x);
     vec3 d = vec3(0.0);

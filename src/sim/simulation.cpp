@@ -281,6 +281,10 @@ pf_result Simulation::prepare_particle_passes(const pf_sim_params& params, uint3
             if (std::string error = runner_->prepare(id); !error.empty())
                 return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
         }
+        if (programs.g2p_ordered != programs.g2p) {
+            if (std::string error = runner_->prepare(ProgramId::volume_correction_move_ordered); !error.empty())
+                return log_.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
+        }
     }
     if (params.transfer != PF_TRANSFER_APIC || affine_.bytes() != 0) return PF_OK;
     const uint64_t bytes = uint64_t(desc_.max_particles) * 48u;
@@ -335,7 +339,10 @@ void Simulation::upload_uniforms(float dt) {
 }
 
 VolumeCorrection::Inputs Simulation::correction_inputs() const {
-    return {pos_, cell_type_, cell_count_, pressure_, face_fraction_, uint64_t(cells_), particle_count_};
+    // The move reads in the P2G's order where G2P does (the particles have not moved since).
+    const ParticlePrograms programs = particle_programs(desc_.params);
+    const gl::Buffer* order = programs.g2p_ordered != programs.g2p ? g2p_order_ : nullptr;
+    return {pos_, cell_type_, cell_count_, pressure_, face_fraction_, uint64_t(cells_), particle_count_, order};
 }
 
 void Simulation::set_drift(float seconds) {

@@ -56,13 +56,13 @@ void VolumeCorrection::solve(PassRunner& runner, PressureSolver& solver, const p
 }
 
 void VolumeCorrection::move(PassRunner& runner, const Inputs& in) {
-    runner.run({gl::ProgramId::volume_correction_move,
-                move_stat_,
-                in.particles,
-                {{PF_SLOT_PARTICLE_POS, &in.positions},
-                 {PF_SLOT_CELL_TYPE, &in.cell_type},
-                 {PF_SLOT_VOLUME_POTENTIAL, &potential_},
-                 {PF_SLOT_FACE_FRACTION, &in.face_fraction}}});
+    Bindings binds{{PF_SLOT_PARTICLE_POS, &in.positions},
+                   {PF_SLOT_CELL_TYPE, &in.cell_type},
+                   {PF_SLOT_VOLUME_POTENTIAL, &potential_},
+                   {PF_SLOT_FACE_FRACTION, &in.face_fraction}};
+    if (in.order) binds.add({PF_SLOT_PARTICLE_ORDER, in.order});
+    runner.run({in.order ? gl::ProgramId::volume_correction_move_ordered : gl::ProgramId::volume_correction_move,
+                move_stat_, in.particles, binds});
 }
 
 }  // namespace pf

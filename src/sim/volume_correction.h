@@ -36,6 +36,8 @@ public:
         const gl::Buffer& face_fraction;
         uint64_t cells = 0;
         uint64_t particles = 0;
+        // The tiled P2G's particle order for the move, where G2P reads in it (else null).
+        const gl::Buffer* order = nullptr;
     };
     // Records the correction (setup, the solve, the particle move); nothing when
     // params.volume_correction is 0.

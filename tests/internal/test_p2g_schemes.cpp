@@ -679,7 +679,8 @@ TEST_F(P2gSchemes, OrderedG2pGivesBitIdenticalParticles) {
             for (int f = 0; f < 30; ++f) ASSERT_EQ(pf_step(handle.get(), 1.0f / 60.0f), PF_OK);
             result[ordered] = read_all(handle.get());
             EXPECT_EQ(sim.runner().binding_errors(), 0u) << last_log();  // the order bound where it is read
-            std::vector<std::string> kernels{flip_ratio > 0.0f ? "g2p:g2p_flip_ordered" : "g2p:g2p_pic_ordered"};
+            std::vector<std::string> kernels{flip_ratio > 0.0f ? "g2p:g2p_flip_ordered" : "g2p:g2p_pic_ordered",
+                                             "volume_correction_move:volume_correction_move_ordered"};
             if (advection == PF_ADVECTION_RK2_OFFSET) kernels.push_back("advect:advect_rk2_offset_ordered");
             for (const std::string& kernel : kernels) {
                 uint32_t dispatches = 0;
