@@ -248,9 +248,10 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
     // Pure PIC skips the FLIP delta (and its u_old reads) in a permutation of its own.
     p.g2p = apic ? ProgramId::g2p_apic : params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
     // A scheme that groups particles by tile lets G2P read the grid in that order, which pays
-    // once the face velocities it reads outgrow the cache (docs/performance.md, issue 18 step 9:
-    // on the H100 ordered G2P is 10% slower at 1M particles, 18-58% faster from 2M; APIC's, with
-    // three times the particle data to scatter, was slower at 1M and 5M).
+    // from a few MiB of face velocities once the particles' memory order has lost its spatial
+    // order (docs/performance.md, "Ordered particle passes from 4 MiB": on the H200 after 150
+    // frames, dam_break_1m 18-31% faster, 1 MiB grids 0-3% slower; APIC's, with
+    // three times the particle data to scatter, was slower at 1M and 5M on the H100).
     const bool flip = params.flip_ratio > 0.0f;
     const uint64_t face_bytes = uint64_t(faces_) * sizeof(float) * (flip ? 2u : 1u);
     const bool ordered = !apic && face_bytes >= ordered_g2p_face_bytes_ && p2g_.has_particle_order(params);

@@ -350,7 +350,7 @@ private:
     // The P2G scheme's particle order of this substep, for G2P (set by the p2g stage, cleared
     // by advect, after which positions no longer match it), or null.
     const gl::Buffer* g2p_order_ = nullptr;
-    static constexpr uint64_t kOrderedG2pFaceBytes = uint64_t(16) << 20;
+    static constexpr uint64_t kOrderedG2pFaceBytes = uint64_t(4) << 20;
     uint64_t ordered_g2p_face_bytes_ = kOrderedG2pFaceBytes;
     bool cell_counts_current_ = false;  // cell_count() describes the particles (see its accessor)
     pf_p2g counted_with_ = PF_P2G_COUNT;  // the P2G scheme of the last substep (PF_P2G_COUNT: none, or
