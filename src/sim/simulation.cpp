@@ -250,8 +250,9 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
     // A scheme that groups particles by tile lets G2P read the grid in that order, which pays
     // from a few MiB of face velocities once the particles' memory order has lost its spatial
     // order (docs/performance.md, "Ordered particle passes from 4 MiB": on the H200 after 150
-    // frames, dam_break_1m 18-31% faster, 1 MiB grids 0-3% slower; APIC's, with
-    // three times the particle data to scatter, was slower at 1M and 5M on the H100).
+    // frames, dam_break_1m 18-31% faster, 1 MiB grids 0-3% slower). APIC's G2P keeps slot order:
+    // its 64 bytes a particle of writes scatter in tile order (dam_break_10m 57% slower, "Tried
+    // and not kept: APIC's G2P in the tiled P2G's particle order").
     const bool flip = params.flip_ratio > 0.0f;
     const uint64_t face_bytes = uint64_t(faces_) * sizeof(float) * (flip ? 2u : 1u);
     const bool ordered = !apic && face_bytes >= ordered_g2p_face_bytes_ && p2g_.has_particle_order(params);
