@@ -9,25 +9,27 @@
 #define PF_SOLID_WALLS 0
 #endif
 
+#if PF_SOLID_WALLS
+bool solid_cell(ivec3 c) { return PF_CELL_KIND(cell_type[cell_index(c)]) == PF_CELL_SOLID; }
+#endif
+
 // face_stencil(axis, g), stopped at SOLID cells beside the particle's own cell across each
 // tangential axis; `slope` (stencil_slope's factor, APIC's) is 0 on the axes it stopped.
 Stencil sampling_stencil(int axis, vec3 g, inout vec3 slope) {
     Stencil st = face_stencil(axis, g);
 #if PF_SOLID_WALLS
     ivec3 c = clamp(ivec3(floor(g)), ivec3(0), sim.grid.xyz - 1);
-    if (PF_CELL_KIND(cell_type[cell_index(c)]) == PF_CELL_SOLID) return st;
+    if (solid_cell(c)) return st;
     for (int a = 0; a < 3; ++a) {
         if (a == axis) continue;  // the normal lattice's two faces are the own cell's
-        // On a cell-centred axis the stencil spans the own column and one beside it.
+        // On a cell-centred axis the stencil spans the own column and one beside it (on an axis
+        // one cell long, the own column alone: its "beside" lies outside the domain).
         bool own_low = c[a] == st.base[a];
-        ivec3 other = c;
-        other[a] += own_low ? 1 : -1;
-        if (PF_CELL_KIND(cell_type[cell_index(other)]) != PF_CELL_SOLID) continue;
-        // Only a wall one cell thick: a thicker one's inner faces come from the near side alone.
-        ivec3 beyond = other;
-        beyond[a] += own_low ? 1 : -1;
-        if (beyond[a] < 0 || beyond[a] >= sim.grid[a]) continue;
-        if (PF_CELL_KIND(cell_type[cell_index(beyond)]) == PF_CELL_SOLID) continue;
+        ivec3 step = ivec3(0);
+        step[a] = own_low ? 1 : -1;
+        // Only a wall one cell thick with the domain going on beyond it: a thicker one's inner
+        // faces come from the near side alone.
+        if (!cell_inside(c + 2 * step) || !solid_cell(c + step) || solid_cell(c + 2 * step)) continue;
         st.frac[a] = own_low ? 0.0 : 1.0;
         slope[a] = 0.0;
     }

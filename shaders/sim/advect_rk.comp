@@ -70,8 +70,11 @@ void main() {
         vec3 next = trace_wall_clamp(x, crossed);
 #if PF_SOLID_WALLS  // only obstacles make SOLID cells
         if (s == 0) was_solid = in_solid_cell(x0);
-        if (!was_solid && move_enters_solid(x0, next)) break;
-        was_solid = in_solid_cell(next);
+        // A move that enters no SOLID cell ends outside one (move_enters_solid samples its end).
+        if (was_solid)
+            was_solid = in_solid_cell(next);
+        else if (move_enters_solid(x0, next))
+            break;
 #endif
         x0 = next;
         walls = crossed;
