@@ -217,6 +217,15 @@ bool PassRunner::writes_indirect_records(gl::ProgramId id) {
         case gl::ProgramId::cg_matvec_stored:
         case gl::ProgramId::cg_zstats:
         case gl::ProgramId::mg_smooth_zstats:
+        case gl::ProgramId::cg_init_none_cells:
+        case gl::ProgramId::cg_init_jacobi_cells:
+        case gl::ProgramId::cg_update_none_cells:
+        case gl::ProgramId::cg_update_jacobi_cells:
+        case gl::ProgramId::cg_matvec_none_cells:
+        case gl::ProgramId::cg_matvec_jacobi_cells:
+        case gl::ProgramId::cg_matvec_stored_cells:
+        case gl::ProgramId::cg_zstats_cells:
+        case gl::ProgramId::mg_smooth_zstats_cells:
         case gl::ProgramId::ww_commit:
         // The viscosity's setup (its records' full sizes) and its passes ending in a scalar step.
         case gl::ProgramId::visc_setup:

@@ -212,7 +212,7 @@ pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, Pr
         std::unique_ptr<PressureSolver> made = make_pressure_solver(params.pressure_solver);
         if (!made) return log_.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": unknown pressure solver");
         const SolverGrid grid{glm::ivec3(desc_.grid_size[0], desc_.grid_size[1], desc_.grid_size[2]),
-                              uint32_t(cells_)};
+                              uint32_t(cells_), uint64_t(cells_) <= one_cell_reduction_cells_};
         if (pf_result r = made->init(gl_, *runner_, grid, log_, fn); r != PF_OK) return r;
         if (pf_result r = gl::check_allocated(gl_, log_, std::string(fn) + ": allocating the pressure solver"); r != PF_OK)
             return r;
@@ -724,6 +724,17 @@ pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, con
 pf_result Simulation::set_ordered_g2p_face_bytes_for_test(uint64_t bytes) {
     ordered_g2p_face_bytes_ = bytes;
     return prepare_particle_passes(desc_.params, "set_ordered_g2p_face_bytes_for_test");
+}
+
+pf_result Simulation::set_one_cell_reduction_cells_for_test(uint64_t cells) {
+    gl::StateGuard guard(gl_, gl_state_);
+    // An error left pending (a test's own GL calls) would be mistaken for the allocation's below.
+    while (gl_.GetError() != GL_NO_ERROR) {
+    }
+    one_cell_reduction_cells_ = cells;
+    for (auto* slots : {&solvers_, &correction_solvers_})
+        for (std::unique_ptr<PressureSolver>& solver : *slots) solver.reset();
+    return solvers_for(desc_.params, "set_one_cell_reduction_cells_for_test", &solvers_in_use_);
 }
 
 pf_result Simulation::run_g2p_and_advect_for_test(float dt) {

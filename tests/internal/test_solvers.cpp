@@ -65,6 +65,7 @@ struct Solved {
     float reported_residual = 0;
     bool bottom = false;        // multigrid: the bottom of the V-cycle ran in one workgroup (mg_bottom.comp)
     bool coarse_solve = false;  // multigrid: the coarsest level ran on its own (mg_coarse_solve.comp)
+    bool one_cell_an_invocation = false;  // CG's p.A p ran one invocation a cell (orbit_main.glsl)
 };
 
 struct SolverCase {
@@ -106,6 +107,8 @@ protected:
         std::memcpy(&out.reported_residual, &status[PF_STATUS_SOLVER_RESIDUAL], 4);
         out.bottom = sim.runner().program(gl::ProgramId::mg_bottom) != 0;
         out.coarse_solve = sim.runner().program(gl::ProgramId::mg_coarse_solve) != 0;
+        out.one_cell_an_invocation = sim.runner().program(gl::ProgramId::cg_matvec_none_cells) != 0 ||
+                                     sim.runner().program(gl::ProgramId::cg_matvec_stored_cells) != 0;
         EXPECT_EQ(sim.runner().binding_errors(), 0u);
         return out;
     }
@@ -306,6 +309,98 @@ TEST_P(SolverLadder, MgpcgBeatsJacobiOnTheSameBudget) {
     RecordProperty("mgpcg_10", std::to_string(r_mgpcg));
     EXPECT_LT(r_mgpcg, 1e-4);
     EXPECT_GT(r_jacobi, 1e-2);
+}
+
+// The Krylov solvers' scalars come from the reduction kernels' sums, which run one invocation a
+// cell on grids up to 64^3 and one a mirror orbit above (orbit_main.glsl). Three iterations
+// from p = 0 on the GPU against the same iterations in double on the CPU, on a grid of each
+// mapping: every scalar step (the start's r.z, alpha's p.A p, beta's new r.z) shows in the
+// iterates. (A solve to a tolerance would not show a wrong sum: with a third of the partials
+// left out it converged all the same, a little slower.)
+std::vector<double> cg_iterations(const Problem& pb, const std::vector<double>& b, int iterations, bool multigrid) {
+    auto dot = [](const std::vector<double>& x, const std::vector<double>& y) {
+        double sum = 0;
+        for (size_t c = 0; c < x.size(); ++c) sum += x[c] * y[c];
+        return sum;
+    };
+    auto precondition = [&](const std::vector<double>& r) {
+        return multigrid ? ref::multigrid_vcycle(pb.grid, pb.type, {}, r, PF_MG_COARSE_CELLS, PF_MG_MAX_LEVELS,
+                                                 PF_MG_COARSE_SWEEPS)
+                         : r;
+    };
+    std::vector<double> x(b.size(), 0.0), r = b, z = precondition(r), p = z;
+    double rz = dot(r, z);
+    for (int it = 0; it < iterations; ++it) {
+        const std::vector<double> q = ref::laplacian(pb.grid, pb.type, p);
+        const double alpha = rz / dot(p, q);
+        for (size_t c = 0; c < x.size(); ++c) x[c] += alpha * p[c], r[c] -= alpha * q[c];
+        z = precondition(r);
+        const double rz_next = dot(r, z);
+        for (size_t c = 0; c < p.size(); ++c) p[c] = z[c] + rz_next / rz * p[c];
+        rz = rz_next;
+    }
+    return x;
+}
+
+TEST_P(SolverLadder, ReductionsInBothMappingsMatchTheReference) {
+    for (const glm::ivec3& n : {glm::ivec3{80, 48, 48}, glm::ivec3{72, 64, 64}}) {  // 184,320 and 294,912 cells
+        const bool small = n.x == 80;  // up to 64^3 cells: one invocation a cell
+        const Problem pb = bubbly_tank(n, 13, 0.0);
+        std::vector<double> b(pb.rhs.size());
+        for (size_t c = 0; c < b.size(); ++c) b[c] = pb.type[c] == ref::FLUID ? double(float(pb.rhs[c])) : 0.0;
+        for (pf_pressure_solver solver : {PF_PRESSURE_SOLVER_CG, PF_PRESSURE_SOLVER_MGPCG}) {
+            const std::string name = std::to_string(n.x) + "x" + std::to_string(n.y) + "x" + std::to_string(n.z) +
+                                     (solver == PF_PRESSURE_SOLVER_CG ? "_cg" : "_mgpcg");
+            const Solved s = solve_with(solver, pb, 1e-9f, 3);
+            ASSERT_EQ(s.p.size(), pb.rhs.size()) << name;
+            EXPECT_EQ(s.iterations, 3u) << name;
+            EXPECT_EQ(s.one_cell_an_invocation, small) << name;
+            const std::vector<double> x = cg_iterations(pb, b, 3, solver == PF_PRESSURE_SOLVER_MGPCG);
+            double worst = 0, largest = 0;
+            for (size_t c = 0; c < x.size(); ++c) {
+                worst = std::max(worst, std::abs(s.p[c] - x[c]));
+                largest = std::max(largest, std::abs(x[c]));
+            }
+            char ratio[32];
+            std::snprintf(ratio, sizeof ratio, "%.2e", worst / largest);
+            RecordProperty("worst_" + name, ratio);
+            EXPECT_LT(worst, 1e-4 * largest) << name;
+        }
+    }
+}
+
+// The two mappings of the reduction kernels form the same sums bit for bit (orbit_main.glsl), so
+// every solver returns the same bits with either: the same problem solved by one simulation with
+// its default (one invocation a cell, a small grid) and again with the orbit mapping forced.
+TEST_P(SolverLadder, BothReductionMappingsGiveTheSameBits) {
+    const Problem pb = bubbly_tank({24, 20, 17}, 21, 0.0);  // an odd axis: orbits with a repeated cell
+    for (int s = 0; s < PF_PRESSURE_SOLVER_COUNT; ++s) {
+        const pf_pressure_solver solver = pf_pressure_solver(s);
+        pf_sim_desc d = test_desc(uint32_t(pb.grid.nx), uint32_t(pb.grid.ny), uint32_t(pb.grid.nz), 0.05f);
+        d.max_particles = 1024;
+        d.params.pressure_solver = solver;
+        d.params.pressure_tolerance = 1e-4f;
+        d.params.pressure_iterations = 40;  // Jacobi and RBGS stop there, short of the tolerance
+        SimPtr handle = create(d);
+        ASSERT_TRUE(handle);
+        Simulation& sim = *pf::entry(handle)->impl;
+        const std::vector<uint32_t> type(pb.type.begin(), pb.type.end());
+        const std::vector<float> rhs(pb.rhs.begin(), pb.rhs.end());
+        std::vector<float> p[2];
+        uint32_t iterations[2] = {};
+        for (int mapping = 0; mapping < 2; ++mapping) {
+            if (mapping == 1) ASSERT_EQ(sim.set_one_cell_reduction_cells_for_test(0), PF_OK) << last_log();
+            // Programs once built stay built: the orbit mapping's appears only when forced.
+            EXPECT_NE(sim.runner().program(gl::ProgramId::solver_residual_cells), 0u) << s;
+            EXPECT_EQ(sim.runner().program(gl::ProgramId::solver_residual) != 0, mapping == 1) << s;
+            p[mapping].assign(rhs.size(), 0.0f);
+            ASSERT_EQ(sim.solve_for_test(type, rhs, p[mapping]), PF_OK);
+            iterations[mapping] = sim.read_grid(GridBuffer::status)[PF_STATUS_SOLVER_ITERATIONS];
+        }
+        EXPECT_GT(iterations[0], 0u) << s;
+        EXPECT_EQ(iterations[0], iterations[1]) << s;
+        EXPECT_EQ(std::memcmp(p[0].data(), p[1].data(), p[0].size() * 4), 0) << s;
+    }
 }
 
 // Multigrid's point: the iterations barely grow as the grid is refined (a twice finer grid

@@ -5,7 +5,7 @@
 // With a stored z, cg_init_stored.comp.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
-layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(local_size_x = PF_REDUCTION_INVOCATIONS) in;
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_RHS) readonly buffer Rhs { float rhs[]; };
 layout(std430, binding = PF_SLOT_SOLVER_X) buffer X { float x[]; };

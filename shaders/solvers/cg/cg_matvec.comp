@@ -10,7 +10,7 @@
 // few microseconds whatever its size); the arithmetic is that of the two passes it replaces.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
-layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(local_size_x = PF_REDUCTION_INVOCATIONS) in;
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 #if PF_PRECOND == 0
 layout(std430, binding = PF_SLOT_SOLVER_R) readonly buffer R { float z_in[]; };  // z = r

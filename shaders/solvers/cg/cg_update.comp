@@ -4,7 +4,7 @@
 // for the next direction (cg_matvec.comp). With a stored z, cg_update_stored.comp.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
-layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(local_size_x = PF_REDUCTION_INVOCATIONS) in;
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_SOLVER_X) buffer X { float x[]; };
 layout(std430, binding = PF_SLOT_SOLVER_R) buffer R { float r[]; };

@@ -3,7 +3,7 @@
 // workgroup (cg_scalar_step.glsl). Used by a multigrid whose fine grid is its coarsest level.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
-layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(local_size_x = PF_REDUCTION_INVOCATIONS) in;
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_SOLVER_R) readonly buffer R { float r[]; };
 layout(std430, binding = PF_SLOT_SOLVER_Z) readonly buffer Z { float z[]; };

@@ -1,30 +1,60 @@
-// main() of the reduction kernels: one invocation per mirror orbit (poisson.glsl) runs the
-// kernel's per-cell work, vec4 cell_contribution(int c, ivec3 ijk) (the cell's index and
-// coordinates, known here without dividing), on the orbit's cells and adds the
-// results mirror-exactly; the workgroup sums go to the partials (reduce.glsl).
+// main() of the reduction kernels: runs the kernel's per-cell work,
+// vec4 cell_contribution(int c, ivec3 ijk) (the cell's index and coordinates), on every cell and
+// adds the results mirror-exactly: each mirror orbit (poisson.glsl) as ((a + b) + (c + d)), then
+// the orbits in a fixed order; the workgroup sums go to the partials (reduce.glsl).
+// Two mappings, a permutation each (SolveControl picks one by the grid's size), with the same
+// workgroups, each PF_WORKGROUP_SIZE orbits, and the same sums bit for bit:
+// - one invocation an orbit, doing its four cells in turn;
+// - PF_ONE_CELL_AN_INVOCATION 1: four times wider workgroups (PF_REDUCTION_INVOCATIONS), with
+//   invocation m + PF_WORKGROUP_SIZE qq doing one cell of orbit m, placed so that the first two
+//   levels of the workgroup's tree add the orbit as the first mapping does. The GPU then waits on
+//   one cell's loads where it waited on four in turn, which pays where the orbits are few (a 24^3
+//   grid's fill 14 workgroups) and costs where they fill the GPU (docs/performance.md,
+//   "Reductions by grid size").
 // With PF_LAST_GROUP defined, the last workgroup to finish (counted with an atomic in the
 // state buffer, reset by that workgroup) then adds up all the partials in a fixed order and
 // calls the kernel's void last_group_step(vec4 total) in invocation 0: a scalar step without a
 // pass of its own. The kernel must declare `partials` coherent (the last workgroup reads what
 // the others wrote) and `state`.
 // Include after defining cell_contribution (and last_group_step).
+#ifndef PF_ONE_CELL_AN_INVOCATION
+#define PF_ONE_CELL_AN_INVOCATION 0
+#endif
+#if (PF_ONE_CELL_AN_INVOCATION && PF_REDUCTION_INVOCATIONS != 4 * PF_WORKGROUP_SIZE) || \
+    (!PF_ONE_CELL_AN_INVOCATION && PF_REDUCTION_INVOCATIONS != PF_WORKGROUP_SIZE)
+#error "a workgroup takes PF_WORKGROUP_SIZE orbits, one invocation an orbit or a cell"
+#endif
 #ifdef PF_LAST_GROUP
 shared bool s_last_group;
 #endif
 
+// Cell q of the orbit whose origin is a (0: a, 1: its x mirror, 2: its z mirror, 3: both); 0
+// where the cell repeats another (the middle column of an odd axis).
+vec4 orbit_member(ivec3 a, int q) {
+    ivec3 ijk = orbit_coord(a, q);
+    bool repeat = ((q & 1) != 0 && ijk.x == a.x) || ((q & 2) != 0 && ijk.z == a.z);
+    return repeat ? vec4(0.0) : cell_contribution(level_index(ijk), ijk);
+}
+
 void main() {
+    uint lid = gl_LocalInvocationIndex;
+    uint groups = gl_NumWorkGroups.x * gl_NumWorkGroups.y;
+    vec4 v = vec4(0.0);
+#if PF_ONE_CELL_AN_INVOCATION
+    // The tree's first level adds invocations 2 PF_WORKGROUP_SIZE apart (qq and qq + 2), the
+    // second the two pair sums: qq 0, 2 are cells 0, 1 (a, b) and qq 1, 3 cells 2, 3.
+    int o = int(workgroup_index() * uint(PF_WORKGROUP_SIZE) + lid % uint(PF_WORKGROUP_SIZE));
+    uint qq = lid / uint(PF_WORKGROUP_SIZE);
+    if (o < orbit_count()) v = orbit_member(orbit_origin(o), int(((qq & 1u) << 1) | (qq >> 1)));
+#else
     int o = int(flat_id());
-    vec4 total = vec4(0.0);
     if (o < orbit_count()) {
         ivec3 a = orbit_origin(o);
-        ivec4 cells = orbit_cells(a);
-        vec4 v[4];
-        for (int q = 0; q < 4; ++q) v[q] = cells[q] >= 0 ? cell_contribution(cells[q], orbit_coord(a, q)) : vec4(0.0);
-        total = (v[0] + v[1]) + (v[2] + v[3]);
+        v = (orbit_member(a, 0) + orbit_member(a, 1)) + (orbit_member(a, 2) + orbit_member(a, 3));
     }
-    store_workgroup_sum(total);
+#endif
+    store_workgroup_sum(v);
 #ifdef PF_LAST_GROUP
-    uint groups = gl_NumWorkGroups.x * gl_NumWorkGroups.y;
     if (gl_LocalInvocationIndex == 0u) {
         memoryBarrierBuffer();  // this workgroup's partial is visible before it is counted
         s_last_group = atomicAdd(state[PF_SOLVER_ARRIVALS], 1u) + 1u == groups;

@@ -58,7 +58,7 @@ uint workgroup_index() { return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWork
 // mirror symmetric across both; gravity breaks y). A reduction that adds each orbit's 4 cells
 // as ((a + b) + (c + d)) — pairs that swap under one mirror, and pair sums that swap under the
 // other — and then the orbit sums in a fixed order gives bit-identical totals for mirrored
-// inputs: the solvers' convergence decisions and Krylov scalars stay mirror-exact.
+// inputs (orbit_main.glsl): the solvers' convergence decisions and Krylov scalars stay mirror-exact.
 int orbit_count() { return ((u_dims.x + 1) / 2) * u_dims.y * ((u_dims.z + 1) / 2); }
 
 // The orbit's first cell (i, j, k) with i and k in the lower halves of their axes.
@@ -66,12 +66,4 @@ ivec3 orbit_origin(int o) { return unflatten(o, ivec3((u_dims.x + 1) / 2, u_dims
 // The coordinates of the orbit's cells: a, its x-mirror, its z-mirror, both.
 ivec3 orbit_coord(ivec3 a, int q) {
     return ivec3((q & 1) != 0 ? u_dims.x - 1 - a.x : a.x, a.y, (q & 2) != 0 ? u_dims.z - 1 - a.z : a.z);
-}
-// The orbit's cells (i, k), (x-mirror), (z-mirror), (both); -1 where one repeats another
-// (the middle column of an odd axis).
-ivec4 orbit_cells(ivec3 a) {
-    int mx = u_dims.x - 1 - a.x, mz = u_dims.z - 1 - a.z;
-    return ivec4(level_index(a), mx != a.x ? level_index(ivec3(mx, a.y, a.z)) : -1,
-                 mz != a.z ? level_index(ivec3(a.x, a.y, mz)) : -1,
-                 mx != a.x && mz != a.z ? level_index(ivec3(mx, a.y, mz)) : -1);
 }

@@ -3,14 +3,18 @@
 // A single-workgroup kernel adds the partials in a fixed order (sum_partials). The same input
 // therefore always gives the same bits, and no float atomics are needed.
 // Requires the kernel to declare `partials` (vec4 per workgroup) before including this file.
-shared vec4 s_reduce[PF_WORKGROUP_SIZE];
+// The workgroup is PF_REDUCTION_INVOCATIONS wide (solver_state.h), PF_WORKGROUP_SIZE by default.
+#ifndef PF_REDUCTION_INVOCATIONS
+#define PF_REDUCTION_INVOCATIONS PF_WORKGROUP_SIZE
+#endif
+shared vec4 s_reduce[PF_REDUCTION_INVOCATIONS];
 
 // Every invocation of the workgroup must call this (no early return before it).
 void store_workgroup_sum(vec4 v) {
     uint lid = gl_LocalInvocationIndex;
     s_reduce[lid] = v;
     barrier();
-    for (uint stride = uint(PF_WORKGROUP_SIZE) / 2u; stride > 0u; stride >>= 1u) {
+    for (uint stride = uint(PF_REDUCTION_INVOCATIONS) / 2u; stride > 0u; stride >>= 1u) {
         if (lid < stride) s_reduce[lid] += s_reduce[lid + stride];
         barrier();
     }
@@ -21,10 +25,10 @@ void store_workgroup_sum(vec4 v) {
 vec4 sum_partials(uint count) {
     uint lid = gl_LocalInvocationIndex;
     vec4 v = vec4(0.0);
-    for (uint i = lid; i < count; i += uint(PF_WORKGROUP_SIZE)) v += partials[i];
+    for (uint i = lid; i < count; i += uint(PF_REDUCTION_INVOCATIONS)) v += partials[i];
     s_reduce[lid] = v;
     barrier();
-    for (uint stride = uint(PF_WORKGROUP_SIZE) / 2u; stride > 0u; stride >>= 1u) {
+    for (uint stride = uint(PF_REDUCTION_INVOCATIONS) / 2u; stride > 0u; stride >>= 1u) {
         if (lid < stride) s_reduce[lid] += s_reduce[lid + stride];
         barrier();
     }

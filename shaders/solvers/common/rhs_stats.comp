@@ -3,7 +3,7 @@
 // so the system is consistent.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
-layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(local_size_x = PF_REDUCTION_INVOCATIONS) in;
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_RHS) readonly buffer Rhs { float rhs[]; };
 layout(std430, binding = PF_SLOT_SOLVER_PARTIALS) buffer Partials { vec4 partials[]; };

@@ -33,6 +33,15 @@
 #define PF_SOLVER_MAX_RECORDS 32
 #define PF_SOLVER_WORDS (PF_SOLVER_SCALARS + 8 * PF_SOLVER_MAX_RECORDS)
 
+/* The reduction kernels' workgroup (orbit_main.glsl): PF_WORKGROUP_SIZE invocations, one a mirror
+ * orbit of 4 cells, or 4 times as many in the permutations that run one invocation a cell, so
+ * that a workgroup still covers PF_WORKGROUP_SIZE orbits and forms the same sums bit for bit. */
+#if defined(PF_ONE_CELL_AN_INVOCATION) && PF_ONE_CELL_AN_INVOCATION
+#define PF_REDUCTION_INVOCATIONS 1024 /* 4 PF_WORKGROUP_SIZE, a literal as GLSL 4.30's layout asks */
+#else
+#define PF_REDUCTION_INVOCATIONS PF_WORKGROUP_SIZE
+#endif
+
 /* Explicit uniform locations of the solver kernels (set by glProgramUniform before each pass). */
 #define PF_LOC_SOLVER_DIMS 0     /* ivec4: cells per axis and cell count of the level worked on */
 #define PF_LOC_SOLVER_COLOR 1    /* uint: red-black colour (0: i+j+k even) */

@@ -6,7 +6,7 @@
 // (poisson.glsl), summed as every reduction kernel does (orbit_main.glsl).
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
-layout(local_size_x = PF_WORKGROUP_SIZE) in;
+layout(local_size_x = PF_REDUCTION_INVOCATIONS) in;
 layout(std430, binding = PF_SLOT_MG_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_MG_R) readonly buffer R { float r[]; };
 layout(std430, binding = PF_SLOT_MG_E) buffer Z { float z[]; };

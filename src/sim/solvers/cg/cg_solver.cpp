@@ -14,25 +14,25 @@ ConjugateGradientSolver::ConjugateGradientSolver(Preconditioner kind, const char
 
 ProgramId ConjugateGradientSolver::init_program() const {
     switch (kind_) {
-        case Preconditioner::none: return ProgramId::cg_init_none;
-        case Preconditioner::jacobi: return ProgramId::cg_init_jacobi;
-        default: return ProgramId::cg_init_stored;
+        case Preconditioner::none: return control_.reduction(ProgramId::cg_init_none);
+        case Preconditioner::jacobi: return control_.reduction(ProgramId::cg_init_jacobi);
+        default: return control_.reduction(ProgramId::cg_init_stored);
     }
 }
 
 ProgramId ConjugateGradientSolver::update_program() const {
     switch (kind_) {
-        case Preconditioner::none: return ProgramId::cg_update_none;
-        case Preconditioner::jacobi: return ProgramId::cg_update_jacobi;
-        default: return ProgramId::cg_update_stored;
+        case Preconditioner::none: return control_.reduction(ProgramId::cg_update_none);
+        case Preconditioner::jacobi: return control_.reduction(ProgramId::cg_update_jacobi);
+        default: return control_.reduction(ProgramId::cg_update_stored);
     }
 }
 
 ProgramId ConjugateGradientSolver::matvec_program() const {
     switch (kind_) {
-        case Preconditioner::none: return ProgramId::cg_matvec_none;
-        case Preconditioner::jacobi: return ProgramId::cg_matvec_jacobi;
-        default: return ProgramId::cg_matvec_stored;
+        case Preconditioner::none: return control_.reduction(ProgramId::cg_matvec_none);
+        case Preconditioner::jacobi: return control_.reduction(ProgramId::cg_matvec_jacobi);
+        default: return control_.reduction(ProgramId::cg_matvec_stored);
     }
 }
 

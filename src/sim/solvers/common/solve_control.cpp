@@ -14,15 +14,36 @@ std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const Solv
     state_ = gl::Buffer(gl, zeros.size() * 4, GL_DYNAMIC_COPY, "solver_state");
     state_.upload(0, zeros.size() * 4, zeros.data());
     orbits_ = uint32_t((grid.size.x + 1) / 2) * uint32_t(grid.size.y) * uint32_t((grid.size.z + 1) / 2);
+    // One workgroup per PF_WORKGROUP_SIZE orbits in either mapping (orbit_main.glsl).
     partials_ = runner.workgroups(orbits_).total();  // a 2D dispatch may add idle workgroups
     partials_buffer_ = gl::Buffer(gl, size_t(partials_) * 16, GL_DYNAMIC_COPY, "solver_partials");
     add_record(grid.cells);
     orbit_record_ = add_record(orbits_);
-    for (gl::ProgramId id : {gl::ProgramId::solver_rhs_stats, gl::ProgramId::solver_begin, gl::ProgramId::solver_residual,
-                             gl::ProgramId::solver_check, gl::ProgramId::solver_report}) {
+    for (gl::ProgramId id : {reduction(gl::ProgramId::solver_rhs_stats), gl::ProgramId::solver_begin,
+                             reduction(gl::ProgramId::solver_residual), gl::ProgramId::solver_check,
+                             gl::ProgramId::solver_report}) {
         if (std::string error = runner.prepare(id); !error.empty()) return error;
     }
     return {};
+}
+
+gl::ProgramId SolveControl::reduction(gl::ProgramId id) const {
+    using gl::ProgramId;
+    if (!grid_.one_cell_an_invocation) return id;
+    switch (id) {
+        case ProgramId::solver_rhs_stats: return ProgramId::solver_rhs_stats_cells;
+        case ProgramId::solver_residual: return ProgramId::solver_residual_cells;
+        case ProgramId::cg_init_none: return ProgramId::cg_init_none_cells;
+        case ProgramId::cg_init_jacobi: return ProgramId::cg_init_jacobi_cells;
+        case ProgramId::cg_update_none: return ProgramId::cg_update_none_cells;
+        case ProgramId::cg_update_jacobi: return ProgramId::cg_update_jacobi_cells;
+        case ProgramId::cg_matvec_none: return ProgramId::cg_matvec_none_cells;
+        case ProgramId::cg_matvec_jacobi: return ProgramId::cg_matvec_jacobi_cells;
+        case ProgramId::cg_matvec_stored: return ProgramId::cg_matvec_stored_cells;
+        case ProgramId::cg_zstats: return ProgramId::cg_zstats_cells;
+        case ProgramId::mg_smooth_zstats: return ProgramId::mg_smooth_zstats_cells;
+        default: return id;
+    }
 }
 
 uint32_t SolveControl::add_record(uint64_t invocations) {
@@ -43,7 +64,7 @@ Uniform SolveControl::dims_uniform(glm::ivec3 dims) {
 }
 
 void SolveControl::begin(PassRunner& runner, StatId stat, const PressureProblem& problem, bool another_round) {
-    runner.run({gl::ProgramId::solver_rhs_stats,
+    runner.run({reduction(gl::ProgramId::solver_rhs_stats),
                 stat,
                 orbits_,
                 {{PF_SLOT_CELL_TYPE, &problem.cell_type}, {PF_SLOT_RHS, &problem.rhs},
@@ -62,7 +83,7 @@ void SolveControl::begin(PassRunner& runner, StatId stat, const PressureProblem&
 }
 
 void SolveControl::residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct) {
-    runner.run({gl::ProgramId::solver_residual,
+    runner.run({reduction(gl::ProgramId::solver_residual),
                 stat,
                 orbits_,
                 {{PF_SLOT_CELL_TYPE, &problem.cell_type},

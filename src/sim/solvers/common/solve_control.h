@@ -20,15 +20,20 @@ namespace pf {
 class SolveControl {
 public:
     // Allocates the state and partials buffers and builds the shared programs; record 0 is
-    // the fine grid's cells, record orbit_record() its mirror orbits (the reduction kernels
-    // work per orbit, shaders/solvers/common/poisson.glsl). Returns an error message, empty on success.
+    // the fine grid's cells, record orbit_record() its mirror orbits (the reduction kernels'
+    // workgroups take PF_WORKGROUP_SIZE orbits each, shaders/solvers/common/orbit_main.glsl).
+    // Returns an error message, empty on success.
     std::string init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid);
     // Adds an indirect record dispatching `invocations` (a coarser grid level); its index.
     uint32_t add_record(uint64_t invocations);
     Indirect record(uint32_t k) const;
-    // Indirect record and size of the reduction kernels' dispatch: one invocation per orbit.
+    // Indirect record and size of the reduction kernels' dispatch, in orbits (either mapping runs
+    // a workgroup per PF_WORKGROUP_SIZE orbits).
     Indirect orbit_record() const { return record(orbit_record_); }
     uint32_t orbit_count() const { return orbits_; }
+    // The permutation of reduction kernel `id` (orbit_main.glsl) for this grid's mapping; any
+    // other kernel is returned as it is.
+    gl::ProgramId reduction(gl::ProgramId id) const;
     // Workgroups (and partial sums) of a reduction pass over the fine grid.
     uint32_t partial_count() const { return partials_; }
 

@@ -56,7 +56,8 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         return "multigrid: the coarsest level has " + std::to_string(levels_.back().cells) + " cells (more than " +
                std::to_string(PF_MG_COARSE_CELLS) + ")";
     std::vector<ProgramId> programs{ProgramId::mg_smooth_from_zero, ProgramId::mg_coarsen_types,
-                                    ProgramId::mg_prolong_smooth, ProgramId::mg_smooth_zstats, ProgramId::cg_zstats};
+                                    ProgramId::mg_prolong_smooth, control.reduction(ProgramId::mg_smooth_zstats),
+                                    control.reduction(ProgramId::cg_zstats)};
     // The passes of the levels above the coarsest, fused or not, and the bottom's: only those built.
     bool fused = false, unfused = false, bottom = false;
     for (size_t l = 0; l + 1 < levels_.size(); ++l) {
@@ -182,7 +183,7 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
         half_sweep(runner, stat, l, out_of(l), 0u);
         return;
     }
-    runner.run({ProgramId::mg_smooth_zstats, stat, 0,
+    runner.run({control_->reduction(ProgramId::mg_smooth_zstats), stat, 0,
                 {{PF_SLOT_MG_TYPE, &type_of(0)}, {PF_SLOT_MG_R, &r_of(0)}, {PF_SLOT_MG_E, &out_of(0)},
                  {PF_SLOT_SOLVER_PARTIALS, &control_->partials()}, {PF_SLOT_SOLVER_STATE, &control_->state()}},
                 control_->orbit_record(),
@@ -205,7 +206,7 @@ void Multigrid::apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_ty
     vcycle(runner, stat, 0, cg_step);
     if (coarsest(0)) {
         // A grid small enough to be its own coarsest level: its solve has no fused sums.
-        runner.run({ProgramId::cg_zstats, stat, 0,
+        runner.run({control_->reduction(ProgramId::cg_zstats), stat, 0,
                     {{PF_SLOT_CELL_TYPE, &cell_type}, {PF_SLOT_SOLVER_R, &r}, {PF_SLOT_SOLVER_Z, &z},
                      {PF_SLOT_SOLVER_PARTIALS, &control_->partials()}, {PF_SLOT_SOLVER_STATE, &control_->state()}},
                     control_->orbit_record(),
