@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "gl/implementation.h"
 #include "pf/pf_version.h"
 
 namespace pf::gl {
@@ -12,11 +13,6 @@ namespace {
 constexpr size_t kHeaderBytes = sizeof(ProgramBlobHeader);
 // load's first buffer: most programs' binaries fit, larger ones take a second call.
 constexpr size_t kFirstCapacity = size_t(256) << 10;
-
-std::string gl_string(const Api& gl, GLenum name) {
-    const GLubyte* s = gl.GetString(name);
-    return s ? reinterpret_cast<const char*>(s) : "";
-}
 
 uint64_t hash_string(const std::string& s, uint64_t hash) {
     return fnv1a64(s.c_str(), s.size() + 1, hash);  // with its terminator: "ab"+"c" differs from "a"+"bc"
@@ -45,7 +41,7 @@ ProgramBinaryCache::ProgramBinaryCache(const Api& gl, const pf_program_cache& ca
     }
     formats_.assign(size_t(count), 0);
     gl_.GetIntegerv(GL_PROGRAM_BINARY_FORMATS, formats_.data());
-    for (GLenum name : {GL_VENDOR, GL_RENDERER, GL_VERSION}) identity_hash_ = hash_string(gl_string(gl_, name), identity_hash_);
+    for (GLenum name : {GL_VENDOR, GL_RENDERER, GL_VERSION}) identity_hash_ = hash_string(implementation_string(gl_, name), identity_hash_);
     identity_hash_ = hash_string(PF_VERSION_STRING, identity_hash_);
     active_ = true;
 }

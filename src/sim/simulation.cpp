@@ -11,6 +11,7 @@
 #include "gl/allocation_check.h"
 #include "gl/debug.h"
 #include "gl/entry_points.h"
+#include "gl/implementation.h"
 #include "gl/state_guard.h"
 #include "sim/particle_fill.h"
 
@@ -72,6 +73,8 @@ pf_result Simulation::init() {
     gl_.userptr = &memory_;  // every buffer made with this context counts itself (gl/memory_tally.h)
     // GL 4.4 added GL_QUERY_BUFFER, which redirects query results: the state guard parks it.
     gl_state_.query_buffer = major > 4 || minor >= 4;
+    // On a CPU rasteriser the solvers' reductions gain nothing from an invocation a cell.
+    if (gl::runs_on_the_cpu(gl_)) one_cell_reduction_cells_ = 0;
     // A GL error the engine left pending would be mistaken for ours below.
     if (GLenum pending = gl_.GetError(); pending != GL_NO_ERROR) {
         log_.warning("pf_create: a GL error (" + hex(pending) + ") was pending before the call; it was consumed");
@@ -212,7 +215,7 @@ pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, Pr
         std::unique_ptr<PressureSolver> made = make_pressure_solver(params.pressure_solver);
         if (!made) return log_.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": unknown pressure solver");
         const SolverGrid grid{glm::ivec3(desc_.grid_size[0], desc_.grid_size[1], desc_.grid_size[2]),
-                              uint32_t(cells_), uint64_t(cells_) <= one_cell_reduction_cells_};
+                              uint32_t(cells_), one_cell_reductions()};
         if (pf_result r = made->init(gl_, *runner_, grid, log_, fn); r != PF_OK) return r;
         if (pf_result r = gl::check_allocated(gl_, log_, std::string(fn) + ": allocating the pressure solver"); r != PF_OK)
             return r;

@@ -150,8 +150,10 @@ public:
     // the tiled P2G's order (default kOrderedG2pFaceBytes; 0: always, UINT64_MAX: never).
     pf_result set_ordered_g2p_face_bytes_for_test(uint64_t bytes);
     // Test access: the largest grid whose solvers' reduction kernels run one invocation a cell
-    // (default kOneCellReductionCells; 0: never); the solvers are made again.
+    // (default kOneCellReductionCells, 0 on a CPU rasteriser; 0: never); the solvers are made again.
     pf_result set_one_cell_reduction_cells_for_test(uint64_t cells);
+    // Whether this grid's solvers run their reduction kernels one invocation a cell.
+    bool one_cell_reductions() const { return uint64_t(cells_) <= one_cell_reduction_cells_; }
     // APIC affine vectors of the live particles, 12 floats each (c_x, c_y, c_z as vec4s);
     // empty while APIC was never used.
     std::vector<float> read_affine() const;
@@ -355,10 +357,10 @@ private:
     const gl::Buffer* g2p_order_ = nullptr;
     static constexpr uint64_t kOrderedG2pFaceBytes = uint64_t(4) << 20;
     uint64_t ordered_g2p_face_bytes_ = kOrderedG2pFaceBytes;
-    // The largest grid whose solvers' reduction kernels run one invocation a cell (SolverGrid): 64^3.
-    // On the H200 its frame is 3-10% faster up to 96 x 48 x 48 cells; from 128 x 64 x 64, where the
-    // orbits fill the GPU, four times more invocations made it slower (docs/performance.md,
-    // "Reductions by grid size").
+    // The largest grid whose solvers' reduction kernels run one invocation a cell (SolverGrid): 64^3,
+    // none on a CPU rasteriser. On the H200 its frame is 3-10% faster up to 96 x 48 x 48 cells;
+    // from 128 x 64 x 64, where the orbits fill the GPU, four times more invocations made it
+    // slower, and on llvmpipe slower at every size (docs/performance.md, "Reductions by grid size").
     static constexpr uint64_t kOneCellReductionCells = uint64_t(1) << 18;
     uint64_t one_cell_reduction_cells_ = kOneCellReductionCells;
     bool cell_counts_current_ = false;  // cell_count() describes the particles (see its accessor)

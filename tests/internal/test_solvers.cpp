@@ -8,6 +8,7 @@
 #include <random>
 
 #include "api/handle.h"
+#include "gl/implementation.h"
 #include "reference/cpu_reference.h"
 #include "solvers/mgpcg/multigrid_limits.h"
 #include "support/sim_fixture.h"
@@ -65,7 +66,7 @@ struct Solved {
     float reported_residual = 0;
     bool bottom = false;        // multigrid: the bottom of the V-cycle ran in one workgroup (mg_bottom.comp)
     bool coarse_solve = false;  // multigrid: the coarsest level ran on its own (mg_coarse_solve.comp)
-    bool one_cell_an_invocation = false;  // CG's p.A p ran one invocation a cell (orbit_main.glsl)
+    bool one_cell_an_invocation = false;  // the reduction kernels ran one invocation a cell (orbit_main.glsl)
 };
 
 struct SolverCase {
@@ -78,6 +79,10 @@ protected:
     Solved solve(const Problem& pb, float tolerance, uint32_t cap, uint32_t separation, float jacobi_omega = 1.0f) {
         return solve_with(GetParam().solver, pb, tolerance, cap, separation, jacobi_omega);
     }
+    // Solves with every solver's reduction kernels forced to one invocation a cell (1) or an orbit
+    // (0) while set, else as the simulation picks (Simulation::set_one_cell_reduction_cells_for_test).
+    int force_one_cell_an_invocation_ = -1;
+
     Solved solve_with(pf_pressure_solver solver, const Problem& pb, float tolerance, uint32_t cap,
                       uint32_t separation = 0, float jacobi_omega = 1.0f) {
         pf_sim_desc d = test_desc(uint32_t(pb.grid.nx), uint32_t(pb.grid.ny), uint32_t(pb.grid.nz), 0.05f);
@@ -91,6 +96,10 @@ protected:
         EXPECT_TRUE(handle);
         if (!handle) return {};
         Simulation& sim = *pf::entry(handle)->impl;
+        if (force_one_cell_an_invocation_ >= 0) {
+            EXPECT_EQ(sim.set_one_cell_reduction_cells_for_test(force_one_cell_an_invocation_ ? UINT64_MAX : 0), PF_OK)
+                << last_log();
+        }
         std::vector<uint32_t> type(pb.type.begin(), pb.type.end());
         if (!pb.theta.empty()) {  // FLUID words carry their extra diagonal, as free_surface.comp writes it
             const std::vector<double> extra = ref::surface_extra_diagonal(pb.grid, pb.type, pb.theta);
@@ -107,8 +116,7 @@ protected:
         std::memcpy(&out.reported_residual, &status[PF_STATUS_SOLVER_RESIDUAL], 4);
         out.bottom = sim.runner().program(gl::ProgramId::mg_bottom) != 0;
         out.coarse_solve = sim.runner().program(gl::ProgramId::mg_coarse_solve) != 0;
-        out.one_cell_an_invocation = sim.runner().program(gl::ProgramId::cg_matvec_none_cells) != 0 ||
-                                     sim.runner().program(gl::ProgramId::cg_matvec_stored_cells) != 0;
+        out.one_cell_an_invocation = sim.one_cell_reductions();
         EXPECT_EQ(sim.runner().binding_errors(), 0u);
         return out;
     }
@@ -312,9 +320,9 @@ TEST_P(SolverLadder, MgpcgBeatsJacobiOnTheSameBudget) {
 }
 
 // The Krylov solvers' scalars come from the reduction kernels' sums, which run one invocation a
-// cell on grids up to 64^3 and one a mirror orbit above (orbit_main.glsl). Three iterations
-// from p = 0 on the GPU against the same iterations in double on the CPU, on a grid of each
-// mapping: every scalar step (the start's r.z, alpha's p.A p, beta's new r.z) shows in the
+// cell on a GPU's grids up to 64^3 and one a mirror orbit above and on a CPU rasteriser
+// (orbit_main.glsl). Three iterations from p = 0 on the GPU against the same iterations in double
+// on the CPU, with each mapping forced: every scalar step (the start's r.z, alpha's p.A p, beta's new r.z) shows in the
 // iterates. (A solve to a tolerance would not show a wrong sum: with a third of the partials
 // left out it converged all the same, a little slower.)
 std::vector<double> cg_iterations(const Problem& pb, const std::vector<double>& b, int iterations, bool multigrid) {
@@ -343,18 +351,19 @@ std::vector<double> cg_iterations(const Problem& pb, const std::vector<double>& 
 }
 
 TEST_P(SolverLadder, ReductionsInBothMappingsMatchTheReference) {
-    for (const glm::ivec3& n : {glm::ivec3{80, 48, 48}, glm::ivec3{72, 64, 64}}) {  // 184,320 and 294,912 cells
-        const bool small = n.x == 80;  // up to 64^3 cells: one invocation a cell
-        const Problem pb = bubbly_tank(n, 13, 0.0);
-        std::vector<double> b(pb.rhs.size());
-        for (size_t c = 0; c < b.size(); ++c) b[c] = pb.type[c] == ref::FLUID ? double(float(pb.rhs[c])) : 0.0;
+    const glm::ivec3 n{80, 48, 48};
+    const Problem pb = bubbly_tank(n, 13, 0.0);
+    std::vector<double> b(pb.rhs.size());
+    for (size_t c = 0; c < b.size(); ++c) b[c] = pb.type[c] == ref::FLUID ? double(float(pb.rhs[c])) : 0.0;
+    for (int one_cell = 0; one_cell < 2; ++one_cell) {
+        force_one_cell_an_invocation_ = one_cell;
         for (pf_pressure_solver solver : {PF_PRESSURE_SOLVER_CG, PF_PRESSURE_SOLVER_MGPCG}) {
-            const std::string name = std::to_string(n.x) + "x" + std::to_string(n.y) + "x" + std::to_string(n.z) +
+            const std::string name = std::string(one_cell ? "cells" : "orbits") +
                                      (solver == PF_PRESSURE_SOLVER_CG ? "_cg" : "_mgpcg");
             const Solved s = solve_with(solver, pb, 1e-9f, 3);
             ASSERT_EQ(s.p.size(), pb.rhs.size()) << name;
             EXPECT_EQ(s.iterations, 3u) << name;
-            EXPECT_EQ(s.one_cell_an_invocation, small) << name;
+            EXPECT_EQ(s.one_cell_an_invocation, one_cell == 1) << name;
             const std::vector<double> x = cg_iterations(pb, b, 3, solver == PF_PRESSURE_SOLVER_MGPCG);
             double worst = 0, largest = 0;
             for (size_t c = 0; c < x.size(); ++c) {
@@ -371,7 +380,7 @@ TEST_P(SolverLadder, ReductionsInBothMappingsMatchTheReference) {
 
 // The two mappings of the reduction kernels form the same sums bit for bit (orbit_main.glsl), so
 // every solver returns the same bits with either: the same problem solved by one simulation with
-// its default (one invocation a cell, a small grid) and again with the orbit mapping forced.
+// each mapping forced in turn.
 TEST_P(SolverLadder, BothReductionMappingsGiveTheSameBits) {
     const Problem pb = bubbly_tank({24, 20, 17}, 21, 0.0);  // an odd axis: orbits with a repeated cell
     for (int s = 0; s < PF_PRESSURE_SOLVER_COUNT; ++s) {
@@ -384,15 +393,19 @@ TEST_P(SolverLadder, BothReductionMappingsGiveTheSameBits) {
         SimPtr handle = create(d);
         ASSERT_TRUE(handle);
         Simulation& sim = *pf::entry(handle)->impl;
+        // A GPU's small grid takes one invocation a cell; a CPU rasteriser never does.
+        EXPECT_EQ(sim.one_cell_reductions(), !gl::runs_on_the_cpu(sim.api())) << s;
         const std::vector<uint32_t> type(pb.type.begin(), pb.type.end());
         const std::vector<float> rhs(pb.rhs.begin(), pb.rhs.end());
         std::vector<float> p[2];
         uint32_t iterations[2] = {};
-        for (int mapping = 0; mapping < 2; ++mapping) {
-            if (mapping == 1) ASSERT_EQ(sim.set_one_cell_reduction_cells_for_test(0), PF_OK) << last_log();
-            // Programs once built stay built: the orbit mapping's appears only when forced.
-            EXPECT_NE(sim.runner().program(gl::ProgramId::solver_residual_cells), 0u) << s;
-            EXPECT_EQ(sim.runner().program(gl::ProgramId::solver_residual) != 0, mapping == 1) << s;
+        for (int mapping = 0; mapping < 2; ++mapping) {  // one invocation a cell, then an orbit
+            ASSERT_EQ(sim.set_one_cell_reduction_cells_for_test(mapping == 0 ? UINT64_MAX : 0), PF_OK) << last_log();
+            EXPECT_EQ(sim.one_cell_reductions(), mapping == 0) << s;
+            EXPECT_NE(sim.runner().program(mapping == 0 ? gl::ProgramId::solver_residual_cells
+                                                         : gl::ProgramId::solver_residual),
+                      0u)
+                << s;
             p[mapping].assign(rhs.size(), 0.0f);
             ASSERT_EQ(sim.solve_for_test(type, rhs, p[mapping]), PF_OK);
             iterations[mapping] = sim.read_grid(GridBuffer::status)[PF_STATUS_SOLVER_ITERATIONS];
