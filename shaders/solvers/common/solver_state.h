@@ -35,7 +35,8 @@
 
 /* The reduction kernels' workgroup (orbit_main.glsl): PF_WORKGROUP_SIZE invocations, one a mirror
  * orbit of 4 cells, or 4 times as many in the permutations that run one invocation a cell, so
- * that a workgroup still covers PF_WORKGROUP_SIZE orbits and forms the same sums bit for bit. */
+ * that a workgroup still covers PF_WORKGROUP_SIZE orbits and forms the same sums bit for bit (and
+ * the last workgroup's adding of up to 512 partials, reduce.glsl's sum_partials, too). */
 #if defined(PF_ONE_CELL_AN_INVOCATION) && PF_ONE_CELL_AN_INVOCATION
 #define PF_REDUCTION_INVOCATIONS 1024 /* 4 PF_WORKGROUP_SIZE, a literal as GLSL 4.30's layout asks */
 #else
