@@ -639,10 +639,12 @@ int run(int argc, char** argv) {
     const pfb::Ceilings ceilings = pfb::measure_ceilings();
     if (ceilings.measured()) {
         std::printf("ceilings measured now: compute copy %.0f GB/s (read + write), read %.0f GB/s, random 32-bit "
-                    "atomicAdd %.1f G/s; a dependent dispatch %.2f us (indirect %.2f, 4,096 idle workgroups %.2f); "
+                    "atomicAdd %.1f G/s; a dependent dispatch %.2f us (indirect %.2f, 4,096 idle workgroups %.2f; "
+                    "through a record nothing wrote %.2f, of 4,096 idle workgroups %.2f); "
                     "a 2 MiB copy %.2f us a dispatch after a barrier each, %.2f in independent pairs\n",
                     ceilings.copy_gbps, ceilings.read_gbps, ceilings.atomics_gops, ceilings.dispatch_us,
-                    ceilings.indirect_dispatch_us, ceilings.wide_dispatch_us, ceilings.copy_dispatch_us,
+                    ceilings.indirect_dispatch_us, ceilings.wide_dispatch_us, ceilings.static_indirect_dispatch_us,
+                    ceilings.wide_static_indirect_dispatch_us, ceilings.copy_dispatch_us,
                     ceilings.paired_copy_dispatch_us);
     } else {
         std::printf("ceilings: not measured (this GL's timer queries read 0)\n");
@@ -700,6 +702,8 @@ int run(int argc, char** argv) {
         cj["dispatch_us"] = ceilings.dispatch_us;
         cj["indirect_dispatch_us"] = ceilings.indirect_dispatch_us;
         cj["wide_dispatch_us"] = ceilings.wide_dispatch_us;
+        cj["static_indirect_dispatch_us"] = ceilings.static_indirect_dispatch_us;
+        cj["wide_static_indirect_dispatch_us"] = ceilings.wide_static_indirect_dispatch_us;
         cj["copy_dispatch_us"] = ceilings.copy_dispatch_us;
         cj["paired_copy_dispatch_us"] = ceilings.paired_copy_dispatch_us;
         cj["traffic_model"] = pfb::traffic_model_note();

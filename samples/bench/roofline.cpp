@@ -108,17 +108,23 @@ double time_dispatch(GLuint groups_x, GLuint groups_y, int runs) {
     return median_ns(runs, [&] { glDispatchCompute(groups_x, groups_y, 1); }) * 1e-6;
 }
 
+// How a chain's dispatches get their size: directly, or from an indirect record that the chain's
+// kernel writes (a command barrier before each dispatch), or from one nothing writes.
+enum class ChainDispatch { direct, written_record, static_record };
+
 // GPU microseconds per dispatch of `chain` dependent dispatches of (groups, 1) workgroups of the
-// bound program, each after a storage barrier (indirect: from the record at the bound dispatch
-// indirect buffer's start, after a command barrier too); the median of 5 chains after one untimed.
-double time_chain(GLuint groups, bool indirect, int chain) {
+// bound program, each after a storage barrier (written_record: from the record at the bound
+// dispatch indirect buffer's start, after a command barrier too; static_record: from the record
+// at `offset` of the bound dispatch indirect buffer); the median of 5 chains after one untimed.
+double time_chain(GLuint groups, ChainDispatch how, int chain, GLintptr offset = 0) {
+    const bool command = how == ChainDispatch::written_record;
     const double ns = median_ns(5, [&] {
         for (int k = 0; k < chain; ++k) {
-            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (indirect ? GL_COMMAND_BARRIER_BIT : 0));
-            if (indirect)
-                glDispatchComputeIndirect(0);
-            else
+            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | (command ? GL_COMMAND_BARRIER_BIT : 0));
+            if (how == ChainDispatch::direct)
                 glDispatchCompute(groups, 1, 1);
+            else
+                glDispatchComputeIndirect(offset);
         }
     });
     return ns * 1e-3 / chain;
@@ -206,10 +212,20 @@ Ceilings measure_ceilings() {
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, words);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, words);
         constexpr int kChainLength = 1000;
-        c.dispatch_us = time_chain(1, false, kChainLength);
-        c.indirect_dispatch_us = time_chain(1, true, kChainLength);
-        c.wide_dispatch_us = time_chain(4096, false, kChainLength);
+        c.dispatch_us = time_chain(1, ChainDispatch::direct, kChainLength);
+        c.indirect_dispatch_us = time_chain(1, ChainDispatch::written_record, kChainLength);
+        c.wide_dispatch_us = time_chain(4096, ChainDispatch::direct, kChainLength);
+        // Records of 1 and 4,096 workgroups in a buffer the kernel does not bind.
+        const GLuint statics = make_buffer(32);
+        const GLuint sizes[8] = {1, 1, 1, 0, 4096, 1, 1, 0};
+        glBindBuffer(GL_SHADER_STORAGE_BUFFER, statics);
+        glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof sizes, sizes);
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, statics);
+        glMemoryBarrier(GL_COMMAND_BARRIER_BIT);
+        c.static_indirect_dispatch_us = time_chain(1, ChainDispatch::static_record, kChainLength, 0);
+        c.wide_static_indirect_dispatch_us = time_chain(4096, ChainDispatch::static_record, kChainLength, 16);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+        glDeleteBuffers(1, &statics);
         glDeleteBuffers(1, &words);
     }
     if (timed) {

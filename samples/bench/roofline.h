@@ -18,6 +18,9 @@ struct Ceilings {
     // as the solvers' stoppable passes), and of 4,096 workgroups of 256 doing nothing (a pass
     // over a 128x64x64 grid's cells).
     double dispatch_us = 0, indirect_dispatch_us = 0, wide_dispatch_us = 0;
+    // The same through a record no pass wrote since the last command barrier (storage barriers
+    // only, as the solvers' passes between their scalar steps): of one workgroup and of 4,096.
+    double static_indirect_dispatch_us = 0, wide_static_indirect_dispatch_us = 0;
     // GPU microseconds per dispatch of a copy of 2 MiB (a float field of a 128x64x64 grid, each
     // way): each after a storage barrier, and in pairs of independent ones (different buffers)
     // with no barrier between them, which the GPU may overlap (two solves interleaved).
