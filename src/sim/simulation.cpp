@@ -1,3 +1,4 @@
+#include "sim/solvers/common/solve_control.h"
 #include "sim/simulation.h"
 
 #include <algorithm>
@@ -74,7 +75,7 @@ pf_result Simulation::init() {
     // GL 4.4 added GL_QUERY_BUFFER, which redirects query results: the state guard parks it.
     gl_state_.query_buffer = major > 4 || minor >= 4;
     // On a CPU rasteriser the solvers' reductions gain nothing from an invocation a cell.
-    if (gl::runs_on_the_cpu(gl_)) one_cell_reduction_cells_ = 0;
+    if (gl::runs_on_the_cpu(gl_)) one_cell_reduction_orbits_ = 0;
     // A GL error the engine left pending would be mistaken for ours below.
     if (GLenum pending = gl_.GetError(); pending != GL_NO_ERROR) {
         log_.warning("pf_create: a GL error (" + hex(pending) + ") was pending before the call; it was consumed");
@@ -729,15 +730,20 @@ pf_result Simulation::set_ordered_g2p_face_bytes_for_test(uint64_t bytes) {
     return prepare_particle_passes(desc_.params, "set_ordered_g2p_face_bytes_for_test");
 }
 
-pf_result Simulation::set_one_cell_reduction_cells_for_test(uint64_t cells) {
+bool Simulation::one_cell_reductions() const {
+    const uint32_t* n = desc_.grid_size;
+    return SolveControl::orbits(glm::ivec3(n[0], n[1], n[2])) <= one_cell_reduction_orbits_;
+}
+
+pf_result Simulation::set_one_cell_reduction_orbits_for_test(uint64_t orbits) {
     gl::StateGuard guard(gl_, gl_state_);
     // An error left pending (a test's own GL calls) would be mistaken for the allocation's below.
     while (gl_.GetError() != GL_NO_ERROR) {
     }
-    one_cell_reduction_cells_ = cells;
+    one_cell_reduction_orbits_ = orbits;
     for (auto* slots : {&solvers_, &correction_solvers_})
         for (std::unique_ptr<PressureSolver>& solver : *slots) solver.reset();
-    return solvers_for(desc_.params, "set_one_cell_reduction_cells_for_test", &solvers_in_use_);
+    return solvers_for(desc_.params, "set_one_cell_reduction_orbits_for_test", &solvers_in_use_);
 }
 
 pf_result Simulation::run_g2p_and_advect_for_test(float dt) {

@@ -80,7 +80,7 @@ protected:
         return solve_with(GetParam().solver, pb, tolerance, cap, separation, jacobi_omega);
     }
     // Solves with every solver's reduction kernels forced to one invocation a cell (1) or an orbit
-    // (0) while set, else as the simulation picks (Simulation::set_one_cell_reduction_cells_for_test).
+    // (0) while set, else as the simulation picks (Simulation::set_one_cell_reduction_orbits_for_test).
     int force_one_cell_an_invocation_ = -1;
 
     Solved solve_with(pf_pressure_solver solver, const Problem& pb, float tolerance, uint32_t cap,
@@ -97,7 +97,7 @@ protected:
         if (!handle) return {};
         Simulation& sim = *pf::entry(handle)->impl;
         if (force_one_cell_an_invocation_ >= 0) {
-            EXPECT_EQ(sim.set_one_cell_reduction_cells_for_test(force_one_cell_an_invocation_ ? UINT64_MAX : 0), PF_OK)
+            EXPECT_EQ(sim.set_one_cell_reduction_orbits_for_test(force_one_cell_an_invocation_ ? UINT64_MAX : 0), PF_OK)
                 << last_log();
         }
         std::vector<uint32_t> type(pb.type.begin(), pb.type.end());
@@ -400,7 +400,7 @@ TEST_P(SolverLadder, BothReductionMappingsGiveTheSameBits) {
         std::vector<float> p[2];
         uint32_t iterations[2] = {};
         for (int mapping = 0; mapping < 2; ++mapping) {  // one invocation a cell, then an orbit
-            ASSERT_EQ(sim.set_one_cell_reduction_cells_for_test(mapping == 0 ? UINT64_MAX : 0), PF_OK) << last_log();
+            ASSERT_EQ(sim.set_one_cell_reduction_orbits_for_test(mapping == 0 ? UINT64_MAX : 0), PF_OK) << last_log();
             EXPECT_EQ(sim.one_cell_reductions(), mapping == 0) << s;
             EXPECT_NE(sim.runner().program(mapping == 0 ? gl::ProgramId::solver_residual_cells
                                                          : gl::ProgramId::solver_residual),
@@ -413,6 +413,31 @@ TEST_P(SolverLadder, BothReductionMappingsGiveTheSameBits) {
         EXPECT_GT(iterations[0], 0u) << s;
         EXPECT_EQ(iterations[0], iterations[1]) << s;
         EXPECT_EQ(std::memcmp(p[0].data(), p[1].data(), p[0].size() * 4), 0) << s;
+    }
+}
+
+// The mapping is chosen by the grid's mirror orbits, not its cells, so the last workgroup never adds
+// more than 256 partials with one invocation a cell (the two mappings agree bit for bit up to 512):
+// 64^3 cells have 65,536 orbits and take it; a slab one cell thick with an odd z (1 x 1020 x 257:
+// 262,140 cells, fewer than 64^3, but 131,580 orbits, 514 partials) does not. With the limit
+// counted in cells it took one invocation a cell.
+class SolverMapping : public GpuTest {};
+
+TEST_F(SolverMapping, OneCellAnInvocationIsChosenByOrbits) {
+    struct Case {
+        glm::ivec3 n;
+        bool one_cell;
+    };
+    for (const Case& c : {Case{{64, 64, 64}, true}, Case{{1, 1020, 257}, false}, Case{{96, 48, 48}, true},
+                          Case{{128, 64, 64}, false}}) {
+        pf_sim_desc d = test_desc(uint32_t(c.n.x), uint32_t(c.n.y), uint32_t(c.n.z), 0.05f);
+        d.max_particles = 1024;
+        SimPtr handle = create(d);
+        ASSERT_TRUE(handle) << last_log();
+        Simulation& sim = *pf::entry(handle)->impl;
+        // The GPU's default limit (a CPU rasteriser, llvmpipe's in CI, takes none).
+        ASSERT_EQ(sim.set_one_cell_reduction_orbits_for_test(Simulation::default_one_cell_reduction_orbits()), PF_OK);
+        EXPECT_EQ(sim.one_cell_reductions(), c.one_cell) << c.n.x << "x" << c.n.y << "x" << c.n.z;
     }
 }
 

@@ -23,7 +23,7 @@ struct SolverGrid {
     glm::ivec3 size{0};     // cells per axis
     uint32_t cells = 0;     // size.x * size.y * size.z
     // The reduction kernels run one invocation a cell instead of one a mirror orbit, the same sums
-    // bit for bit (shaders/solvers/common/orbit_main.glsl; Simulation::kOneCellReductionCells).
+    // bit for bit (shaders/solvers/common/orbit_main.glsl; Simulation::kOneCellReductionOrbits).
     bool one_cell_an_invocation = false;
 };
 

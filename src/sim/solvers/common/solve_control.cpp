@@ -13,7 +13,7 @@ std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const Solv
     std::vector<uint32_t> zeros(PF_SOLVER_WORDS, 0u);
     state_ = gl::Buffer(gl, zeros.size() * 4, GL_DYNAMIC_COPY, "solver_state");
     state_.upload(0, zeros.size() * 4, zeros.data());
-    orbits_ = uint32_t((grid.size.x + 1) / 2) * uint32_t(grid.size.y) * uint32_t((grid.size.z + 1) / 2);
+    orbits_ = uint32_t(orbits(grid.size));
     // One workgroup per PF_WORKGROUP_SIZE orbits in either mapping (orbit_main.glsl).
     partials_ = runner.workgroups(orbits_).total();  // a 2D dispatch may add idle workgroups
     partials_buffer_ = gl::Buffer(gl, size_t(partials_) * 16, GL_DYNAMIC_COPY, "solver_partials");
