@@ -1,4 +1,3 @@
-#include "sim/solvers/common/solve_control.h"
 #include "sim/simulation.h"
 
 #include <algorithm>
@@ -15,6 +14,7 @@
 #include "gl/implementation.h"
 #include "gl/state_guard.h"
 #include "sim/particle_fill.h"
+#include "sim/solvers/common/solve_control.h"
 
 namespace pf {
 
