@@ -221,7 +221,6 @@ Ceilings measure_ceilings() {
         glBindBuffer(GL_SHADER_STORAGE_BUFFER, statics);
         glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof sizes, sizes);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, statics);
-        glMemoryBarrier(GL_COMMAND_BARRIER_BIT);
         c.static_indirect_dispatch_us = time_chain(1, ChainDispatch::static_record, kChainLength, 0);
         c.wide_static_indirect_dispatch_us = time_chain(4096, ChainDispatch::static_record, kChainLength, 16);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);

@@ -155,8 +155,15 @@ public:
     pf_result set_one_cell_reduction_orbits_for_test(uint64_t orbits);
     // Whether this grid's solvers run their reduction kernels one invocation a cell.
     bool one_cell_reductions() const;
-    // The default of that limit (see kOneCellReductionOrbits).
-    static constexpr uint64_t default_one_cell_reduction_orbits() { return kOneCellReductionOrbits; }
+    // The most mirror orbits (SolveControl::orbits) of a grid whose solvers' reduction kernels run
+    // one invocation a cell (SolverGrid): 65,536, those of 64^3 cells; none on a CPU rasteriser. On
+    // the H200 the frame is 3-10% faster up to 96 x 48 x 48 cells; from 128 x 64 x 64, where the
+    // orbits fill the GPU, four times more invocations made it slower, and on llvmpipe slower at
+    // every size (docs/performance.md, "Reductions by grid size"). Orbits, not cells: the two
+    // mappings' sums match bit for bit while the last workgroup adds at most 512 partials
+    // (orbit_main.glsl), and 65,536 orbits make 256 whatever the grid's shape (a slab one cell
+    // thick has about one orbit for two cells).
+    static constexpr uint64_t kOneCellReductionOrbits = uint64_t(1) << 16;
     // APIC affine vectors of the live particles, 12 floats each (c_x, c_y, c_z as vec4s);
     // empty while APIC was never used.
     std::vector<float> read_affine() const;
@@ -360,15 +367,6 @@ private:
     const gl::Buffer* g2p_order_ = nullptr;
     static constexpr uint64_t kOrderedG2pFaceBytes = uint64_t(4) << 20;
     uint64_t ordered_g2p_face_bytes_ = kOrderedG2pFaceBytes;
-    // The most mirror orbits (SolveControl::orbits) of a grid whose solvers' reduction kernels run
-    // one invocation a cell (SolverGrid): 65,536, those of 64^3 cells; none on a CPU rasteriser. On
-    // the H200 the frame is 3-10% faster up to 96 x 48 x 48 cells; from 128 x 64 x 64, where the
-    // orbits fill the GPU, four times more invocations made it slower, and on llvmpipe slower at
-    // every size (docs/performance.md, "Reductions by grid size"). Orbits, not cells: the two
-    // mappings' sums match bit for bit while the last workgroup adds at most 512 partials
-    // (orbit_main.glsl), and 65,536 orbits make 256 whatever the grid's shape (a slab one cell
-    // thick has about one orbit for two cells).
-    static constexpr uint64_t kOneCellReductionOrbits = uint64_t(1) << 16;
     uint64_t one_cell_reduction_orbits_ = kOneCellReductionOrbits;
     bool cell_counts_current_ = false;  // cell_count() describes the particles (see its accessor)
     pf_p2g counted_with_ = PF_P2G_COUNT;  // the P2G scheme of the last substep (PF_P2G_COUNT: none, or

@@ -436,7 +436,7 @@ TEST_F(SolverMapping, OneCellAnInvocationIsChosenByOrbits) {
         ASSERT_TRUE(handle) << last_log();
         Simulation& sim = *pf::entry(handle)->impl;
         // The GPU's default limit (a CPU rasteriser, llvmpipe's in CI, takes none).
-        ASSERT_EQ(sim.set_one_cell_reduction_orbits_for_test(Simulation::default_one_cell_reduction_orbits()), PF_OK);
+        ASSERT_EQ(sim.set_one_cell_reduction_orbits_for_test(Simulation::kOneCellReductionOrbits), PF_OK);
         EXPECT_EQ(sim.one_cell_reductions(), c.one_cell) << c.n.x << "x" << c.n.y << "x" << c.n.z;
     }
 }
