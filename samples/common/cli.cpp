@@ -76,6 +76,7 @@ void ParamOverrides::apply(pf_sim_params& p) const {
     if (has_p2g) p.p2g = p2g;
     if (has_free_surface) p.free_surface = free_surface;
     if (has_cfl) p.cfl = cfl;
+    if (has_volume_correction) p.volume_correction = volume_correction;
 }
 
 namespace {
@@ -131,6 +132,10 @@ void add_param_overrides(CLI::App& app, ParamOverrides& o) {
     add_override(app, "--cfl", o.cfl, o.has_cfl,
                  "projection CFL: most cells a particle may cross per substep (one pressure projection each)")
         ->check(Range(0.05f, 16.0f))
+        ->group(group);
+    add_override(app, "--volume-correction", o.volume_correction, o.has_volume_correction,
+                 "share of the liquid's excess over its rest density moved out each step (0: off)")
+        ->check(Range(0.0f, 1.0f))
         ->group(group);
 }
 

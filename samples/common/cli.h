@@ -109,7 +109,7 @@ public:
 /// given, so a scene file stays the single source of everything else.
 struct ParamOverrides {
     bool has_preset = false, has_solver = false, has_tolerance = false, has_transfer = false, has_advection = false,
-         has_p2g = false, has_free_surface = false, has_cfl = false;
+         has_p2g = false, has_free_surface = false, has_cfl = false, has_volume_correction = false;
     pf_quality preset = PF_QUALITY_FAST;
     pf_pressure_solver solver = PF_PRESSURE_SOLVER_JACOBI;
     float tolerance = 0;
@@ -118,13 +118,14 @@ struct ParamOverrides {
     pf_p2g p2g = PF_P2G_FIXED_POINT;
     pf_free_surface free_surface = PF_FREE_SURFACE_MARKER_CELL;
     float cfl = 0;
+    float volume_correction = 0;
 
     /// Writes the given overrides into p: a preset first (keeping p's gravity and max_substeps,
     /// which are the scene's physics), then the single knobs.
     void apply(pf_sim_params& p) const;
 };
 
-/// Adds the seven knobs of ParamOverrides to app (in an "Accuracy knobs" group), each setting
+/// Adds the knobs of ParamOverrides to app (in an "Accuracy knobs" group), each setting
 /// its value and its has_ flag in o.
 void add_param_overrides(CLI::App& app, ParamOverrides& o);
 
