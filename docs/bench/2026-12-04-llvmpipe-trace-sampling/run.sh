@@ -17,4 +17,14 @@ for v in 0 1 2 3 4; do
   build/tests/pf_stability_tests --gtest_filter='Presets/LargeSteps.DamBreakAtHalfSecondFramesWithEnoughSubsteps/fast' \
     > $D/v${v}_large_steps_fast.txt 2>&1 || true
 done
+# The fast preset at CFL 3.5 (src/api/pf_api.cpp edited for the run) and the traces' rotation test.
+sed -i 's/            p.cfl = 3.0f;/            p.cfl = 3.5f;/' src/api/pf_api.cpp
+for v in 0 1 3; do
+  sed -i "s/^#define PF_TRACE_SAMPLING [0-9]/#define PF_TRACE_SAMPLING $v/" shaders/sim/advect_rk.comp
+  ninja -C build pflip pf_stability_tests pf_internal_tests > /dev/null
+  build/tests/pf_stability_tests --gtest_filter='Presets/LargeSteps.DamBreakAtHalfSecondFramesWithEnoughSubsteps/fast' \
+    > $D/v${v}_large_steps_fast_cfl3.5.txt 2>&1 || true
+  build/tests/pf_internal_tests --gtest_filter='AdvectionSchemes.*' > $D/v${v}_rotation.txt 2>&1 || true
+done
+sed -i 's/            p.cfl = 3.5f;/            p.cfl = 3.0f;/' src/api/pf_api.cpp
 sed -i "s/^#define PF_TRACE_SAMPLING [0-9]/#define PF_TRACE_SAMPLING 0/" shaders/sim/advect_rk.comp
