@@ -46,6 +46,13 @@
 #define PF_SLOT_SOLVER_P_NEXT 0  /* cg_matvec: the new search direction (CG alternates two p buffers) */
 #define PF_SLOT_SOLVER_MG_START 3 /* cg_update_stored: the V-cycle's first red half-sweep (z's slot) */
 #define PF_SLOT_SOLVER_WORKING_TYPE 2 /* cell types with separated cells held at p = 0 (CG family) */
+/* a pair solve's second problem (solvers/common/solver_value.glsl): its right-hand side and iterate
+ * (the volume correction's potential), beside the first's; cg_update_stored binds p and q on
+ * slots 2 and 4, so its second iterate takes 5; the final report's second status buffer */
+#define PF_SLOT_SOLVER_RHS_SECOND 2
+#define PF_SLOT_SOLVER_X_SECOND 4
+#define PF_SLOT_SOLVER_UPDATE_X_SECOND 5
+#define PF_SLOT_SOLVER_STATUS_SECOND 1
 /* storage blocks of the multigrid kernels (shaders/solvers/mgpcg/): a level and the next coarser one */
 #define PF_SLOT_MG_TYPE 6        /* the level's cell types */
 #define PF_SLOT_MG_R 3           /* the level's right-hand side (the residual it corrects) */

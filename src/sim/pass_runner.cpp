@@ -206,7 +206,7 @@ bool PassRunner::writes_indirect_records(gl::ProgramId id) {
     switch (id) {
         case gl::ProgramId::solver_begin:
         case gl::ProgramId::solver_check:
-        case gl::ProgramId::solver_report:  // check.comp: its source has the check's stop_solve()
+        case gl::ProgramId::solver_report:  // check.comp: its source has the check's stop_solve_in()
         // The CG passes whose last workgroup runs a scalar step, which may stop the solve.
         case gl::ProgramId::cg_init_none:
         case gl::ProgramId::cg_init_jacobi:
@@ -226,6 +226,15 @@ bool PassRunner::writes_indirect_records(gl::ProgramId id) {
         case gl::ProgramId::cg_matvec_stored_cells:
         case gl::ProgramId::cg_zstats_cells:
         case gl::ProgramId::mg_smooth_zstats_cells:
+        // A pair solve's (two problems in the same passes).
+        case gl::ProgramId::solver_begin_pair:
+        case gl::ProgramId::solver_report_pair:
+        case gl::ProgramId::cg_matvec_stored_pair:
+        case gl::ProgramId::cg_zstats_pair:
+        case gl::ProgramId::mg_smooth_zstats_pair:
+        case gl::ProgramId::cg_matvec_stored_pair_cells:
+        case gl::ProgramId::cg_zstats_pair_cells:
+        case gl::ProgramId::mg_smooth_zstats_pair_cells:
         case gl::ProgramId::ww_commit:
         // The viscosity's setup (its records' full sizes) and its passes ending in a scalar step.
         case gl::ProgramId::visc_setup:

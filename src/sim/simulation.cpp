@@ -202,18 +202,28 @@ uint32_t Simulation::live_count() const {
 
 pf_result Simulation::solvers_for(const pf_sim_params& params, const char* fn, SolversInUse* out) {
     SolversInUse s;
-    if (pf_result r = solver_for(params, fn, &s.pressure, false); r != PF_OK) return r;
+    if (params.volume_correction > 0.0f && params.pressure_solver == PF_PRESSURE_SOLVER_MGPCG && !params.separation) {
+        // The correction's solve and the projection's as a pair, on one instance that also solves
+        // the projections the correction does not go with (later substeps, effects).
+        if (pf_result r = solver_for(params, fn, &s.pressure, SolverRole::pair); r != PF_OK) return r;
+        s.correction = s.pressure;
+        *out = s;
+        return PF_OK;
+    }
+    if (pf_result r = solver_for(params, fn, &s.pressure, SolverRole::projection); r != PF_OK) return r;
     if (params.volume_correction > 0.0f) {
-        if (pf_result r = solver_for(params, fn, &s.correction, true); r != PF_OK) return r;
+        if (pf_result r = solver_for(params, fn, &s.correction, SolverRole::correction); r != PF_OK) return r;
     }
     *out = s;
     return PF_OK;
 }
 
-pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out, bool correction) {
-    std::unique_ptr<PressureSolver>& slot = (correction ? correction_solvers_ : solvers_)[params.pressure_solver];
+pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out, SolverRole role) {
+    std::unique_ptr<PressureSolver>& slot = role == SolverRole::pair         ? pair_solver_
+                                            : role == SolverRole::correction ? correction_solvers_[params.pressure_solver]
+                                                                             : solvers_[params.pressure_solver];
     if (!slot) {
-        std::unique_ptr<PressureSolver> made = make_pressure_solver(params.pressure_solver);
+        std::unique_ptr<PressureSolver> made = make_pressure_solver(params.pressure_solver, role == SolverRole::pair);
         if (!made) return log_.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": unknown pressure solver");
         const SolverGrid grid{glm::ivec3(desc_.grid_size[0], desc_.grid_size[1], desc_.grid_size[2]),
                               uint32_t(cells_), one_cell_reductions()};
@@ -418,9 +428,12 @@ void Simulation::build_substep_table() {
         t.add("volume_correction", [this](const SubstepContext& c) {
             if (!c.correct_volume) return;
             const VolumeCorrection::Inputs in = correction_inputs();
-            // Its solve goes alongside the projection's (pressure_solve below), on its own solver's
-            // buffers; per-kernel timing, which times every pass apart, keeps the two in turn.
-            if (solvers_in_use_.correction && !runner_->kernel_timing()) {
+            // Its solve goes with the projection's (pressure_solve below): in the same passes where
+            // its solver solves pairs, else alongside on buffers of its own, one pass of each after
+            // a barrier, which per-kernel timing (every pass timed apart) cannot do: there, and
+            // where both use one solver, the two go in turn.
+            const bool alongside = solvers_in_use_.correction != solvers_in_use_.pressure && !runner_->kernel_timing();
+            if (solvers_in_use_.correction && (correction_paired() || alongside)) {
                 volume_correction_.setup(*runner_, in);
                 correction_pending_ = true;
             } else {
@@ -463,6 +476,11 @@ void Simulation::build_substep_table() {
         // waits for both): issued in lockstep, one barrier a pair.
         correction_pending_ = false;
         const VolumeCorrection::Inputs in = correction_inputs();
+        if (correction_paired()) {
+            volume_correction_.solve_paired(*runner_, *solvers_in_use_.correction, solve_params(), in, problem);
+            volume_correction_.move(*runner_, in);
+            return;
+        }
         PassRunner::Recorded correction, projection;
         {
             const PassRunner::Recording recording(*runner_, correction);
@@ -725,6 +743,44 @@ pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, con
     return PF_OK;
 }
 
+pf_result Simulation::solve_two_for_test(const std::vector<uint32_t>& cell_type, const std::vector<float> (&rhs)[2],
+                                         std::vector<float> (&pressure)[2], bool paired, uint32_t (&iterations)[2]) {
+    const size_t n = size_t(cells_);
+    if (!solvers_in_use_.correction || cell_type.size() != n) return PF_ERROR_INVALID_ARGUMENT;
+    for (int k = 0; k < 2; ++k) {
+        if (rhs[k].size() != n || pressure[k].size() != n) return PF_ERROR_INVALID_ARGUMENT;
+    }
+    gl::StateGuard guard(gl_, gl_state_);
+    cell_type_.upload(0, n * 4, cell_type.data());
+    gl::Buffer rhs_buffers[2], x[2], reports[2];
+    const std::vector<uint32_t> zeros(PF_STATUS_WORDS, 0u);
+    for (int k = 0; k < 2; ++k) {
+        rhs_buffers[k] = gl::Buffer(gl_, n * 4, GL_DYNAMIC_COPY, "test_rhs");
+        rhs_buffers[k].upload(0, n * 4, rhs[k].data());
+        x[k] = gl::Buffer(gl_, n * 4, GL_DYNAMIC_COPY, "test_x");
+        x[k].upload(0, n * 4, pressure[k].data());
+        reports[k] = gl::Buffer(gl_, zeros.size() * 4, GL_DYNAMIC_COPY, "test_report");
+        reports[k].upload(0, zeros.size() * 4, zeros.data());
+    }
+    const pf_sim_params params[2] = {desc_.params, VolumeCorrection::solve_params(desc_.params)};
+    const PressureProblem first{cell_type_, rhs_buffers[0], x[0], reports[0], params[0]};
+    const PressureProblem second{cell_type_, rhs_buffers[1], x[1], reports[1], params[1]};
+    PressureSolver& solver = *solvers_in_use_.correction;
+    run_one_step_for_test(0.01f, [&] {
+        if (paired) {
+            solver.solve_pair(*runner_, first, second);
+        } else {
+            solver.solve(*runner_, first);
+            solver.solve(*runner_, second);
+        }
+    });
+    for (int k = 0; k < 2; ++k) {
+        x[k].download(0, n * 4, pressure[k].data());
+        reports[k].download(PF_STATUS_SOLVER_ITERATIONS * 4, 4, &iterations[k]);
+    }
+    return PF_OK;
+}
+
 pf_result Simulation::set_ordered_g2p_face_bytes_for_test(uint64_t bytes) {
     ordered_g2p_face_bytes_ = bytes;
     return prepare_particle_passes(desc_.params, "set_ordered_g2p_face_bytes_for_test");
@@ -743,6 +799,7 @@ pf_result Simulation::set_one_cell_reduction_orbits_for_test(uint64_t orbits) {
     one_cell_reduction_orbits_ = orbits;
     for (auto* slots : {&solvers_, &correction_solvers_})
         for (std::unique_ptr<PressureSolver>& solver : *slots) solver.reset();
+    pair_solver_.reset();
     return solvers_for(desc_.params, "set_one_cell_reduction_orbits_for_test", &solvers_in_use_);
 }
 

@@ -141,6 +141,15 @@ public:
     // are reset first and hold this solve's iterations and final residual afterwards.
     pf_result solve_for_test(const std::vector<uint32_t>& cell_type, const std::vector<float>& rhs,
                              std::vector<float>& pressure);
+    // Test access: two systems on the same cell types with the volume correction's solver (on,
+    // MGPCG), the first with the simulation's parameters and the second with the correction's
+    // (VolumeCorrection::solve_params), in one pair solve (`paired`) or as two solves of that
+    // solver; each problem's reported iterations into `iterations`.
+    pf_result solve_two_for_test(const std::vector<uint32_t>& cell_type, const std::vector<float> (&rhs)[2],
+                                 std::vector<float> (&pressure)[2], bool paired, uint32_t (&iterations)[2]);
+    // Test access: whether the volume correction's solve may go in the same passes as the
+    // projection's (default true; false: alongside it, as any other solver's).
+    void set_paired_correction_for_test(bool paired) { paired_correction_allowed_ = paired; }
     std::vector<uint32_t> read_grid(GridBuffer which) const;
     void write_grid_for_test(GridBuffer which, const std::vector<uint32_t>& words);
     // The substep table's entries from G2P on (G2P, advection and the effects after it) on the
@@ -195,17 +204,25 @@ private:
     size_t snapshot_gpu_bytes(uint32_t particles, bool affine) const;
     void drain_status();
     pf_result init();
-    // The solver for params.pressure_solver, made and initialised on first use (kept after);
-    // `correction`: the volume correction's own instance of it (its solve runs alongside the
-    // projection's, on its own buffers).
-    pf_result solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out, bool correction);
-    // The solvers `params` select (the correction's only while it is on): every place that
-    // changes the parameters (pf_create, pf_set_params, a restore) takes both from here.
+    // The solver for params.pressure_solver, made and initialised on first use (kept after), in
+    // one of three roles: the projection's; the volume correction's own instance of it (its
+    // solve runs alongside the projection's, on its own buffers); the instance that solves both
+    // as a pair (MGPCG made for pairs: its buffers are those of two solvers).
+    enum class SolverRole { projection, correction, pair };
+    pf_result solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out, SolverRole role);
+    // The solvers `params` select (the correction's only while it is on; one instance for both
+    // where they solve as a pair): every place that changes the parameters (pf_create,
+    // pf_set_params, a restore) takes both from here.
     struct SolversInUse {
         PressureSolver* pressure = nullptr;
         PressureSolver* correction = nullptr;
     };
     pf_result solvers_for(const pf_sim_params& params, const char* fn, SolversInUse* out);
+    // Whether the volume correction's solve goes in the same passes as the projection's (its
+    // solver solves pairs: solvers_for gives it one only where the projection asks no separation).
+    bool correction_paired() const {
+        return paired_correction_allowed_ && solvers_in_use_.correction && solvers_in_use_.correction->solves_pairs();
+    }
     // The per-particle programs params select after P2G (its scheme's sums, transfer, flip
     // ratio, advection); the P2G scheme must be prepared.
     struct ParticlePrograms {
@@ -315,7 +332,9 @@ private:
     CoreStats stat_{};
     std::unique_ptr<PressureSolver> solvers_[PF_PRESSURE_SOLVER_COUNT];
     std::unique_ptr<PressureSolver> correction_solvers_[PF_PRESSURE_SOLVER_COUNT];
+    std::unique_ptr<PressureSolver> pair_solver_;  // SolverRole::pair (MGPCG)
     SolversInUse solvers_in_use_;  // the ones params select (the correction's null while it is off)
+    bool paired_correction_allowed_ = true;  // set_paired_correction_for_test
     bool correction_pending_ = false;  // this substep's correction waits to be solved with the projection
     VolumeCorrection volume_correction_;
     ParticleToGrid p2g_;  // the schemes, their fixed-point range and the "p2g" statistics entry

@@ -55,6 +55,12 @@ void VolumeCorrection::solve(PassRunner& runner, PressureSolver& solver, const p
     solver.solve(runner, PressureProblem{in.cell_type, rhs_, potential_, report_, solve_params(params)});
 }
 
+void VolumeCorrection::solve_paired(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params,
+                                    const Inputs& in, const PressureProblem& projection) {
+    // Counted with the projection's solve: its passes are the projection's passes.
+    solver.solve_pair(runner, projection, PressureProblem{in.cell_type, rhs_, potential_, report_, solve_params(params)});
+}
+
 void VolumeCorrection::move(PassRunner& runner, const Inputs& in) {
     Bindings binds{{PF_SLOT_PARTICLE_POS, &in.positions},
                    {PF_SLOT_CELL_TYPE, &in.cell_type},

@@ -1,7 +1,8 @@
 // The volume correction (docs/design.md §4.5): once per step (and per 1/60 s of simulated
 // time in longer steps), particles in over-full cells
 // are moved apart along the gradient of a displacement potential, solved with a solver of the
-// simulation's kind (an instance of its own, issued alongside the projection's). It moves positions only: velocities, and so FLIP's
+// simulation's kind (an instance of its own, issued alongside the projection's; with MGPCG, one
+// made for pairs, which solves the projection's problem and this one in the same passes). It moves positions only: velocities, and so FLIP's
 // velocity difference and the kinetic energy, never see it (issue 17: as a divergence target
 // of the projection it added energy when the solve was unconverged and smothered waves when
 // it was converged).
@@ -49,6 +50,11 @@ public:
     void setup(PassRunner& runner, const Inputs& in);
     void solve(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in);
     void move(PassRunner& runner, const Inputs& in);
+    // The solve paired with the projection's (`projection` first) in the same passes, on `solver`
+    // (solves_pairs(); the projection without separation): what solve() and the projection's own
+    // solve would record, with one pass of each kind for both.
+    void solve_paired(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in,
+                      const PressureProblem& projection);
 
     // The solve's parameters: the simulation's solver without separation (the potential has
     // either sign), to the pressure's tolerance but never below kTolerance, with at most

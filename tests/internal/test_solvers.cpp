@@ -621,5 +621,77 @@ std::vector<SolverCase> every_solver() {
 INSTANTIATE_TEST_SUITE_P(AllSolvers, Solvers, ::testing::ValuesIn(every_solver()),
                          [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
 
+// A pair solve (the projection's problem and the volume correction's in the same passes,
+// shaders/solvers/common/solver_value.glsl) gives each problem what its own solve gives, within
+// rounding (llvmpipe: at most 3.1e-7 of the largest value; the multigrid kernels' two-wide
+// arithmetic rounds a few values differently), with its own iteration count: the first to the simulation's tolerance and cap, the
+// second to the correction's (VolumeCorrection::solve_params: 1e-3, at most 10 iterations),
+// whichever stops first. Grids: the coarsest level alone (coarse solve), a bottom level that a
+// single solve runs in one workgroup and a pair through the fused passes, a coarse level above
+// PF_MG_FUSED_CELLS (the unfused passes; a 3-iteration cap keeps it short), a grid that is its
+// own coarsest level, the singular closed box, and a second problem with b = 0 (stops at once).
+class PairSolve : public GpuTest {};
+
+TEST_F(PairSolve, EachProblemAsItsOwnSolve) {
+    struct Case {
+        const char* name;
+        Problem pb;
+        uint32_t cap;
+        bool zero_second = false;
+    };
+    const std::vector<Case> cases{{"two_levels", bubbly_tank({21, 14, 11}, 3), 60},
+                                  {"bottom_level", bubbly_tank({40, 30, 20}, 4), 60},
+                                  {"coarse_level_unfused", bubbly_tank({128, 96, 96}, 9), 3},
+                                  {"own_coarsest_level", bubbly_tank({12, 9, 8}, 5), 60},
+                                  {"closed_box", closed_full_box({12, 10, 8}, 6), 60},
+                                  {"second_zero", bubbly_tank({21, 14, 11}, 7), 60, true}};
+    for (const Case& tc : cases) {
+        const Problem& pb = tc.pb;
+        pf_sim_desc d = test_desc(uint32_t(pb.grid.nx), uint32_t(pb.grid.ny), uint32_t(pb.grid.nz), 0.05f);
+        d.max_particles = 1024;
+        d.params.pressure_solver = PF_PRESSURE_SOLVER_MGPCG;
+        d.params.pressure_tolerance = 1e-5f;
+        d.params.pressure_iterations = tc.cap;
+        d.params.separation = 0;
+        d.params.volume_correction = 0.5f;
+        SimPtr handle = create(d);
+        ASSERT_TRUE(handle) << last_log();
+        Simulation& sim = *pf::entry(handle)->impl;
+        std::vector<uint32_t> type(pb.type.begin(), pb.type.end());
+        std::mt19937 rng(99);
+        std::uniform_real_distribution<double> b(-40.0, 60.0);
+        std::vector<float> rhs[2], x[2][2];
+        rhs[0].assign(pb.rhs.begin(), pb.rhs.end());
+        rhs[1].assign(pb.rhs.size(), 0.0f);
+        for (size_t c = 0; c < pb.rhs.size(); ++c)
+            if (pb.type[c] == ref::FLUID && !tc.zero_second) rhs[1][c] = float(b(rng));
+        uint32_t iterations[2][2] = {};
+        for (int paired = 0; paired < 2; ++paired) {
+            x[paired][0].assign(pb.rhs.size(), 0.0f);
+            x[paired][1].assign(pb.rhs.size(), 0.0f);
+            ASSERT_EQ(sim.solve_two_for_test(type, rhs, x[paired], paired == 1, iterations[paired]), PF_OK) << tc.name;
+            EXPECT_EQ(sim.runner().binding_errors(), 0u) << tc.name;
+        }
+        for (int k = 0; k < 2; ++k) {
+            EXPECT_EQ(iterations[1][k], iterations[0][k]) << tc.name << ", problem " << k;
+            double worst = 0, largest = 0;
+            for (size_t c = 0; c < x[0][k].size(); ++c) {
+                worst = std::max(worst, double(std::abs(x[1][k][c] - x[0][k][c])));
+                largest = std::max(largest, double(std::abs(x[0][k][c])));
+            }
+            EXPECT_LE(worst, 2e-6 * largest) << tc.name << ", problem " << k;
+            char ratio[32];
+            std::snprintf(ratio, sizeof ratio, "%.2e", largest > 0 ? worst / largest : 0.0);
+            RecordProperty(std::string("pair_against_own_") + tc.name + "_" + std::to_string(k), ratio);
+        }
+        // The caps and tolerances differ, so the two problems stop apart (except where b = 0).
+        EXPECT_GT(iterations[0][0], 0u) << tc.name;
+        EXPECT_LE(iterations[0][1], std::min(tc.cap, 10u)) << tc.name;
+        if (tc.zero_second) EXPECT_EQ(iterations[0][1], 0u) << tc.name;
+        RecordProperty(std::string("iterations_") + tc.name,
+                       std::to_string(iterations[0][0]) + "/" + std::to_string(iterations[0][1]));
+    }
+}
+
 }  // namespace
 }  // namespace pf::test

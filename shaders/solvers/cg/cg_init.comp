@@ -5,6 +5,7 @@
 // With a stored z, cg_init_stored.comp.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
+#include "solvers/common/solver_value.glsl"
 layout(local_size_x = PF_REDUCTION_INVOCATIONS) in;
 layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
 layout(std430, binding = PF_SLOT_RHS) readonly buffer Rhs { float rhs[]; };

@@ -1,5 +1,6 @@
 // main() of the reduction kernels: runs the kernel's per-cell work,
-// vec4 cell_contribution(int c, ivec3 ijk) (the cell's index and coordinates), on every cell and
+// sums_t cell_contribution(int c, ivec3 ijk) (the cell's index and coordinates; sums_t is a vec4,
+// or a mat2x4 whose columns are summed apart in a kernel of PF_SUMS 2, solver_value.glsl), on every cell and
 // adds the results mirror-exactly: each mirror orbit (poisson.glsl) as ((a + b) + (c + d)), then
 // the orbits in a fixed order; the workgroup sums go to the partials (reduce.glsl).
 // Two mappings, a permutation each (SolveControl picks one by the grid's size), with the same
@@ -13,10 +14,13 @@
 //   "Reductions by grid size").
 // With PF_LAST_GROUP defined, the last workgroup to finish (counted with an atomic in the
 // state buffer, reset by that workgroup) then adds up all the partials in a fixed order and
-// calls the kernel's void last_group_step(vec4 total) in invocation 0: a scalar step without a
+// calls the kernel's void last_group_step(sums_t total) in invocation 0: a scalar step without a
 // pass of its own. The kernel must declare `partials` coherent (the last workgroup reads what
 // the others wrote) and `state`.
 // Include after defining cell_contribution (and last_group_step).
+#ifndef PF_VALUE_TYPES
+#define sums_t vec4
+#endif
 #ifndef PF_ONE_CELL_AN_INVOCATION
 #define PF_ONE_CELL_AN_INVOCATION 0
 #endif
@@ -30,16 +34,16 @@ shared bool s_last_group;
 
 // Cell q of the orbit whose origin is a (0: a, 1: its x mirror, 2: its z mirror, 3: both); 0
 // where the cell repeats another (the middle column of an odd axis).
-vec4 orbit_member(ivec3 a, int q) {
+sums_t orbit_member(ivec3 a, int q) {
     ivec3 ijk = orbit_coord(a, q);
     bool repeat = ((q & 1) != 0 && ijk.x == a.x) || ((q & 2) != 0 && ijk.z == a.z);
-    return repeat ? vec4(0.0) : cell_contribution(level_index(ijk), ijk);
+    return repeat ? sums_t(0.0) : cell_contribution(level_index(ijk), ijk);
 }
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
     uint groups = gl_NumWorkGroups.x * gl_NumWorkGroups.y;
-    vec4 v = vec4(0.0);
+    sums_t v = sums_t(0.0);
 #if PF_ONE_CELL_AN_INVOCATION
     // The tree's first level adds invocations 2 PF_WORKGROUP_SIZE apart (qq and qq + 2), the
     // second the two pair sums: qq 0, 2 are cells 0, 1 (a, b) and qq 1, 3 cells 2, 3.
@@ -53,7 +57,7 @@ void main() {
         v = (orbit_member(a, 0) + orbit_member(a, 1)) + (orbit_member(a, 2) + orbit_member(a, 3));
     }
 #endif
-    store_workgroup_sum(v);
+    store_workgroup_sums(v, groups);
 #ifdef PF_LAST_GROUP
     if (gl_LocalInvocationIndex == 0u) {
         memoryBarrierBuffer();  // this workgroup's partial is visible before it is counted
@@ -62,7 +66,11 @@ void main() {
     barrier();
     if (!s_last_group) return;  // uniform across the workgroup
     memoryBarrierBuffer();
+#if defined(PF_SUMS) && PF_SUMS == 2
+    mat2x4 sum = sum_partial_columns(groups);
+#else
     vec4 sum = sum_partials(groups);
+#endif
     if (gl_LocalInvocationIndex == 0u) {
         state[PF_SOLVER_ARRIVALS] = 0u;
         last_group_step(sum);

@@ -46,6 +46,8 @@ PoissonStencil poisson_stencil(int c) { return poisson_stencil_at(c, level_coord
 // Neighbour values summed per axis pair, then across axes: mirrored inputs give bit-mirrored
 // sums (as common/sim.glsl's mirror_sum), so the solvers keep the scheme's mirror symmetry.
 float pair_total(vec3 pair_sum) { return (pair_sum.x + pair_sum.y) + pair_sum.z; }
+// The same for a pair's values (solver_value.glsl): a column per axis pair.
+vec2 pair_total(mat3x2 pair_sum) { return (pair_sum[0] + pair_sum[1]) + pair_sum[2]; }
 
 // Red-black colour of a cell: 0 when i + j + k is even.
 uint cell_color_at(ivec3 ijk) { return uint(ijk.x + ijk.y + ijk.z) & 1u; }

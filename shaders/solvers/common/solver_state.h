@@ -26,12 +26,18 @@
 #define PF_SOLVER_FIRST_ROUND 17 /* uint: iterations of round 0, once it is finished */
 #define PF_SOLVER_LATER_ROUNDS 18 /* uint: most iterations of a finished later round */
 #define PF_SOLVER_NONNEGATIVE 19 /* uint: 1 when this problem asks p >= 0 (its params' separation) */
-#define PF_SOLVER_SCALARS 20     /* words before the first indirect record (a multiple of 4) */
+#define PF_SOLVER_ITERATION_CAP 20 /* uint: a pair's problem stops after this many iterations (else ~0u) */
+#define PF_SOLVER_SCALARS 24     /* words before the first indirect record (a multiple of 4) */
 
 /* Indirect-dispatch record k: words PF_SOLVER_SCALARS + 4k .. +2 = workgroups (x, y, z); its
  * full size, restored at the start of every solve, at PF_SOLVER_SCALARS + 4 (PF_SOLVER_MAX_RECORDS + k). */
 #define PF_SOLVER_MAX_RECORDS 32
 #define PF_SOLVER_WORDS (PF_SOLVER_SCALARS + 8 * PF_SOLVER_MAX_RECORDS)
+
+/* A pair solve (shaders/solvers/common/solver_value.glsl, PF_PAIR 1) keeps its second problem's
+ * scalars, words 0 .. PF_SOLVER_SCALARS - 1 as above, after the records; the records are shared. */
+#define PF_SOLVER_SECOND PF_SOLVER_WORDS
+#define PF_SOLVER_PAIR_WORDS (PF_SOLVER_WORDS + PF_SOLVER_SCALARS)
 
 /* The reduction kernels' workgroup (orbit_main.glsl): PF_WORKGROUP_SIZE invocations, one a mirror
  * orbit of 4 cells, or 4 times as many in the permutations that run one invocation a cell, so
@@ -54,6 +60,10 @@
 #define PF_LOC_SOLVER_COARSE_DIMS 7 /* ivec4: the next coarser multigrid level's size */
 #define PF_LOC_SOLVER_CG_STEP 8  /* uint: the CG scalar step a z-summing pass runs last (cg_scalar_step.glsl) */
 #define PF_LOC_SOLVER_NONNEGATIVE 9 /* uint: begin_solve's copy of the problem's separation */
+/* begin_solve's pair permutation: the second problem's tolerance, and each problem's iteration cap */
+#define PF_LOC_SOLVER_TOLERANCE_SECOND 10 /* float */
+#define PF_LOC_SOLVER_CAP 11     /* uint */
+#define PF_LOC_SOLVER_CAP_SECOND 12 /* uint */
 
 /* CG's scalar steps (shaders/solvers/cg/cg_scalar_step.glsl). */
 #define PF_CG_STEP_START 0u      /* after the first r and z: residual test, beta = 0 */

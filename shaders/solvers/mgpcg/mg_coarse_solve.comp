@@ -7,24 +7,27 @@
 // an invocation with no cell of the sweep's colour just waits at the barrier. (Looping over the
 // level in strides of the workgroup, recomputing each cell's colour by integer division, took
 // ~75 us a solve on the H100; docs/accuracy.md.) Skipped once the solve has converged.
+// A pair solve (PF_PAIR 1, solver_value.glsl) does both problems: vec2 values.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
+#include "solvers/common/solver_value.glsl"
 #include "solvers/mgpcg/multigrid_limits.h"
 layout(local_size_x = PF_MG_COARSE_INVOCATIONS) in;
 layout(std430, binding = PF_SLOT_MG_TYPE) readonly buffer Type { uint cell_type[]; };
-layout(std430, binding = PF_SLOT_MG_R) readonly buffer R { float r[]; };
-layout(std430, binding = PF_SLOT_MG_E) writeonly buffer E { float e[]; };
+layout(std430, binding = PF_SLOT_MG_R) readonly buffer R { value_t r[]; };
+layout(std430, binding = PF_SLOT_MG_E) writeonly buffer E { value_t e[]; };
 layout(std430, binding = PF_SLOT_SOLVER_STATE) buffer State { uint state[]; };
 #include "solvers/common/poisson.glsl"
 #include "solvers/common/state.glsl"
 
-shared float s_e[PF_MG_COARSE_CELLS];
+shared value_t s_e[PF_MG_COARSE_CELLS];
 
 // One owned cell: its index, right-hand side, 1/diag, FLUID-neighbour mask (bits 0-5) and
 // colour; `live` is false for a cell past the level's end or not FLUID (its e stays 0).
 struct OwnedCell {
     int c;
-    float rhs, diag;
+    value_t rhs;
+    float diag;
     uint mask, color;
     bool live;
 };
@@ -32,7 +35,7 @@ struct OwnedCell {
 OwnedCell own(int c) {
     OwnedCell o;
     o.c = c;
-    o.rhs = 0.0;
+    o.rhs = value_t(0.0);
     o.diag = 0.0;
     o.mask = 0u;
     o.color = 0u;
@@ -52,7 +55,7 @@ OwnedCell own(int c) {
 void relax(OwnedCell o, uint color) {
     if (!o.live || o.color != color) return;
     const int step[6] = int[6](-1, 1, -u_dims.x, u_dims.x, -u_dims.x * u_dims.y, u_dims.x * u_dims.y);
-    vec3 pair_sum = vec3(0.0);
+    pairs_t pair_sum = pairs_t(0.0);
     for (int n = 0; n < 6; ++n) {
         if ((o.mask & (1u << n)) != 0u) pair_sum[n / 2] += s_e[o.c + step[n]];
     }
@@ -69,8 +72,8 @@ void main() {
     if (solve_converged()) return;  // uniform across the workgroup
     int first = 2 * int(gl_LocalInvocationIndex);
     OwnedCell a = own(first), b = own(first + 1);
-    s_e[first] = 0.0;
-    s_e[first + 1] = 0.0;
+    s_e[first] = value_t(0.0);
+    s_e[first + 1] = value_t(0.0);
     barrier();
     half_sweep(a, b, 0u);
     for (int k = 0; k < PF_MG_COARSE_SWEEPS; ++k) {

@@ -11,17 +11,19 @@
 // e holds the red half-sweep from zero (written with r by the pass that made r: CG's update on
 // the fine grid, this kernel's PF_MG_START on coarser ones); its black cells are not read. The
 // arithmetic per cell is the unfused passes' (same terms, same order).
+// A pair solve (PF_PAIR 1, solver_value.glsl) does both problems: vec2 values.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
+#include "solvers/common/solver_value.glsl"
 #include "solvers/mgpcg/multigrid_limits.h"
 layout(local_size_x = PF_MG_TILE_INVOCATIONS) in;
 layout(std430, binding = PF_SLOT_MG_TYPE) readonly buffer Type { uint cell_type[]; };
-layout(std430, binding = PF_SLOT_MG_R) readonly buffer R { float r[]; };
-layout(std430, binding = PF_SLOT_MG_E) readonly buffer E { float e[]; };
+layout(std430, binding = PF_SLOT_MG_R) readonly buffer R { value_t r[]; };
+layout(std430, binding = PF_SLOT_MG_E) readonly buffer E { value_t e[]; };
 layout(std430, binding = PF_SLOT_MG_COARSE_TYPE) readonly buffer CoarseType { uint coarse_type[]; };
-layout(std430, binding = PF_SLOT_MG_COARSE_R) writeonly buffer CoarseR { float coarse_r[]; };
+layout(std430, binding = PF_SLOT_MG_COARSE_R) writeonly buffer CoarseR { value_t coarse_r[]; };
 #if PF_MG_START
-layout(std430, binding = PF_SLOT_MG_COARSE_E) writeonly buffer CoarseE { float coarse_e[]; };
+layout(std430, binding = PF_SLOT_MG_COARSE_E) writeonly buffer CoarseE { value_t coarse_e[]; };
 #endif
 #include "solvers/common/poisson.glsl"
 #include "solvers/mgpcg/multigrid.glsl"
@@ -29,9 +31,9 @@ layout(std430, binding = PF_SLOT_MG_COARSE_E) writeonly buffer CoarseE { float c
 const int kTile = PF_MG_DOWN_TILE;
 const int kStaged = 2 * kTile + 6;    // fine cells per axis of the staged types and e
 const int kResidual = 2 * kTile + 2;  // fine cells per axis of the residuals restricted
-shared uint s_type[kStaged * kStaged * kStaged];
-shared float s_e[kStaged * kStaged * kStaged];
-shared float s_res[kResidual * kResidual * kResidual];
+const int kStagedCells = kStaged * kStaged * kStaged;
+shared value_t s_e[kStaged * kStaged * kStaged];
+shared value_t s_res[kResidual * kResidual * kResidual];
 #include "solvers/mgpcg/multigrid_tile.glsl"
 #include "solvers/mgpcg/restriction.glsl"
 
@@ -40,21 +42,22 @@ void main() {
     int g = int(workgroup_index());
     if (g >= tiles.x * tiles.y * tiles.z) return;  // uniform across the workgroup
     ivec3 c0 = tile_coord(g, tiles) * kTile;
-    ivec3 origin = 2 * c0 - 3;  // fine coordinates of s_type[0]
+    ivec3 origin = 2 * c0 - 3;  // fine coordinates of staged cell 0
     int lid = int(gl_LocalInvocationIndex);
+    clear_staged_types();
 
     // Stage types (outside the level: SOLID, which the stencil leaves out as poisson.glsl does)
     // and e's red FLUID values (everything else 0: the sweep started from zero).
     for (int i = lid; i < kStaged * kStaged * kStaged; i += PF_MG_TILE_INVOCATIONS) {
         ivec3 f = origin + tile_local(i, kStaged);
         uint word = uint(PF_CELL_SOLID);
-        float value = 0.0;
+        value_t value = value_t(0.0);
         if (level_inside(f)) {
             int c = level_index(f);
             word = cell_type[c];
             if (PF_CELL_KIND(word) == PF_CELL_FLUID && ((f.x + f.y + f.z) & 1) == 0) value = e[c];
         }
-        s_type[i] = word;
+        stage_type(i, word);
         s_e[i] = value;
     }
     barrier();
@@ -66,11 +69,11 @@ void main() {
         ivec3 local = tile_local(i, kStaged - 2) + 1;
         ivec3 f = origin + local;
         int s = tile_index(local, kStaged);
-        if (((f.x + f.y + f.z) & 1) == 0 || PF_CELL_KIND(s_type[s]) != PF_CELL_FLUID) continue;
+        if (((f.x + f.y + f.z) & 1) == 0 || PF_CELL_KIND(staged_type(s)) != PF_CELL_FLUID) continue;
         float diag;
-        vec3 pair_sum;
+        pairs_t pair_sum;
         staged_stencil(s, steps, diag, pair_sum);
-        s_e[s] = diag > 0.0 ? (r[level_index(f)] + pair_total(pair_sum)) / diag : 0.0;
+        s_e[s] = diag > 0.0 ? (r[level_index(f)] + pair_total(pair_sum)) / diag : value_t(0.0);
     }
     barrier();
 
@@ -78,10 +81,10 @@ void main() {
     for (int i = lid; i < kResidual * kResidual * kResidual; i += PF_MG_TILE_INVOCATIONS) {
         ivec3 local = tile_local(i, kResidual) + 2;
         int s = tile_index(local, kStaged);
-        float res = 0.0;
-        if (PF_CELL_KIND(s_type[s]) == PF_CELL_FLUID) {
+        value_t res = value_t(0.0);
+        if (PF_CELL_KIND(staged_type(s)) == PF_CELL_FLUID) {
             float diag;
-            vec3 pair_sum;
+            pairs_t pair_sum;
             staged_stencil(s, steps, diag, pair_sum);
             res = r[level_index(origin + local)] - (diag * s_e[s] - pair_total(pair_sum));
         }
@@ -94,7 +97,7 @@ void main() {
     if (any(greaterThanEqual(cc, u_coarse_dims.xyz))) return;
     int c = coarse_index(cc);
     bool fluid = PF_CELL_KIND(coarse_type[c]) == PF_CELL_FLUID;
-    float rc = 0.0;
+    value_t rc = value_t(0.0);
     if (fluid) {
         // Per axis: the fine cells 2 cc - 1 .. 2 cc + 2 (s_res index 2 (cc - c0) + d) and their
         // weights, 0 outside the level (whose residuals were staged as 0).
@@ -106,7 +109,7 @@ void main() {
             wy[d] = f.y >= 0 && f.y < u_dims.y ? prolong_weight_1d(f.y, cc.y, u_coarse_dims.y) : 0.0;
             wz[d] = f.z >= 0 && f.z < u_dims.z ? prolong_weight_1d(f.z, cc.z, u_coarse_dims.z) : 0.0;
         }
-        float sum = 0.0;
+        value_t sum = value_t(0.0);
         for (int dz = 0; dz < 4; ++dz) {
             for (int dy = 0; dy < 4; ++dy) {
                 float wyz = wz[dz] * wy[dy];
@@ -120,6 +123,6 @@ void main() {
 #if PF_MG_START
     bool red = ((cc.x + cc.y + cc.z) & 1) == 0;
     float diag = fluid && red ? coarse_diag(cc) : 0.0;
-    coarse_e[c] = diag > 0.0 ? rc / diag : 0.0;
+    coarse_e[c] = diag > 0.0 ? rc / diag : value_t(0.0);
 #endif
 }

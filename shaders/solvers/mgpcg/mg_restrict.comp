@@ -7,14 +7,16 @@
 // PF_MG_START 1 also begins the coarse level's V-cycle: its first red half-sweep from zero,
 // e = r / diag on red FLUID cells and 0 elsewhere (gauss_seidel.comp's PF_GS_FROM_ZERO),
 // which needs nothing but this cell's r — one pass less per level.
+// A pair solve (PF_PAIR 1, solver_value.glsl) does both problems: vec2 values.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
+#include "solvers/common/solver_value.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
-layout(std430, binding = PF_SLOT_MG_TMP) readonly buffer Tmp { float tmp[]; };
+layout(std430, binding = PF_SLOT_MG_TMP) readonly buffer Tmp { value_t tmp[]; };
 layout(std430, binding = PF_SLOT_MG_COARSE_TYPE) readonly buffer CoarseType { uint coarse_type[]; };
-layout(std430, binding = PF_SLOT_MG_COARSE_R) writeonly buffer CoarseR { float coarse_r[]; };
+layout(std430, binding = PF_SLOT_MG_COARSE_R) writeonly buffer CoarseR { value_t coarse_r[]; };
 #if PF_MG_START
-layout(std430, binding = PF_SLOT_MG_COARSE_E) writeonly buffer CoarseE { float coarse_e[]; };
+layout(std430, binding = PF_SLOT_MG_COARSE_E) writeonly buffer CoarseE { value_t coarse_e[]; };
 #endif
 #include "common/slots.h"
 #include "common/dispatch.glsl"
@@ -29,7 +31,7 @@ void main() {
     int c = int(flat_id());
     if (c >= u_coarse_dims.w) return;
     ivec3 cc = unflatten(c, u_coarse_dims.xyz);
-    float r = 0.0;
+    value_t r = value_t(0.0);
     bool fluid = PF_CELL_KIND(coarse_type[c]) == PF_CELL_FLUID;
     if (fluid) {
         // Per axis: the fine indices 2 cc - 1 .. 2 cc + 2 (clamped into the level) and weights.
@@ -45,7 +47,7 @@ void main() {
             wy[d] = in_level.y ? prolong_weight_1d(f.y, cc.y, u_coarse_dims.y) : 0.0;
             wz[d] = in_level.z ? prolong_weight_1d(f.z, cc.z, u_coarse_dims.z) : 0.0;
         }
-        float sum = 0.0;
+        value_t sum = value_t(0.0);
         for (int dz = 0; dz < 4; ++dz) {
             for (int dy = 0; dy < 4; ++dy) {
                 float wyz = wz[dz] * wy[dy];
@@ -59,6 +61,6 @@ void main() {
 #if PF_MG_START
     bool red = ((cc.x + cc.y + cc.z) & 1) == 0;
     float diag = fluid && red ? coarse_diag(cc) : 0.0;
-    coarse_e[c] = diag > 0.0 ? r / diag : 0.0;
+    coarse_e[c] = diag > 0.0 ? r / diag : value_t(0.0);
 #endif
 }

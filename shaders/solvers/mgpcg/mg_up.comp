@@ -9,24 +9,26 @@
 // the coarse values beneath it; halo cells are computed again by the neighbouring tiles.
 // Only e's red values are read: black cells are overwritten by the sweep. The arithmetic per
 // cell is the unfused passes' (same terms, same order).
+// A pair solve (PF_PAIR 1, solver_value.glsl) does both problems: vec2 values.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
+#include "solvers/common/solver_value.glsl"
 #include "solvers/mgpcg/multigrid_limits.h"
 layout(local_size_x = PF_MG_TILE_INVOCATIONS) in;
 layout(std430, binding = PF_SLOT_MG_TYPE) readonly buffer Type { uint cell_type[]; };
-layout(std430, binding = PF_SLOT_MG_R) readonly buffer R { float r[]; };
-layout(std430, binding = PF_SLOT_MG_E) readonly buffer E { float e[]; };
-layout(std430, binding = PF_SLOT_MG_TMP) writeonly buffer Out { float out_e[]; };
-layout(std430, binding = PF_SLOT_MG_COARSE_E) readonly buffer CoarseE { float coarse_e[]; };
+layout(std430, binding = PF_SLOT_MG_R) readonly buffer R { value_t r[]; };
+layout(std430, binding = PF_SLOT_MG_E) readonly buffer E { value_t e[]; };
+layout(std430, binding = PF_SLOT_MG_TMP) writeonly buffer Out { value_t out_e[]; };
+layout(std430, binding = PF_SLOT_MG_COARSE_E) readonly buffer CoarseE { value_t coarse_e[]; };
 #include "solvers/common/poisson.glsl"
 #include "solvers/mgpcg/multigrid.glsl"
 
 const int kTile = PF_MG_UP_TILE;
 const int kStaged = kTile + 4;      // fine cells per axis of the staged types and values
 const int kCoarse = kTile / 2 + 4;  // coarse cells per axis of the staged coarse values
-shared uint s_type[kStaged * kStaged * kStaged];
-shared float s_e[kStaged * kStaged * kStaged];
-shared float s_coarse[kCoarse * kCoarse * kCoarse];
+const int kStagedCells = kStaged * kStaged * kStaged;
+shared value_t s_e[kStaged * kStaged * kStaged];
+shared value_t s_coarse[kCoarse * kCoarse * kCoarse];
 #include "solvers/mgpcg/multigrid_tile.glsl"
 
 void main() {
@@ -34,29 +36,30 @@ void main() {
     int g = int(workgroup_index());
     if (g >= tiles.x * tiles.y * tiles.z) return;  // uniform across the workgroup
     ivec3 t0 = tile_coord(g, tiles) * kTile;
-    ivec3 origin = t0 - 2;                  // fine coordinates of s_type[0]
+    ivec3 origin = t0 - 2;                  // fine coordinates of staged cell 0
     ivec3 coarse_origin = (t0 >> 1) - 2;    // coarse coordinates of s_coarse[0]
     int lid = int(gl_LocalInvocationIndex);
+    clear_staged_types();
 
     for (int i = lid; i < kCoarse * kCoarse * kCoarse; i += PF_MG_TILE_INVOCATIONS) {
         ivec3 c = coarse_origin + tile_local(i, kCoarse);
         bool inside = all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, u_coarse_dims.xyz));
-        s_coarse[i] = inside ? coarse_e[coarse_index(c)] : 0.0;
+        s_coarse[i] = inside ? coarse_e[coarse_index(c)] : value_t(0.0);
     }
     for (int i = lid; i < kStaged * kStaged * kStaged; i += PF_MG_TILE_INVOCATIONS) {
         ivec3 f = origin + tile_local(i, kStaged);
-        s_type[i] = level_inside(f) ? cell_type[level_index(f)] : uint(PF_CELL_SOLID);
+        stage_type(i, level_inside(f) ? cell_type[level_index(f)] : uint(PF_CELL_SOLID));
     }
     barrier();
 
     // Red FLUID cells of the staged block: e + P e_coarse (mg_prolong_smooth.comp's corrected()).
     for (int i = lid; i < kStaged * kStaged * kStaged; i += PF_MG_TILE_INVOCATIONS) {
         ivec3 f = origin + tile_local(i, kStaged);
-        float v = 0.0;
-        if (((f.x + f.y + f.z) & 1) == 0 && PF_CELL_KIND(s_type[i]) == PF_CELL_FLUID) {
+        value_t v = value_t(0.0);
+        if (((f.x + f.y + f.z) & 1) == 0 && PF_CELL_KIND(staged_type(i)) == PF_CELL_FLUID) {
             ivec3 parent = f >> 1;
             ivec3 other = clamp(parent + 2 * (f & 1) - 1, ivec3(0), u_coarse_dims.xyz - 1);
-            float sum = 0.0;
+            value_t sum = value_t(0.0);
             for (int n = 0; n < 8; ++n) {
                 ivec3 pick = ivec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);
                 ivec3 c = parent + pick * (other - parent);
@@ -76,11 +79,11 @@ void main() {
         ivec3 local = tile_local(i, kTile + 2) + 1;
         ivec3 f = origin + local;
         int s = tile_index(local, kStaged);
-        if (((f.x + f.y + f.z) & 1) == 0 || PF_CELL_KIND(s_type[s]) != PF_CELL_FLUID) continue;
+        if (((f.x + f.y + f.z) & 1) == 0 || PF_CELL_KIND(staged_type(s)) != PF_CELL_FLUID) continue;
         float diag;
-        vec3 pair_sum;
+        pairs_t pair_sum;
         staged_stencil(s, steps, diag, pair_sum);
-        s_e[s] = diag > 0.0 ? (r[level_index(f)] + pair_total(pair_sum)) / diag : 0.0;
+        s_e[s] = diag > 0.0 ? (r[level_index(f)] + pair_total(pair_sum)) / diag : value_t(0.0);
     }
     barrier();
 
@@ -90,13 +93,13 @@ void main() {
         ivec3 f = origin + local;
         if (!level_inside(f)) continue;
         int s = tile_index(local, kStaged);
-        float v = 0.0;
-        if (PF_CELL_KIND(s_type[s]) == PF_CELL_FLUID) {
+        value_t v = value_t(0.0);
+        if (PF_CELL_KIND(staged_type(s)) == PF_CELL_FLUID) {
             if (((f.x + f.y + f.z) & 1) == 0) {
                 float diag;
-                vec3 pair_sum;
+                pairs_t pair_sum;
                 staged_stencil(s, steps, diag, pair_sum);
-                v = diag > 0.0 ? (r[level_index(f)] + pair_total(pair_sum)) / diag : 0.0;
+                v = diag > 0.0 ? (r[level_index(f)] + pair_total(pair_sum)) / diag : value_t(0.0);
             } else {
                 v = s_e[s];
             }

@@ -86,9 +86,18 @@ public:
                            const char* fn) = 0;
     // Records the solve of one substep into the GL command stream (no CPU wait).
     virtual void solve(PassRunner& runner, const PressureProblem& problem) = 0;
+    // Whether solve_pair() is available: MGPCG made for pairs (make_pressure_solver's `pairs`).
+    virtual bool solves_pairs() const { return false; }
+    // Records the solves of two problems on the same cell types in the same passes (a pair solve,
+    // docs/design.md §4.6): `first` and `second` each as solve() would, neither with separation.
+    // Only where solves_pairs(); any other solver records nothing.
+    virtual void solve_pair(PassRunner& runner, const PressureProblem& first, const PressureProblem& second) {
+        (void)runner, (void)first, (void)second;
+    }
 };
 
-// A new, uninitialised solver of `kind`, or nullptr for an unknown kind.
-std::unique_ptr<PressureSolver> make_pressure_solver(pf_pressure_solver kind);
+// A new, uninitialised solver of `kind`, or nullptr for an unknown kind; `pairs`: one that also
+// solves pairs where the kind can (MGPCG).
+std::unique_ptr<PressureSolver> make_pressure_solver(pf_pressure_solver kind, bool pairs = false);
 
 }  // namespace pf

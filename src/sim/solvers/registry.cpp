@@ -7,7 +7,7 @@
 
 namespace pf {
 
-std::unique_ptr<PressureSolver> make_pressure_solver(pf_pressure_solver kind) {
+std::unique_ptr<PressureSolver> make_pressure_solver(pf_pressure_solver kind, bool pairs) {
     switch (kind) {
         case PF_PRESSURE_SOLVER_JACOBI: return std::make_unique<JacobiSolver>();
         case PF_PRESSURE_SOLVER_RBGS: return std::make_unique<RedBlackSolver>();
@@ -17,7 +17,7 @@ std::unique_ptr<PressureSolver> make_pressure_solver(pf_pressure_solver kind) {
             return std::make_unique<ConjugateGradientSolver>(ConjugateGradientSolver::Preconditioner::jacobi, "pcg");
         case PF_PRESSURE_SOLVER_MGPCG:
             return std::make_unique<ConjugateGradientSolver>(ConjugateGradientSolver::Preconditioner::stored, "mgpcg",
-                                                             std::make_unique<Multigrid>());
+                                                             std::make_unique<Multigrid>(), pairs);
         default: return nullptr;
     }
 }

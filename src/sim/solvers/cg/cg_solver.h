@@ -23,6 +23,7 @@ class StoredPreconditioner {
 public:
     virtual ~StoredPreconditioner() = default;
     virtual std::string init(const gl::Api& gl, PassRunner& runner, SolveControl& control) = 0;
+    // Allocates for pair solves too when control.pairs() (values of two problems a cell).
     // Once per Krylov solve, before the first apply: the system's cell types are fixed until the next.
     virtual void begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_type) = 0;
     // Where CG's update writes the preconditioner's first step, which needs only each cell's
@@ -33,8 +34,9 @@ public:
     // last workgroup (shaders/solvers/cg/cg_scalar_step.glsl). Dispatches through the control's
     // records so a converged solve skips it. `first_sweep_done`: CG's update wrote
     // first_sweep() from this r. M must be symmetric positive definite (CG requires it).
+    // `pair`: r and z hold two problems' values (a pair solve, SolveControl), each preconditioned alone.
     virtual void apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_type, const gl::Buffer& r,
-                       const gl::Buffer& z, bool first_sweep_done, uint32_t cg_step) = 0;
+                       const gl::Buffer& z, bool first_sweep_done, uint32_t cg_step, bool pair) = 0;
 };
 
 class ConjugateGradientSolver final : public PressureSolver {
@@ -47,22 +49,29 @@ public:
     static constexpr uint32_t kActiveSetRounds = 4;
 
     // `stored` must be given for Preconditioner::stored (and only then); `name` is the stat entry.
-    ConjugateGradientSolver(Preconditioner kind, const char* name, std::unique_ptr<StoredPreconditioner> stored = {});
+    // `pairs` (with `stored` only): the solver also solves pairs (solve_pair), its vectors twice as large.
+    ConjugateGradientSolver(Preconditioner kind, const char* name, std::unique_ptr<StoredPreconditioner> stored = {},
+                            bool pairs = false);
     pf_result init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid, const Log& log,
                    const char* fn) override;
     void solve(PassRunner& runner, const PressureProblem& problem) override;
+    bool solves_pairs() const override { return pairs_; }
+    void solve_pair(PassRunner& runner, const PressureProblem& first, const PressureProblem& second) override;
 
 private:
-    gl::ProgramId init_program() const;
-    gl::ProgramId update_program() const;
-    gl::ProgramId matvec_program() const;
+    // The kernels of this kind (of a pair solve: `pair`).
+    gl::ProgramId init_program(bool pair = false) const;
+    gl::ProgramId update_program(bool pair = false) const;
+    gl::ProgramId matvec_program(bool pair = false) const;
     // One Krylov solve of `problem` from its pressure (a round of an active-set solve when
-    // another_round), without the final report.
-    void krylov(PassRunner& runner, const PressureProblem& problem, bool another_round);
+    // another_round), without the final report; with `second`, of both problems of a pair.
+    void krylov(PassRunner& runner, const PressureProblem& problem, bool another_round,
+                const PressureProblem* second = nullptr);
 
     Preconditioner kind_;
     const char* name_;
     std::unique_ptr<StoredPreconditioner> stored_;
+    bool pairs_ = false;
     SolverGrid grid_{};
     SolveControl control_;
     gl::Buffer r_, p_[2], q_, z_, working_type_;  // p: the previous and the new direction

@@ -7,16 +7,17 @@
 
 namespace pf {
 
-std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid) {
+std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid, bool pairs) {
     grid_ = grid;
     runner_ = &runner;
-    std::vector<uint32_t> zeros(PF_SOLVER_WORDS, 0u);
+    pairs_ = pairs;
+    std::vector<uint32_t> zeros(PF_SOLVER_PAIR_WORDS, 0u);
     state_ = gl::Buffer(gl, zeros.size() * 4, GL_DYNAMIC_COPY, "solver_state");
     state_.upload(0, zeros.size() * 4, zeros.data());
     orbits_ = uint32_t(orbits(grid.size));
     // One workgroup per PF_WORKGROUP_SIZE orbits in either mapping (orbit_main.glsl).
     partials_ = runner.workgroups(orbits_).total();  // a 2D dispatch may add idle workgroups
-    partials_buffer_ = gl::Buffer(gl, size_t(partials_) * 16, GL_DYNAMIC_COPY, "solver_partials");
+    partials_buffer_ = gl::Buffer(gl, size_t(partials_) * (pairs ? 32 : 16), GL_DYNAMIC_COPY, "solver_partials");
     add_record(grid.cells);
     orbit_record_ = add_record(orbits_);
     for (gl::ProgramId id : {reduction(gl::ProgramId::solver_rhs_stats), gl::ProgramId::solver_begin,
@@ -24,7 +25,38 @@ std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const Solv
                              gl::ProgramId::solver_report}) {
         if (std::string error = runner.prepare(id); !error.empty()) return error;
     }
+    if (!pairs) return {};
+    for (gl::ProgramId id : {gl::ProgramId::solver_rhs_stats, gl::ProgramId::solver_begin, gl::ProgramId::solver_residual,
+                             gl::ProgramId::solver_report}) {
+        if (std::string error = runner.prepare(program(id, true)); !error.empty()) return error;
+    }
     return {};
+}
+
+gl::ProgramId SolveControl::paired(gl::ProgramId id) {
+    using gl::ProgramId;
+    switch (id) {
+        case ProgramId::solver_rhs_stats: return ProgramId::solver_rhs_stats_pair;
+        case ProgramId::solver_begin: return ProgramId::solver_begin_pair;
+        case ProgramId::solver_residual: return ProgramId::solver_residual_pair;
+        case ProgramId::solver_report: return ProgramId::solver_report_pair;
+        case ProgramId::cg_init_stored: return ProgramId::cg_init_stored_pair;
+        case ProgramId::cg_update_stored: return ProgramId::cg_update_stored_pair;
+        case ProgramId::cg_matvec_stored: return ProgramId::cg_matvec_stored_pair;
+        case ProgramId::cg_zstats: return ProgramId::cg_zstats_pair;
+        case ProgramId::mg_smooth_from_zero: return ProgramId::mg_smooth_from_zero_pair;
+        case ProgramId::mg_smooth: return ProgramId::mg_smooth_pair;
+        case ProgramId::mg_residual: return ProgramId::mg_residual_pair;
+        case ProgramId::mg_restrict: return ProgramId::mg_restrict_pair;
+        case ProgramId::mg_restrict_start: return ProgramId::mg_restrict_start_pair;
+        case ProgramId::mg_down: return ProgramId::mg_down_pair;
+        case ProgramId::mg_down_start: return ProgramId::mg_down_start_pair;
+        case ProgramId::mg_up: return ProgramId::mg_up_pair;
+        case ProgramId::mg_prolong_smooth: return ProgramId::mg_prolong_smooth_pair;
+        case ProgramId::mg_smooth_zstats: return ProgramId::mg_smooth_zstats_pair;
+        case ProgramId::mg_coarse_solve: return ProgramId::mg_coarse_solve_pair;
+        default: return id;
+    }
 }
 
 gl::ProgramId SolveControl::reduction(gl::ProgramId id) const {
@@ -42,6 +74,11 @@ gl::ProgramId SolveControl::reduction(gl::ProgramId id) const {
         case ProgramId::cg_matvec_stored: return ProgramId::cg_matvec_stored_cells;
         case ProgramId::cg_zstats: return ProgramId::cg_zstats_cells;
         case ProgramId::mg_smooth_zstats: return ProgramId::mg_smooth_zstats_cells;
+        case ProgramId::solver_rhs_stats_pair: return ProgramId::solver_rhs_stats_pair_cells;
+        case ProgramId::solver_residual_pair: return ProgramId::solver_residual_pair_cells;
+        case ProgramId::cg_matvec_stored_pair: return ProgramId::cg_matvec_stored_pair_cells;
+        case ProgramId::cg_zstats_pair: return ProgramId::cg_zstats_pair_cells;
+        case ProgramId::mg_smooth_zstats_pair: return ProgramId::mg_smooth_zstats_pair_cells;
         default: return id;
     }
 }
@@ -63,14 +100,16 @@ Uniform SolveControl::dims_uniform(glm::ivec3 dims) {
     return Uniform::ivec4(PF_LOC_SOLVER_DIMS, dims.x, dims.y, dims.z, dims.x * dims.y * dims.z);
 }
 
+void SolveControl::rhs_stats(PassRunner& runner, StatId stat, const PressureProblem& problem,
+                             const PressureProblem* second) {
+    Bindings binds{{PF_SLOT_CELL_TYPE, &problem.cell_type}, {PF_SLOT_RHS, &problem.rhs},
+                   {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}};
+    if (second) binds.add({PF_SLOT_SOLVER_RHS_SECOND, &second->rhs});
+    runner.run({program(gl::ProgramId::solver_rhs_stats, second != nullptr), stat, orbits_, binds, {}, {dims_uniform()}});
+}
+
 void SolveControl::begin(PassRunner& runner, StatId stat, const PressureProblem& problem, bool another_round) {
-    runner.run({reduction(gl::ProgramId::solver_rhs_stats),
-                stat,
-                orbits_,
-                {{PF_SLOT_CELL_TYPE, &problem.cell_type}, {PF_SLOT_RHS, &problem.rhs},
-                 {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}},
-                {},
-                {dims_uniform()}});
+    rhs_stats(runner, stat, problem, nullptr);
     runner.run({gl::ProgramId::solver_begin,
                 stat,
                 PF_WORKGROUP_SIZE,
@@ -80,6 +119,21 @@ void SolveControl::begin(PassRunner& runner, StatId stat, const PressureProblem&
                  Uniform::float1(PF_LOC_SOLVER_TOLERANCE, problem.params.pressure_tolerance),
                  Uniform::uint1(PF_LOC_SOLVER_ITERATIONS, another_round ? 1u : 0u),
                  Uniform::uint1(PF_LOC_SOLVER_NONNEGATIVE, problem.params.separation ? 1u : 0u)}});
+}
+
+void SolveControl::begin_pair(PassRunner& runner, StatId stat, const PressureProblem& first,
+                              const PressureProblem& second, const uint32_t caps[2]) {
+    rhs_stats(runner, stat, first, &second);
+    runner.run({gl::ProgramId::solver_begin_pair,
+                stat,
+                PF_WORKGROUP_SIZE,
+                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_}, {PF_SLOT_SOLVER_STATE, &state_}},
+                {},
+                {Uniform::uint1(PF_LOC_SOLVER_COUNT, partials_),
+                 Uniform::float1(PF_LOC_SOLVER_TOLERANCE, first.params.pressure_tolerance),
+                 Uniform::float1(PF_LOC_SOLVER_TOLERANCE_SECOND, second.params.pressure_tolerance),
+                 Uniform::uint1(PF_LOC_SOLVER_ITERATIONS, 0u), Uniform::uint1(PF_LOC_SOLVER_CAP, caps[0]),
+                 Uniform::uint1(PF_LOC_SOLVER_CAP_SECOND, caps[1])}});
 }
 
 void SolveControl::residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct) {
@@ -113,6 +167,31 @@ void SolveControl::finish(PassRunner& runner, StatId stat, const PressureProblem
                 {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
                  {PF_SLOT_SOLVER_STATE, &state_},
                  {PF_SLOT_SOLVER_STATUS, &problem.status}},
+                {},
+                {Uniform::uint1(PF_LOC_SOLVER_COUNT, partials_)}});
+}
+
+void SolveControl::finish_pair(PassRunner& runner, StatId stat, const PressureProblem& first,
+                               const PressureProblem& second) {
+    runner.run({program(gl::ProgramId::solver_residual, true),
+                stat,
+                orbits_,
+                {{PF_SLOT_CELL_TYPE, &first.cell_type},
+                 {PF_SLOT_RHS, &first.rhs},
+                 {PF_SLOT_SOLVER_X, &first.pressure},
+                 {PF_SLOT_SOLVER_RHS_SECOND, &second.rhs},
+                 {PF_SLOT_SOLVER_X_SECOND, &second.pressure},
+                 {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
+                 {PF_SLOT_SOLVER_STATE, &state_}},
+                {},
+                {dims_uniform()}});
+    runner.run({gl::ProgramId::solver_report_pair,
+                stat,
+                PF_WORKGROUP_SIZE,
+                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
+                 {PF_SLOT_SOLVER_STATE, &state_},
+                 {PF_SLOT_SOLVER_STATUS, &first.status},
+                 {PF_SLOT_SOLVER_STATUS_SECOND, &second.status}},
                 {},
                 {Uniform::uint1(PF_LOC_SOLVER_COUNT, partials_)}});
 }

@@ -4,7 +4,10 @@
 // checks, and the final residual report into the simulation's status buffer.
 //
 // Flow of one solve: begin() → the solver's iterations, whose cell-wide passes dispatch
-// through record(k) → check() now and then (stationary solvers) → finish(). Once a check (or a
+// through record(k) → check() now and then (stationary solvers) → finish(). A control made for
+// pairs (MGPCG's, `pairs`) also runs pair solves: two problems with the same cell types in the
+// same passes (shaders/solvers/common/solver_value.glsl), begin_pair() → iterations →
+// finish_pair(), each problem with its own scalars, tolerance, iteration cap and report. Once a check (or a
 // Krylov scalar step) finds the tolerance met, it zeroes the records: every later iteration
 // of that solve dispatches no workgroups, and the CPU has not waited for anything.
 #pragma once
@@ -23,7 +26,9 @@ public:
     // the fine grid's cells, record orbit_record() its mirror orbits (the reduction kernels'
     // workgroups take PF_WORKGROUP_SIZE orbits each, shaders/solvers/common/orbit_main.glsl).
     // Returns an error message, empty on success.
-    std::string init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid);
+    // `pairs`: also for pair solves (two partial sums a workgroup, the pair programs).
+    std::string init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid, bool pairs = false);
+    bool pairs() const { return pairs_; }
     // Adds an indirect record dispatching `invocations` (a coarser grid level); its index.
     uint32_t add_record(uint64_t invocations);
     Indirect record(uint32_t k) const;
@@ -39,6 +44,10 @@ public:
     // The permutation of reduction kernel `id` (orbit_main.glsl) for this grid's mapping; any
     // other kernel is returned as it is.
     gl::ProgramId reduction(gl::ProgramId id) const;
+    // Kernel `id` for a pair solve (`pair`) or a single one, in this grid's reduction mapping.
+    gl::ProgramId program(gl::ProgramId id, bool pair) const { return reduction(pair ? paired(id) : id); }
+    // The pair permutation of a kernel that has one (any other is returned as it is).
+    static gl::ProgramId paired(gl::ProgramId id);
     // Workgroups (and partial sums) of a reduction pass over the fine grid.
     uint32_t partial_count() const { return partials_; }
 
@@ -50,6 +59,11 @@ public:
     void check(PassRunner& runner, StatId stat, const PressureProblem& problem, uint32_t iterations);
     // The final residual of the problem's pressure and the iteration count, into the status buffer.
     void finish(PassRunner& runner, StatId stat, const PressureProblem& problem);
+    // The same for a pair solve of `first` and `second` (same cell types, neither with
+    // separation); each problem stops after its own `caps` of iterations.
+    void begin_pair(PassRunner& runner, StatId stat, const PressureProblem& first, const PressureProblem& second,
+                    const uint32_t caps[2]);
+    void finish_pair(PassRunner& runner, StatId stat, const PressureProblem& first, const PressureProblem& second);
 
     const gl::Buffer& state() const { return state_; }
     const gl::Buffer& partials() const { return partials_buffer_; }
@@ -60,12 +74,15 @@ public:
 
 private:
     void residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct);
+    // rhs_stats over one problem, or both of a pair (second non-null).
+    void rhs_stats(PassRunner& runner, StatId stat, const PressureProblem& problem, const PressureProblem* second);
 
     SolverGrid grid_{};
     gl::Buffer state_, partials_buffer_;
     uint32_t partials_ = 0;
     uint32_t orbits_ = 0, orbit_record_ = 0;
     uint32_t records_ = 0;
+    bool pairs_ = false;
     const PassRunner* runner_ = nullptr;
 };
 

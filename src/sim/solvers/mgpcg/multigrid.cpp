@@ -22,7 +22,7 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         // Axes of two or three cells coarsen to one and two like any other (the prolongation clamps
         // onto the level); only an axis of one cell stays as it is.
         const bool last = level.cells <= PF_MG_COARSE_CELLS || levels_.size() + 1 == PF_MG_MAX_LEVELS;
-        const size_t bytes = size_t(level.cells) * 4;
+        const size_t bytes = size_t(level.cells) * (control.pairs() ? 8 : 4);  // a pair's: two values a cell
         if (fine) {
             start_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_start");
         } else {
@@ -44,7 +44,7 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         const bool finer_unfused = !fine && !levels_.back().fused;
         if (fine) level.record = control.record(0);
         else if (!level.fused || finer_unfused) level.record = control.record(control.add_record(level.cells));
-        if (!last && level.fused && !level.bottom) {
+        if (!last && level.fused && (!level.bottom || control.pairs())) {
             level.down = control.record(control.add_record(tiles(next, PF_MG_DOWN_TILE) * PF_WORKGROUP_SIZE));
             if (!fine) level.up = control.record(control.add_record(tiles(dims, PF_MG_UP_TILE) * PF_WORKGROUP_SIZE));
         }
@@ -55,29 +55,37 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
     if (levels_.back().cells > PF_MG_COARSE_CELLS)
         return "multigrid: the coarsest level has " + std::to_string(levels_.back().cells) + " cells (more than " +
                std::to_string(PF_MG_COARSE_CELLS) + ")";
-    std::vector<ProgramId> programs{ProgramId::mg_smooth_from_zero, ProgramId::mg_coarsen_types,
-                                    ProgramId::mg_prolong_smooth, control.reduction(ProgramId::mg_smooth_zstats),
-                                    control.reduction(ProgramId::cg_zstats)};
-    // The passes of the levels above the coarsest, fused or not, and the bottom's: only those built.
-    bool fused = false, unfused = false, bottom = false;
-    for (size_t l = 0; l + 1 < levels_.size(); ++l) {
-        if (levels_[l].bottom) bottom = true;
-        else (levels_[l].fused ? fused : unfused) = true;
+    // The passes of the levels above the coarsest, fused or not, and the bottom's: only those
+    // built (for a pair's cycle as well when the control solves pairs; the bottom's are fused there).
+    for (bool pair : {false, true}) {
+        if (pair && !control.pairs()) break;
+        pair_ = pair;
+        std::vector<ProgramId> programs{ProgramId::mg_coarsen_types, program(ProgramId::mg_smooth_from_zero),
+                                        program(ProgramId::mg_prolong_smooth), program(ProgramId::mg_smooth_zstats),
+                                        program(ProgramId::cg_zstats)};
+        bool fused = false, unfused = false, bottom_level = false;
+        for (size_t l = 0; l + 1 < levels_.size(); ++l) {
+            if (bottom(l)) bottom_level = true;
+            else (levels_[l].fused ? fused : unfused) = true;
+        }
+        programs.push_back(program(bottom_level ? ProgramId::mg_bottom : ProgramId::mg_coarse_solve));
+        if (fused) {
+            for (ProgramId id : {ProgramId::mg_down, ProgramId::mg_down_start, ProgramId::mg_up}) programs.push_back(program(id));
+        }
+        if (unfused) {
+            for (ProgramId id : {ProgramId::mg_smooth, ProgramId::mg_residual, ProgramId::mg_restrict, ProgramId::mg_restrict_start})
+                programs.push_back(program(id));
+        }
+        for (ProgramId id : programs) {
+            if (std::string error = runner.prepare(id); !error.empty()) return error;
+        }
     }
-    programs.push_back(bottom ? ProgramId::mg_bottom : ProgramId::mg_coarse_solve);
-    if (fused) programs.insert(programs.end(), {ProgramId::mg_down, ProgramId::mg_down_start, ProgramId::mg_up});
-    if (unfused) {
-        programs.insert(programs.end(), {ProgramId::mg_smooth, ProgramId::mg_residual, ProgramId::mg_restrict,
-                                         ProgramId::mg_restrict_start});
-    }
-    for (ProgramId id : programs) {
-        if (std::string error = runner.prepare(id); !error.empty()) return error;
-    }
+    pair_ = false;
     return {};
 }
 
 void Multigrid::half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::Buffer& x, uint32_t color) {
-    runner.run({ProgramId::mg_smooth, stat, 0,
+    runner.run({program(ProgramId::mg_smooth), stat, 0,
                 {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &x},
                  {PF_SLOT_SOLVER_STATE, &control_->state()}},
                 levels_[l].record,
@@ -107,7 +115,7 @@ void Multigrid::begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_ty
 void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_step) {
     const Level& level = levels_[l];
     const Uniform dims = SolveControl::dims_uniform(level.dims);
-    if (level.bottom) {
+    if (bottom(l)) {
         // This level and the coarsest in one workgroup (PF_WORKGROUP_SIZE invocations make one group).
         runner.run({ProgramId::mg_bottom, stat, PF_WORKGROUP_SIZE,
                     {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
@@ -119,7 +127,7 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
     }
     if (coarsest(l)) {
         // One workgroup (of PF_MG_COARSE_INVOCATIONS): PF_WORKGROUP_SIZE invocations make one group.
-        runner.run({ProgramId::mg_coarse_solve, stat, PF_WORKGROUP_SIZE,
+        runner.run({program(ProgramId::mg_coarse_solve), stat, PF_WORKGROUP_SIZE,
                     {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &out_of(l)},
                      {PF_SLOT_SOLVER_STATE, &control_->state()}},
                     {},
@@ -131,32 +139,32 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
     // pre-smoothing, and its residual is restricted: one pass on a fused level (mg_down.comp).
     if (!level.fused) {
         half_sweep(runner, stat, l, e_of(l), 1u);
-        runner.run({ProgramId::mg_residual, stat, 0,
+        runner.run({program(ProgramId::mg_residual), stat, 0,
                     {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
                      {PF_SLOT_MG_TMP, &out_of(l)}},
                     level.record,
                     {dims}});
         if (coarsest(l + 1)) {
-            runner.run({ProgramId::mg_restrict, stat, 0,
+            runner.run({program(ProgramId::mg_restrict), stat, 0,
                         {{PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
                          {PF_SLOT_MG_COARSE_R, &coarse.r}},
                         coarse.record,
                         {dims, coarse_dims(coarse)}});
         } else {
-            runner.run({ProgramId::mg_restrict_start, stat, 0,
+            runner.run({program(ProgramId::mg_restrict_start), stat, 0,
                         {{PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
                          {PF_SLOT_MG_COARSE_R, &coarse.r}, {PF_SLOT_MG_COARSE_E, &coarse.e}},
                         coarse.record,
                         {dims, coarse_dims(coarse)}});
         }
     } else if (coarsest(l + 1)) {
-        runner.run({ProgramId::mg_down, stat, 0,
+        runner.run({program(ProgramId::mg_down), stat, 0,
                     {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
                      {PF_SLOT_MG_COARSE_TYPE, &coarse.type}, {PF_SLOT_MG_COARSE_R, &coarse.r}},
                     level.down,
                     {dims, coarse_dims(coarse)}});
     } else {
-        runner.run({ProgramId::mg_down_start, stat, 0,
+        runner.run({program(ProgramId::mg_down_start), stat, 0,
                     {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
                      {PF_SLOT_MG_COARSE_TYPE, &coarse.type}, {PF_SLOT_MG_COARSE_R, &coarse.r},
                      {PF_SLOT_MG_COARSE_E, &coarse.e}},
@@ -167,14 +175,14 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
     // The correction, then black and red: one pass on a fused level (mg_up.comp); on the fine
     // level the red half-sweep carries CG's sums.
     if (l > 0 && level.fused) {
-        runner.run({ProgramId::mg_up, stat, 0,
+        runner.run({program(ProgramId::mg_up), stat, 0,
                     {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
                      {PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_E, &out_of(l + 1)}},
                     level.up,
                     {dims, coarse_dims(coarse)}});
         return;
     }
-    runner.run({ProgramId::mg_prolong_smooth, stat, 0,
+    runner.run({program(ProgramId::mg_prolong_smooth), stat, 0,
                 {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_E, &e_of(l)},
                  {PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_E, &out_of(l + 1)}},
                 level.record,
@@ -183,7 +191,7 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
         half_sweep(runner, stat, l, out_of(l), 0u);
         return;
     }
-    runner.run({control_->reduction(ProgramId::mg_smooth_zstats), stat, 0,
+    runner.run({program(ProgramId::mg_smooth_zstats), stat, 0,
                 {{PF_SLOT_MG_TYPE, &type_of(0)}, {PF_SLOT_MG_R, &r_of(0)}, {PF_SLOT_MG_E, &out_of(0)},
                  {PF_SLOT_SOLVER_PARTIALS, &control_->partials()}, {PF_SLOT_SOLVER_STATE, &control_->state()}},
                 control_->orbit_record(),
@@ -191,13 +199,14 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
 }
 
 void Multigrid::apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_type, const gl::Buffer& r,
-                      const gl::Buffer& z, bool first_sweep_done, uint32_t cg_step) {
+                      const gl::Buffer& z, bool first_sweep_done, uint32_t cg_step, bool pair) {
+    pair_ = pair;
     fine_type_ = &cell_type;
     fine_r_ = &r;
     fine_z_ = &z;
     const Uniform dims = SolveControl::dims_uniform(levels_[0].dims);
     if (!first_sweep_done && !coarsest(0)) {
-        runner.run({ProgramId::mg_smooth_from_zero, stat, 0,
+        runner.run({program(ProgramId::mg_smooth_from_zero), stat, 0,
                     {{PF_SLOT_MG_TYPE, &cell_type}, {PF_SLOT_MG_R, &r}, {PF_SLOT_MG_E, &start_},
                      {PF_SLOT_SOLVER_STATE, &control_->state()}},
                     control_->record(0),
@@ -206,7 +215,7 @@ void Multigrid::apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_ty
     vcycle(runner, stat, 0, cg_step);
     if (coarsest(0)) {
         // A grid small enough to be its own coarsest level: its solve has no fused sums.
-        runner.run({control_->reduction(ProgramId::cg_zstats), stat, 0,
+        runner.run({program(ProgramId::cg_zstats), stat, 0,
                     {{PF_SLOT_CELL_TYPE, &cell_type}, {PF_SLOT_SOLVER_R, &r}, {PF_SLOT_SOLVER_Z, &z},
                      {PF_SLOT_SOLVER_PARTIALS, &control_->partials()}, {PF_SLOT_SOLVER_STATE, &control_->state()}},
                     control_->orbit_record(),

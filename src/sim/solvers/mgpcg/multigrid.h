@@ -23,7 +23,8 @@
 // pass costs a few microseconds of launch and barrier whatever its size, so the level above the
 // coarsest, when it is not the fine one and has at most PF_MG_BOTTOM_CELLS cells, runs its way
 // down, the coarsest level's sweeps and its way up in one workgroup (mg_bottom.comp): one
-// dispatch for three.
+// dispatch for three. A pair solve's V-cycle (two problems' values a cell, SolveControl) takes
+// the fused passes there instead: the bottom's shared memory would not hold two values a cell.
 #pragma once
 #include <vector>
 
@@ -37,7 +38,7 @@ public:
     void begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_type) override;
     const gl::Buffer& first_sweep() const override { return start_; }
     void apply(PassRunner& runner, StatId stat, const gl::Buffer& cell_type, const gl::Buffer& r, const gl::Buffer& z,
-               bool first_sweep_done, uint32_t cg_step) override;
+               bool first_sweep_done, uint32_t cg_step, bool pair) override;
 
     size_t levels() const { return levels_.size(); }
 
@@ -48,7 +49,8 @@ private:
         bool fused = false;     // small enough for the fused kernels (PF_MG_FUSED_CELLS)
         bool bottom = false;    // the level above the coarsest, both in one workgroup (mg_bottom.comp)
         Indirect record{};      // the level's cells (the fine level's, or an unfused pass's)
-        Indirect down{}, up{};  // a fused level's mg_down (over the next level's tiles) and mg_up
+        Indirect down{}, up{};  // a fused level's mg_down (over the next level's tiles) and mg_up (a bottom
+                                // level's too, for a pair's cycle)
         // type, r: the level's system; e: the correction while pre-smoothing; out: the residual
         // after pre-smoothing, then the level's result (the coarsest level: only its result).
         // Level 0 borrows type, r and out (= z) from the solve; its e is start_.
@@ -60,6 +62,10 @@ private:
     const gl::Buffer& e_of(size_t l) const { return l == 0 ? start_ : levels_[l].e; }
     const gl::Buffer& out_of(size_t l) const { return l == 0 ? *fine_z_ : levels_[l].out; }
     bool coarsest(size_t l) const { return l + 1 == levels_.size(); }
+    // Level l runs mg_bottom.comp in this cycle (never in a pair's).
+    bool bottom(size_t l) const { return levels_[l].bottom && !pair_; }
+    // Kernel `id` for this cycle (a pair's permutation in a pair's).
+    gl::ProgramId program(gl::ProgramId id) const { return control_->program(id, pair_); }
     void vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_step);
     // One colour of a Gauss-Seidel sweep on an unfused level l's buffer x.
     void half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::Buffer& x, uint32_t color);
@@ -73,6 +79,7 @@ private:
     const gl::Buffer* fine_type_ = nullptr;
     const gl::Buffer* fine_r_ = nullptr;
     const gl::Buffer* fine_z_ = nullptr;
+    bool pair_ = false;  // this cycle's
 };
 
 }  // namespace pf
