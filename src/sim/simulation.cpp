@@ -202,16 +202,19 @@ uint32_t Simulation::live_count() const {
 
 pf_result Simulation::solvers_for(const pf_sim_params& params, const char* fn, SolversInUse* out) {
     SolversInUse s;
-    if (params.volume_correction > 0.0f && params.pressure_solver == PF_PRESSURE_SOLVER_MGPCG && !params.separation) {
-        // The correction's solve and the projection's as a pair, on one instance that also solves
-        // the projections the correction does not go with (later substeps, effects).
+    const bool correction = params.volume_correction > 0.0f;
+    if (params.pressure_solver == PF_PRESSURE_SOLVER_MGPCG && (correction || pair_solver_)) {
+        // One instance made for pairs solves both: the correction's problem and the projection's
+        // as a pair (without separation; with it, the two in turn), and the projections the
+        // correction does not go with (later substeps, effects). Its buffers are two solvers';
+        // once made it also serves while the correction is off, so switching allocates nothing.
         if (pf_result r = solver_for(params, fn, &s.pressure, SolverRole::pair); r != PF_OK) return r;
-        s.correction = s.pressure;
+        if (correction) s.correction = s.pressure;
         *out = s;
         return PF_OK;
     }
     if (pf_result r = solver_for(params, fn, &s.pressure, SolverRole::projection); r != PF_OK) return r;
-    if (params.volume_correction > 0.0f) {
+    if (correction) {
         if (pf_result r = solver_for(params, fn, &s.correction, SolverRole::correction); r != PF_OK) return r;
     }
     *out = s;

@@ -219,9 +219,10 @@ private:
     };
     pf_result solvers_for(const pf_sim_params& params, const char* fn, SolversInUse* out);
     // Whether the volume correction's solve goes in the same passes as the projection's (its
-    // solver solves pairs: solvers_for gives it one only where the projection asks no separation).
+    // solver solves pairs, and the projection asks no separation).
     bool correction_paired() const {
-        return paired_correction_allowed_ && solvers_in_use_.correction && solvers_in_use_.correction->solves_pairs();
+        return paired_correction_allowed_ && solvers_in_use_.correction && solvers_in_use_.correction->solves_pairs() &&
+               !desc_.params.separation;
     }
     // The per-particle programs params select after P2G (its scheme's sums, transfer, flip
     // ratio, advection); the P2G scheme must be prepared.

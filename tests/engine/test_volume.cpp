@@ -301,10 +301,10 @@ TEST_F(Volume, IssueDamBreakKeepsItsLiquidVolumeAtHalfSecondFrames) {
 // The correction's solve is issued in lockstep with the projection's (one barrier a pair of
 // their passes), except under per-kernel timing, which issues them in turn: a dam break's
 // particles are the same either way, bit for bit, and both ran the same correction passes.
-// With MGPCG and separation (its active-set rounds copy the cell types inside the recording)
-// and with 41 Jacobi sweeps (an odd count starts with a copy). (MGPCG without separation, as
-// the balanced and fast presets have it, solves both problems in the same passes either way:
-// tests/internal/test_volume_correction.cpp.)
+// With PCG and separation (the CG family's active-set rounds copy the cell types inside the
+// recording) and with 41 Jacobi sweeps (an odd count starts with a copy). (MGPCG solves both on
+// one instance: in the same passes without separation, as the balanced and fast presets have it,
+// tests/internal/test_volume_correction.cpp; in turn with it.)
 void Volume::expect_same_in_turn(pf_pressure_solver solver, uint32_t separation, uint32_t iterations) {
     std::vector<float> pos[2];
     uint32_t correction_dispatches[2] = {0, 0};
@@ -330,8 +330,62 @@ void Volume::expect_same_in_turn(pf_pressure_solver solver, uint32_t separation,
 }
 
 TEST_F(Volume, CorrectionSolvedAlongsideTheProjectionMatchesInTurn) {
-    expect_same_in_turn(PF_PRESSURE_SOLVER_MGPCG, 1, 40);
+    expect_same_in_turn(PF_PRESSURE_SOLVER_PCG, 1, 40);
     expect_same_in_turn(PF_PRESSURE_SOLVER_JACOBI, 0, 41);
+}
+
+// With MGPCG the correction's solve goes with the projection's as a pair (no separation), in turn
+// with it (separation), or not at all (volume_correction 0), and pf_set_params may move a
+// running simulation between the three: each step then runs the configuration asked
+// (its passes say which: a pair's correction solve counts no pass of its own), the liquid
+// stays in the domain with its particles intact, and no switch allocates GPU memory (one
+// solver instance serves all three).
+TEST_F(Volume, CorrectionFollowsTheParamsBetweenPairedAloneAndOff) {
+    pf_sim_desc d = long_run_desc(16, 12, 8, 0.5f);
+    d.params.pressure_solver = PF_PRESSURE_SOLVER_MGPCG;
+    d.params.separation = 0;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.6f, 0.8f, 0.8f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    const uint32_t particles = live_count(sim.get());
+    uint64_t memory = 0;
+    struct Phase {
+        uint32_t separation;
+        float correction;
+        bool own_solve, moves;  // the correction's solve has passes of its own; its move runs
+    };
+    const Phase phases[] = {{0, 0.5f, false, true}, {1, 0.5f, true, true}, {0, 0.5f, false, true},
+                            {0, 0.0f, false, false}, {0, 0.5f, false, true}, {1, 0.0f, false, false}};
+    for (const Phase& phase : phases) {
+        SCOPED_TRACE("separation " + std::to_string(phase.separation) + ", correction " + std::to_string(phase.correction));
+        pf_sim_params p = d.params;
+        p.separation = phase.separation;
+        p.volume_correction = phase.correction;
+        ASSERT_EQ(pf_set_params(sim.get(), &p), PF_OK);
+        for (int f = 0; f < 5; ++f) ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+        uint32_t solve = 0, move = 0, pressure = 0;
+        for (const pf_pass_stats& ps : pass_list(sim.get())) {
+            const std::string name = ps.name;
+            if (name == "volume_correction_solve") solve = ps.dispatches;
+            if (name == "volume_correction_move") move = ps.dispatches;
+            if (name.rfind("mgpcg", 0) == 0) pressure += ps.dispatches;
+        }
+        EXPECT_EQ(solve > 0, phase.own_solve);
+        EXPECT_EQ(move > 0, phase.moves);
+        EXPECT_GT(pressure, 0u);
+        pf_stats stats{};
+        ASSERT_EQ(pf_get_stats(sim.get(), &stats), PF_OK);
+        if (memory == 0) memory = stats.gpu_memory_bytes;
+        EXPECT_EQ(stats.gpu_memory_bytes, memory);
+        const ParticleState state = read_all(sim.get());
+        ASSERT_EQ(state.pos.size(), size_t(particles) * 3);
+        for (size_t i = 0; i < state.pos.size(); ++i) {
+            ASSERT_TRUE(std::isfinite(state.pos[i])) << i;
+            ASSERT_GE(state.pos[i], 0.0f) << i;
+            ASSERT_LE(state.pos[i], float(d.grid_size[i % 3]) * d.cell_size) << i;
+        }
+    }
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ pf_result ConjugateGradientSolver::init(const gl::Api& gl, PassRunner& runner, c
     p_[0] = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_p");
     p_[1] = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_p");
     q_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_q");
-    working_type_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_working_type");
+    working_type_ = gl::Buffer(gl, size_t(grid.cells) * 4, GL_DYNAMIC_COPY, "cg_working_type");
     if (kind_ != Preconditioner::none) z_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_z");
     std::string error = control_.init(gl, runner, grid, pairs_);
     const ProgramId programs[] = {init_program(), update_program(), matvec_program(), ProgramId::separation_active_set,

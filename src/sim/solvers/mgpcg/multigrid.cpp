@@ -26,7 +26,7 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         if (fine) {
             start_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_start");
         } else {
-            level.type = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_type");
+            level.type = gl::Buffer(gl, size_t(level.cells) * 4, GL_DYNAMIC_COPY, "mg_type");
             level.r = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_r");
             level.out = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_out");
             if (!last) level.e = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_e");
