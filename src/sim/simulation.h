@@ -148,7 +148,7 @@ public:
     pf_result solve_two_for_test(const std::vector<uint32_t>& cell_type, const std::vector<float> (&rhs)[2],
                                  std::vector<float> (&pressure)[2], bool paired, uint32_t (&iterations)[2]);
     // Test access: whether the volume correction's solve may go in the same passes as the
-    // projection's (default true; false: alongside it, as any other solver's).
+    // projection's (default true; false: the two solve in turn on that solver, as with separation).
     void set_paired_correction_for_test(bool paired) { paired_correction_allowed_ = paired; }
     std::vector<uint32_t> read_grid(GridBuffer which) const;
     void write_grid_for_test(GridBuffer which, const std::vector<uint32_t>& words);

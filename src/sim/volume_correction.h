@@ -1,8 +1,9 @@
 // The volume correction (docs/design.md §4.5): once per step (and per 1/60 s of simulated
 // time in longer steps), particles in over-full cells
 // are moved apart along the gradient of a displacement potential, solved with a solver of the
-// simulation's kind (an instance of its own, issued alongside the projection's; with MGPCG, one
-// made for pairs, which solves the projection's problem and this one in the same passes). It moves positions only: velocities, and so FLIP's
+// simulation's kind: with MGPCG the projection's own, made for pairs (the two problems in the
+// same passes; in turn with separation), else an instance of its own, issued alongside the
+// projection's. It moves positions only: velocities, and so FLIP's
 // velocity difference and the kinetic energy, never see it (issue 17: as a divergence target
 // of the projection it added energy when the solve was unconverged and smothered waves when
 // it was converged).

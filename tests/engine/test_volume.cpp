@@ -375,7 +375,9 @@ TEST_F(Volume, CorrectionFollowsTheParamsBetweenPairedAloneAndOff) {
         EXPECT_EQ(move > 0, phase.moves);
         EXPECT_GT(pressure, 0u);
         pf_stats stats{};
+        stats.struct_size = sizeof stats;
         ASSERT_EQ(pf_get_stats(sim.get(), &stats), PF_OK);
+        ASSERT_GT(stats.gpu_memory_bytes, 0u);
         if (memory == 0) memory = stats.gpu_memory_bytes;
         EXPECT_EQ(stats.gpu_memory_bytes, memory);
         const ParticleState state = read_all(sim.get());
