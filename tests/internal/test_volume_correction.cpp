@@ -149,10 +149,10 @@ TEST_F(VolumeCorrectionPass, OffMovesNothing) {
 // the same passes as the projection's (a pair solve): a dam break's particles stay those of the
 // two solves issued in turn within rounding (the solves agree within 3.1e-7 of
 // their largest value, test_solvers.cpp's PairSolve), and the pair issues fewer passes.
-// Measured on llvmpipe: the largest difference in position grows from 6e-8 m after one frame
-// to 2.9e-6 m after 10 (and to 1.5e-3 m after 20, where the two runs' rounding has sent a
-// particle into another cell: the flow amplifies rounding, so the comparison stops at 10);
-// the last step's solver passes 93 against 69 + 93.
+// Measured on llvmpipe: the largest difference in position is 2.1e-6 m after 10 frames; it
+// grows with the flow (against the two solves on separate instances: 6e-8 m after one frame,
+// 1.5e-3 m after 20, where one run's rounding had sent a particle into another cell), so the
+// comparison stops at 10. The last step's solver passes: 93 against 69 + 93.
 TEST_F(VolumeCorrectionPass, PairedWithTheProjectionMatchesItsOwnSolve) {
     std::vector<float> pos[2];
     uint64_t solve_dispatches[2] = {0, 0}, correction_dispatches[2] = {0, 0};
