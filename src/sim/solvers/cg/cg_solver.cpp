@@ -111,7 +111,7 @@ void ConjugateGradientSolver::solve_pair(PassRunner& runner, const PressureProbl
                                          const PressureProblem& second) {
     if (!pairs_) return;
     krylov(runner, first, false, &second);
-    control_.finish_pair(runner, stat_, first, second);
+    control_.finish(runner, stat_, first, &second);
 }
 
 void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& problem, bool another_round,

@@ -136,17 +136,19 @@ void SolveControl::begin_pair(PassRunner& runner, StatId stat, const PressurePro
                  Uniform::uint1(PF_LOC_SOLVER_CAP_SECOND, caps[1])}});
 }
 
-void SolveControl::residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct) {
-    runner.run({reduction(gl::ProgramId::solver_residual),
-                stat,
-                orbits_,
-                {{PF_SLOT_CELL_TYPE, &problem.cell_type},
-                 {PF_SLOT_RHS, &problem.rhs},
-                 {PF_SLOT_SOLVER_X, &problem.pressure},
-                 {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
-                 {PF_SLOT_SOLVER_STATE, &state_}},
-                direct ? Indirect{} : orbit_record(),
-                {dims_uniform()}});
+void SolveControl::residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct,
+                            const PressureProblem* second) {
+    Bindings binds{{PF_SLOT_CELL_TYPE, &problem.cell_type},
+                   {PF_SLOT_RHS, &problem.rhs},
+                   {PF_SLOT_SOLVER_X, &problem.pressure},
+                   {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
+                   {PF_SLOT_SOLVER_STATE, &state_}};
+    if (second) {
+        binds.add({PF_SLOT_SOLVER_RHS_SECOND, &second->rhs});
+        binds.add({PF_SLOT_SOLVER_X_SECOND, &second->pressure});
+    }
+    runner.run({program(gl::ProgramId::solver_residual, second != nullptr), stat, orbits_, binds,
+                direct ? Indirect{} : orbit_record(), {dims_uniform()}});
 }
 
 void SolveControl::check(PassRunner& runner, StatId stat, const PressureProblem& problem, uint32_t iterations) {
@@ -159,40 +161,14 @@ void SolveControl::check(PassRunner& runner, StatId stat, const PressureProblem&
                 {Uniform::uint1(PF_LOC_SOLVER_COUNT, partials_), Uniform::uint1(PF_LOC_SOLVER_ITERATIONS, iterations)}});
 }
 
-void SolveControl::finish(PassRunner& runner, StatId stat, const PressureProblem& problem) {
-    residual(runner, stat, problem, true);
-    runner.run({gl::ProgramId::solver_report,
-                stat,
-                PF_WORKGROUP_SIZE,
-                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
-                 {PF_SLOT_SOLVER_STATE, &state_},
-                 {PF_SLOT_SOLVER_STATUS, &problem.status}},
-                {},
-                {Uniform::uint1(PF_LOC_SOLVER_COUNT, partials_)}});
-}
-
-void SolveControl::finish_pair(PassRunner& runner, StatId stat, const PressureProblem& first,
-                               const PressureProblem& second) {
-    runner.run({program(gl::ProgramId::solver_residual, true),
-                stat,
-                orbits_,
-                {{PF_SLOT_CELL_TYPE, &first.cell_type},
-                 {PF_SLOT_RHS, &first.rhs},
-                 {PF_SLOT_SOLVER_X, &first.pressure},
-                 {PF_SLOT_SOLVER_RHS_SECOND, &second.rhs},
-                 {PF_SLOT_SOLVER_X_SECOND, &second.pressure},
-                 {PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
-                 {PF_SLOT_SOLVER_STATE, &state_}},
-                {},
-                {dims_uniform()}});
-    runner.run({gl::ProgramId::solver_report_pair,
-                stat,
-                PF_WORKGROUP_SIZE,
-                {{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
-                 {PF_SLOT_SOLVER_STATE, &state_},
-                 {PF_SLOT_SOLVER_STATUS, &first.status},
-                 {PF_SLOT_SOLVER_STATUS_SECOND, &second.status}},
-                {},
+void SolveControl::finish(PassRunner& runner, StatId stat, const PressureProblem& problem,
+                          const PressureProblem* second) {
+    residual(runner, stat, problem, true, second);
+    Bindings binds{{PF_SLOT_SOLVER_PARTIALS, &partials_buffer_},
+                   {PF_SLOT_SOLVER_STATE, &state_},
+                   {PF_SLOT_SOLVER_STATUS, &problem.status}};
+    if (second) binds.add({PF_SLOT_SOLVER_STATUS_SECOND, &second->status});
+    runner.run({program(gl::ProgramId::solver_report, second != nullptr), stat, PF_WORKGROUP_SIZE, binds, {},
                 {Uniform::uint1(PF_LOC_SOLVER_COUNT, partials_)}});
 }
 

@@ -7,7 +7,7 @@
 // through record(k) → check() now and then (stationary solvers) → finish(). A control made for
 // pairs (MGPCG's, `pairs`) also runs pair solves: two problems with the same cell types in the
 // same passes (shaders/solvers/common/solver_value.glsl), begin_pair() → iterations →
-// finish_pair(), each problem with its own scalars, tolerance, iteration cap and report. Once a check (or a
+// finish() of both, each problem with its own scalars, tolerance, iteration cap and report. Once a check (or a
 // Krylov scalar step) finds the tolerance met, it zeroes the records: every later iteration
 // of that solve dispatches no workgroups, and the CPU has not waited for anything.
 #pragma once
@@ -57,13 +57,13 @@ public:
     // Residual of `x` against the tolerance; `iterations` done since the previous check.
     // Skipped (indirectly) once converged.
     void check(PassRunner& runner, StatId stat, const PressureProblem& problem, uint32_t iterations);
-    // The final residual of the problem's pressure and the iteration count, into the status buffer.
-    void finish(PassRunner& runner, StatId stat, const PressureProblem& problem);
-    // The same for a pair solve of `first` and `second` (same cell types, neither with
+    // The final residual of the problem's pressure and the iteration count, into the status
+    // buffer; with `second`, of both problems of a pair solve, each into its own.
+    void finish(PassRunner& runner, StatId stat, const PressureProblem& problem, const PressureProblem* second = nullptr);
+    // begin() for a pair solve of `first` and `second` (same cell types, neither with
     // separation); each problem stops after its own `caps` of iterations.
     void begin_pair(PassRunner& runner, StatId stat, const PressureProblem& first, const PressureProblem& second,
                     const uint32_t caps[2]);
-    void finish_pair(PassRunner& runner, StatId stat, const PressureProblem& first, const PressureProblem& second);
 
     const gl::Buffer& state() const { return state_; }
     const gl::Buffer& partials() const { return partials_buffer_; }
@@ -73,7 +73,9 @@ public:
     glm::ivec3 dims() const { return grid_.size; }
 
 private:
-    void residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct);
+    // residual.comp over one problem, or both of a pair (second non-null).
+    void residual(PassRunner& runner, StatId stat, const PressureProblem& problem, bool direct,
+                  const PressureProblem* second = nullptr);
     // rhs_stats over one problem, or both of a pair (second non-null).
     void rhs_stats(PassRunner& runner, StatId stat, const PressureProblem& problem, const PressureProblem* second);
 
