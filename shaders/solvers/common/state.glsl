@@ -25,8 +25,7 @@ bool solve_converged() {
 float rhs_mean() { return state_float(PF_SOLVER_B_MEAN); }
 
 #ifdef PF_VALUE_TYPES
-// Scalar `word` of each problem; 0 for a problem of a pair that has converged (its CG steps no
-// longer move it: alpha and beta read 0 there).
+// Scalar `word` of each problem.
 value_t state_value(uint word) {
 #if PF_PAIR
     return vec2(state_float(word), state_float(PF_SOLVER_SECOND + word));
@@ -34,6 +33,8 @@ value_t state_value(uint word) {
     return state_float(word);
 #endif
 }
+// The same, 0 for a problem of a pair that has converged (its CG steps no longer move it: alpha
+// and beta read 0 there).
 value_t live_state_value(uint word) {
 #if PF_PAIR
     return vec2(solve_converged_in(0u) ? 0.0 : state_float(word),
