@@ -6,23 +6,24 @@
 source scripts/device_env.sh
 R=/tmp/res; mkdir -p $R
 B=build-dev/pf_bench
+part=${1:-all}  # rounds | rest | all: two calls fit the device's 10-minute limit
 run() {
   local lib=$1 n=$2; shift 2
   local path=$PWD/build-dev; [ "$lib" = before ] && path=$PWD/build-dev/base
   LD_LIBRARY_PATH=$path:$LD_LIBRARY_PATH timeout 300 $B "$@" --json $R/${lib}_$n.json > $R/${lib}_$n.txt 2>&1
 }
-for round in 1 2; do for lib in before after; do
+[ $part != rest ] && for round in 1 2; do for lib in before after; do
   run $lib one_projection_r$round --warmup 20 --steps 100 --gpu-timing step --preset balanced --max-substeps 1 original_24 dam_break_1m
   run $lib fast_r$round --warmup 20 --steps 100 --gpu-timing step --preset fast original_24 dam_break_1m
   run $lib balanced_r$round --warmup 20 --steps 100 --gpu-timing step --preset balanced original_24 dam_break_1m
 done; done
-for lib in before after; do
+[ $part != rounds ] && for lib in before after; do
   run $lib kernels_one_projection --warmup 20 --steps 40 --gpu-timing kernels --preset balanced --max-substeps 1 dam_break_1m
   run $lib balanced_10m_w150 --warmup 150 --steps 40 --gpu-timing step --preset balanced dam_break_10m
 done
-timeout 400 build-dev/pf_internal_tests --gtest_filter='PairSolve.*:VolumeCorrectionPass.*:Mgpcg/*' \
+[ $part != rounds ] && timeout 300 build-dev/pf_internal_tests --gtest_filter='PairSolve.*:VolumeCorrectionPass.*:Mgpcg/*' \
   --gtest_output=json:$R/internal_tests.json > $R/internal_tests.txt 2>&1
-tar -C /tmp -czf $OUT/res.tgz res
+tar -C /tmp -czf $OUT/res_$part.tgz res
 cd $R && python3 -c "
 import json,glob
 for f in sorted(glob.glob('*.json')):
