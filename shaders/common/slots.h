@@ -21,8 +21,12 @@
  * writes it), free_surface, velocity_update and volume_correction_move, none of which binds the
  * cell counts */
 #define PF_SLOT_FACE_FRACTION 5
-/* APIC affine vectors (3 vec4 per particle), bound by P2G and G2P only: neither binds cell_type */
+/* APIC affine vectors (3 vec4 per particle), bound by P2G, G2P and the effects that add or remove
+ * particles: none of them binds cell_type at PF_SLOT_CELL_TYPE */
 #define PF_SLOT_PARTICLE_AFFINE 6
+/* APIC's G2P with obstacles (common/solid_walls.glsl): the cell types, on the slot of FLIP's old
+ * face velocities, which APIC does not read */
+#define PF_SLOT_APIC_CELL_TYPE 3
 /* G2P in the tiled P2G's order (common/particle_order.glsl): the live particle slots grouped by
  * tile; G2P binds neither face accumulators nor cell counts */
 #define PF_SLOT_PARTICLE_ORDER 4

@@ -4,7 +4,8 @@
 // inside such a wall is filled by extrapolation from both of its sides, so a particle read the
 // liquid beyond it (a still pool behind such a wall reached 2 m/s beside a jet). A thicker wall's
 // inner faces are filled from their own side first, and its stencil is left as it was. The
-// includer declares cell_type[] (PF_SLOT_CELL_TYPE) when PF_SOLID_WALLS is 1.
+// includer declares cell_type[] when PF_SOLID_WALLS is 1 (at PF_SLOT_CELL_TYPE, or
+// PF_SLOT_APIC_CELL_TYPE beside APIC's affine vectors).
 #ifndef PF_SOLID_WALLS
 #define PF_SOLID_WALLS 0
 #endif

@@ -15,7 +15,7 @@ layout(std430, binding = PF_SLOT_FACE_VEL) readonly buffer FaceVel { float face_
 layout(std430, binding = PF_SLOT_PARTICLE_AFFINE) writeonly buffer Affine { vec4 affine[]; };
 layout(std430, binding = PF_SLOT_STATUS) buffer Status { uint status[]; };
 #if PF_SOLID_WALLS
-layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer Type { uint cell_type[]; };
+layout(std430, binding = PF_SLOT_APIC_CELL_TYPE) readonly buffer Type { uint cell_type[]; };  // affine's slot is 6
 #endif
 #include "common/solid_walls.glsl"
 #include "common/particle_velocity.glsl"

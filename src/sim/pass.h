@@ -45,10 +45,14 @@ public:
     }
     // One more binding, for passes whose optional buffers depend on the program chosen.
     void add(const Bind& b) {
+        if (mask() & (1u << b.slot)) twice_ |= 1u << b.slot;  // the later would replace the earlier
         if (count_ < binds_.size()) binds_[count_++] = b;
         else overflow_ = true;  // PassRunner refuses the pass
     }
     bool overflow() const { return overflow_; }
+    // Slots named twice (PassRunner refuses the pass: one of the kernel's blocks would read or
+    // write the other's buffer).
+    uint32_t twice() const { return twice_; }
     const Bind* begin() const { return binds_.data(); }
     const Bind* end() const { return binds_.data() + count_; }
     uint32_t mask() const {
@@ -60,6 +64,7 @@ public:
 private:
     std::array<Bind, PF_SLOT_COUNT> binds_{};
     uint32_t count_ = 0;
+    uint32_t twice_ = 0;
     bool overflow_ = false;
 };
 
@@ -120,6 +125,7 @@ public:
 private:
     std::array<Uniform, kMaxUniforms> values_{};
     uint32_t count_ = 0;
+    uint32_t twice_ = 0;
     bool overflow_ = false;
 };
 

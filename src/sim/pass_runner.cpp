@@ -111,17 +111,19 @@ void PassRunner::issue(const Pass& pass, StatId stat, bool barrier, bool& record
     const uint32_t missing = used_slots_[pid] & ~pass.binds.mask();
     const uint32_t unset = used_uniforms_[pid] & ~pass.uniforms.mask();
     const bool overflow = pass.binds.overflow() || pass.uniforms.overflow();
-    if (!program || missing || unset || overflow) {
+    const uint32_t twice = pass.binds.twice();
+    if (!program || missing || unset || overflow || twice) {
         ++binding_errors_;
         if (!reported_[pid]) {
             reported_[pid] = true;
             std::string what = !program   ? " was run before its program was prepared"
                                : overflow ? " names more bindings or uniforms than a pass holds"
+                               : twice    ? " binds two buffers to one storage slot (mask " + gl::hex(twice) + ")"
                                : missing  ? " leaves storage slots unbound (mask " + gl::hex(missing) + ")"
                                           : " leaves uniform locations unset (mask " + gl::hex(unset) + ")";
             log_.error(PF_ERROR_INVALID_STATE, std::string("internal: pass ") + gl::program_info(pass.program).id + what);
         }
-        if (!program || overflow) return;
+        if (!program || overflow || twice) return;
     }
     set_uniforms(program, pid, pass.uniforms);
     // Every pass may read what earlier passes wrote; an indirect one also reads its workgroup

@@ -557,7 +557,10 @@ void Simulation::run_g2p() {
                                                                 : Bind{PF_SLOT_FACE_VEL_OLD, &face_vel_old_};
     Bindings binds{pos, vel, face_vel, last, status};
     if (ordered) binds.add({PF_SLOT_PARTICLE_ORDER, g2p_order_});
-    if (desc_.features & PF_FEATURE_OBSTACLES) binds.add({PF_SLOT_CELL_TYPE, &cell_type_});
+    if (desc_.features & PF_FEATURE_OBSTACLES) {
+        const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;  // its affine vectors hold PF_SLOT_CELL_TYPE
+        binds.add({apic ? PF_SLOT_APIC_CELL_TYPE : PF_SLOT_CELL_TYPE, &cell_type_});
+    }
     r.run({g2p, stat_.g2p, np, binds});
 }
 

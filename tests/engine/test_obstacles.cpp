@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <string>
 #include <vector>
@@ -626,6 +627,42 @@ INSTANTIATE_TEST_SUITE_P(EveryFormat, SdfFormats,
                                  default: return std::string("r16") + separation;
                              }
                          });
+
+// An obstacle far from the liquid changes nothing the liquid does, with either transfer: its
+// cells and faces lie outside every stencil and extrapolated layer a particle reads, and the
+// obstacle permutations of G2P and the advection read the cell types only to stop at SOLID cells.
+// Until 2026-12-05 APIC's G2P with obstacles bound the cell types to the affine vectors' slot:
+// the affine vectors went into the cell-type buffer (APIC moved as PIC, and the advection read
+// the overwritten types), and the cell-type reads raced with those writes (two runs of one scene
+// differed on a multi-threaded rasteriser).
+TEST_F(ObstacleArguments, AFarObstacleChangesNothingWithEitherTransfer) {
+    for (pf_transfer transfer : {PF_TRANSFER_PIC_FLIP, PF_TRANSFER_APIC}) {
+        SCOPED_TRACE("transfer " + std::to_string(transfer));
+        ParticleState runs[2];
+        for (int with_obstacle = 0; with_obstacle < 2; ++with_obstacle) {
+            pf_sim_desc d = test_desc(16, 14, 6, 0.05f);
+            d.params.transfer = transfer;
+            d.features = with_obstacle ? PF_FEATURE_OBSTACLES : 0u;
+            SimPtr sim = create(d);
+            ASSERT_TRUE(sim);
+            if (with_obstacle) {
+                const pf_obstacle ball = sphere(0.65, 0.6, 0.15, 0.05);  // 7 cells above the liquid
+                ASSERT_EQ(pf_add_obstacle(sim.get(), &ball, nullptr), PF_OK) << last_log();
+            }
+            const float lo[3] = {0.0f, 0.0f, 0.0f}, hi[3] = {0.4f, 0.25f, 0.3f}, v[3] = {0.4f, 0.0f, 0.2f};
+            ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, v), PF_OK);
+            for (int f = 0; f < 12; ++f) ASSERT_EQ(pf_step(sim.get(), kFrame), PF_OK) << last_log();
+            runs[with_obstacle] = read_all(sim.get());
+        }
+        ASSERT_EQ(runs[0].count(), runs[1].count());
+        size_t differ = 0;
+        for (size_t i = 0; i < runs[0].pos.size(); ++i) {
+            differ += std::memcmp(&runs[0].pos[i], &runs[1].pos[i], 4) != 0;
+            differ += std::memcmp(&runs[0].vel[i], &runs[1].vel[i], 4) != 0;
+        }
+        EXPECT_EQ(differ, 0u) << "position and velocity floats that differ with the far obstacle";
+    }
+}
 
 TEST_F(ObstacleArguments, BadObstaclesAreRefusedAndChangeNothing) {
     pf_sim_desc d = test_desc(8, 8, 8, 0.05f);

@@ -142,6 +142,11 @@ TEST_F(PassPipeline, AMissingBindingIsCaught) {
     const Uniform u = Uniform::uint1(PF_LOC_FILL_COUNT, 64);
     runner.run({gl::ProgramId::fill, stat, 64, {{PF_SLOT_FILL, &a}}, {}, {u, u, u, u, u, u, u}});
     EXPECT_EQ(runner.binding_errors(), 4u);
+    // Two buffers on one slot are refused: the later would take the earlier's place, and the
+    // kernel's blocks on that slot would read or write it (APIC's G2P with obstacles once wrote
+    // its affine vectors into the cell types that way).
+    runner.run({gl::ProgramId::classify, stat, 64, {{PF_SLOT_CELL_COUNT, &a}, {PF_SLOT_CELL_TYPE, &b}, {PF_SLOT_CELL_TYPE, &a}}});
+    EXPECT_EQ(runner.binding_errors(), 5u);
 }
 
 // Passes and copies run under a Recording are kept, not issued; run_interleaved issues both
