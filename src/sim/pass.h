@@ -125,7 +125,6 @@ public:
 private:
     std::array<Uniform, kMaxUniforms> values_{};
     uint32_t count_ = 0;
-    uint32_t twice_ = 0;
     bool overflow_ = false;
 };
 
