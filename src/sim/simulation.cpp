@@ -558,8 +558,9 @@ void Simulation::run_g2p() {
     Bindings binds{pos, vel, face_vel, last, status};
     if (ordered) binds.add({PF_SLOT_PARTICLE_ORDER, g2p_order_});
     if (desc_.features & PF_FEATURE_OBSTACLES) {
-        const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;  // its affine vectors hold PF_SLOT_CELL_TYPE
-        binds.add({apic ? PF_SLOT_APIC_CELL_TYPE : PF_SLOT_CELL_TYPE, &cell_type_});
+        // APIC's affine vectors hold PF_SLOT_CELL_TYPE there.
+        const GLuint slot = desc_.params.transfer == PF_TRANSFER_APIC ? PF_SLOT_APIC_CELL_TYPE : PF_SLOT_CELL_TYPE;
+        binds.add({slot, &cell_type_});
     }
     r.run({g2p, stat_.g2p, np, binds});
 }
