@@ -54,7 +54,15 @@ void main() {
     int o = int(flat_id());
     if (o < orbit_count()) {
         ivec3 a = orbit_origin(o);
-        v = (orbit_member(a, 0) + orbit_member(a, 1)) + (orbit_member(a, 2) + orbit_member(a, 3));
+        // A statement a member, not one expression of four calls: a contribution may write
+        // (mg_smooth_zstats.comp's in-place half-sweep), and NVIDIA's GL ran the expression
+        // slower, and summed wrongly once a contribution read back its own write
+        // (docs/performance.md, "An orbit's cells in four statements").
+        sums_t m0 = orbit_member(a, 0);
+        sums_t m1 = orbit_member(a, 1);
+        sums_t m2 = orbit_member(a, 2);
+        sums_t m3 = orbit_member(a, 3);
+        v = (m0 + m1) + (m2 + m3);
     }
 #endif
     store_workgroup_sums(v, groups);
