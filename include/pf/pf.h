@@ -198,7 +198,9 @@ typedef enum pf_advection {
                                        whole moves between, so positions and velocities still meet at the
                                        frame's end. Ballistic motion is exact and the collapse of a column
                                        lags less at large CFL (docs/accuracy.md); one extra advection pass a
-                                       pf_step */
+                                       pf_step. For large CFLs: the substeps are also at least what the
+                                       liquid's strain asks (pf_stats.strain), and the volume correction
+                                       runs in every substep (docs/design.md §5) */
     PF_ADVECTION_RK2_OFFSET = 4,  /**< RK2's path through the grid velocity plus the particle's own difference
                                        from it at the substep's start: FLIP's velocity where the grid is uniform,
                                        bent by the grid's change along the path (walls, obstacles); holds the
@@ -249,7 +251,8 @@ typedef struct pf_sim_params {
     pf_transfer transfer;         /**< grid-particle transfer; default (0) PF_TRANSFER_PIC_FLIP */
     pf_advection advection;       /**< particle integrator; default (0) PF_ADVECTION_EULER */
     float volume_correction;      /**< particle-density volume correction in [0, 1] (docs/design.md §4.5): once
-                                       per pf_step (and per 1/60 s of simulated time in longer steps),
+                                       per pf_step (and per 1/60 s of simulated time in longer steps; every
+                                       substep with PF_ADVECTION_LEAPFROG),
                                        particles move out of FLUID cells holding more than
                                        fill_particles_per_cell along the gradient of a potential solved for
                                        the fraction volume_correction of that excess, against PIC/FLIP's slow
@@ -509,6 +512,11 @@ typedef struct pf_stats {
                                            that step: above pf_viscosity.tolerance when a solve stopped short
                                            (out of iterations, or issued fewer than it needed: the next steps
                                            issue more) (0 while it is off) */
+    float strain;                     /**< the liquid's strain in step metrics_step, 1/s^2: P = (tr(G^2) - tr(G)^2) / 2
+                                           of the velocity gradient G summed over interior FLUID cells, divided by
+                                           fluid_cells. A straight move of dt compresses the liquid by about dt^2 P
+                                           (rotation makes it negative); with PF_ADVECTION_LEAPFROG it sets a lower
+                                           bound on the substeps (docs/design.md §5) */
 } pf_stats;
 
 /** One entry of the per-pass statistics list (pf_get_pass_stats). The list is built at run

@@ -362,6 +362,7 @@ class Stats(_Struct):
         ("render_whitewater_gpu_ms", ctypes.c_float),
         ("viscosity_iterations", ctypes.c_uint32),
         ("viscosity_residual", ctypes.c_float),
+        ("strain", ctypes.c_float),
     ]
 
 

@@ -156,11 +156,9 @@ def test_whitewater_layout(c_layout):
 
 def test_viscosity_layout(c_layout):
     # pf_viscosity as pf.h declares it (coupling_rounds appended to its first 20 bytes), and the
-    # solve's two figures appended to pf_stats last, after whitewater's.
+    # solve's two figures appended to pf_stats after whitewater's.
     assert c_layout[("size", "pf_viscosity")][0] == ctypes.sizeof(t.Viscosity) == 24
     check_appended(c_layout, t.Viscosity, "pf_viscosity", "free_slip", ["coupling_rounds"])
-    names = [name for name, _ in t.Stats._fields_]
-    assert names[-2:] == ["viscosity_iterations", "viscosity_residual"]
     check_appended(c_layout, t.Stats, "pf_stats", "render_whitewater_gpu_ms",
                    ["viscosity_iterations", "viscosity_residual"])
     assert c_layout[("value", "PF_FEATURE_VISCOSITY")][0] == t.Feature.VISCOSITY == 1 << 7
@@ -169,10 +167,16 @@ def test_viscosity_layout(c_layout):
 
 def test_surface_tension_layout(c_layout):
     # pf_surface_tension as pf.h declares it: struct_size, then the tension. It adds nothing to
-    # pf_stats (the substeps it costs show in pf_stats.substeps).
+    # pf_stats (the substeps it costs show in pf_stats.substeps; the strain after the viscosity's
+    # figures is the step clock's).
     assert c_layout[("size", "pf_surface_tension")][0] == ctypes.sizeof(t.SurfaceTension) == 8
     assert c_layout[("field", "pf_surface_tension.tension")] == (4, 4)
     names = [name for name, _ in t.Stats._fields_]
-    assert names[-1] == "viscosity_residual"
+    assert names[-1] == "strain"
     assert c_layout[("value", "PF_FEATURE_SURFACE_TENSION")][0] == t.Feature.SURFACE_TENSION == 1 << 8
     assert c_layout[("value", "PF_FEATURE_ALL")][0] == t.Feature.ALL
+
+
+def test_strain_layout(c_layout):
+    # pf_stats.strain appended last, after the viscosity's two figures.
+    check_appended(c_layout, t.Stats, "pf_stats", "viscosity_residual", ["strain"])

@@ -23,4 +23,4 @@ PF_UNIFORM(float, rest_particles)     /* particles per cell at rest density (des
 PF_UNIFORM(float, volume_correction)  /* pressure setup: fraction of a cell's excess particle density removed per substep */
 PF_UNIFORM(uint, ghost_fluid)        /* 1: the free surface sits where the particles put it (PF_FREE_SURFACE_GHOST_FLUID) */
 PF_UNIFORM(float, drift_dt)           /* length of this pass's particle move, s: dt, or dt/2 for a leapfrog half move */
-PF_UNIFORM(uint, pad2)
+PF_UNIFORM(float, correction_reach)   /* the volume correction's largest move, cells an axis */

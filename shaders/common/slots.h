@@ -258,6 +258,7 @@
 #define PF_STATUS_VISCOSITY_RESIDUAL 16 /* largest final relative residual of a viscosity solve (float bits) */
 #define PF_STATUS_VISCOSITY_PROJECTION_RESIDUAL 17 /* the viscosity's second projection: largest final residual */
 #define PF_STATUS_VISCOSITY_PROJECTION_ITERATIONS 18 /* and most iterations of its solves' first round */
+#define PF_STATUS_STRAIN 19 /* sum of the strain P over interior FLUID cells / FLUID cells, 1/s^2 */
 #define PF_STATUS_WORDS 20
 
 /* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */

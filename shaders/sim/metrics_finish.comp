@@ -14,6 +14,7 @@ shared uint s_fluid[PF_WORKGROUP_SIZE];
 shared float s_height[PF_WORKGROUP_SIZE];  // sum of -g . (x - origin)
 shared float s_interior[PF_WORKGROUP_SIZE];  // sum of count / rest over interior cells
 shared uint s_interior_cells[PF_WORKGROUP_SIZE];
+shared float s_strain[PF_WORKGROUP_SIZE];  // sum of the strain P over interior cells
 
 void main() {
     uint lid = gl_LocalInvocationIndex;
@@ -22,12 +23,14 @@ void main() {
     float height = 0.0;
     float interior = 0.0;
     uint interior_cells = 0u;
+    float strain = 0.0;
     for (uint g = lid; g < u_groups; g += uint(PF_WORKGROUP_SIZE)) {
-        vec4 grid = partials[2u * g];
-        sum += vec4(grid.x, 0.0, grid.w, partials[2u * g + 1u].x);
+        vec4 grid = partials[3u * g];
+        sum += vec4(grid.x, 0.0, grid.w, partials[3u * g + 1u].x);
         sum.y = max(sum.y, grid.y);
         fluid += uint(grid.z);
-        vec4 particles = partials[2u * g + 1u];
+        vec4 particles = partials[3u * g + 1u];
+        strain += partials[3u * g + 2u].x;
         height += particles.y;
         interior += particles.z;
         interior_cells += uint(particles.w);
@@ -37,6 +40,7 @@ void main() {
     s_height[lid] = height;
     s_interior[lid] = interior;
     s_interior_cells[lid] = interior_cells;
+    s_strain[lid] = strain;
     barrier();
     for (uint stride = uint(PF_WORKGROUP_SIZE) / 2u; stride > 0u; stride >>= 1u) {
         if (lid < stride) {
@@ -46,6 +50,7 @@ void main() {
             s_height[lid] += s_height[lid + stride];
             s_interior[lid] += s_interior[lid + stride];
             s_interior_cells[lid] += s_interior_cells[lid + stride];
+            s_strain[lid] += s_strain[lid + stride];
         }
         barrier();
     }
@@ -63,4 +68,7 @@ void main() {
     status[PF_STATUS_PARTICLE_COUNT] = sim.particle_count;
     uint inner = s_interior_cells[0];
     status[PF_STATUS_INTERIOR_DENSITY] = floatBitsToUint(inner > 0u ? s_interior[0] / float(inner) : 0.0);
+    // Over every FLUID cell: a surface cell counts as unstrained (the straight moves' compression
+    // of the whole liquid; the step clock's strain limit was measured with this mean).
+    status[PF_STATUS_STRAIN] = floatBitsToUint(cells > 0u ? s_strain[0] / float(cells) : 0.0);
 }

@@ -4,8 +4,9 @@
 // touched, so the correction never enters FLIP's velocity difference and adds no kinetic
 // energy. Walls and faces beside SOLID cells do not move (d = 0); q = 0 at the free surface,
 // so a face between FLUID and AIR divides its difference by theta as the velocity update does. A
-// displacement is kept within half a cell per axis, then the wall clamp of every advection
-// scheme applies. PF_ORDERED walks the particles in the tiled P2G's order, as G2P does on large
+// displacement is kept within sim.correction_reach cells per axis (half a cell; a quarter where
+// the correction runs in every projection: src/sim/volume_correction.h), then the wall clamp of
+// every advection scheme applies. PF_ORDERED walks the particles in the tiled P2G's order, as G2P does on large
 // grids (common/particle_order.glsl): its reads of the potential are gathers too.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
@@ -44,6 +45,6 @@ void main() {
         }
         d[axis] = mirror_sum(t);  // mirrored particles move by mirrored displacements, bit for bit
     }
-    d = clamp(d, vec3(-0.5 * sim.dx), vec3(0.5 * sim.dx));
+    d = clamp(d, vec3(-sim.correction_reach * sim.dx), vec3(sim.correction_reach * sim.dx));
     pos[i] = vec4(keep_in_domain(x + d), 0.0);
 }

@@ -120,7 +120,7 @@ pf_result Simulation::init() {
     runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM, binaries_.get());
     requests_ = std::make_unique<ParticleReadback>(gl_);
     const uint64_t metric_items = std::max<uint64_t>(uint64_t(cells_), desc_.max_particles);
-    metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 32, GL_DYNAMIC_COPY,
+    metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 48, GL_DYNAMIC_COPY,
                                    "metrics_partials",
                                    desc_.max_particles >= uint64_t(cells_) ? gl::Sizing::particles : gl::Sizing::other);
     if (pf_result r = gl::check_allocated(gl_, log_, "pf_create: allocating " + std::to_string(memory_.bytes >> 20) +
@@ -353,6 +353,7 @@ void Simulation::upload_uniforms(float dt) {
     u.ghost_fluid = desc_.params.free_surface == PF_FREE_SURFACE_GHOST_FLUID ? 1u : 0u;
     u.rest_particles = float(desc_.fill_particles_per_cell);
     u.volume_correction = desc_.params.volume_correction;
+    u.correction_reach = VolumeCorrection::reach_cells(desc_.params, dt);
     uniforms_.upload(0, sizeof(SimUniforms), &u);
     if (gpu_count_) copy_count_to_uniforms();  // the kernels compare with the GPU's live count
 }
@@ -612,6 +613,9 @@ ProjectionCount Simulation::substeps_for(float frame_dt) const {
         if (bound.max_dt > 0.0f && (demand.max_dt == 0.0f || bound.max_dt < demand.max_dt)) demand.max_dt = bound.max_dt;
     }
     demand.acceleration = accel;
+    // Leapfrog moves particles along straight lines at a large projection CFL; the strain limits
+    // the compression that makes.
+    if (desc_.params.advection == PF_ADVECTION_LEAPFROG) demand.strain = cfl_strain_;
     return projections_for(demand);
 }
 
@@ -645,7 +649,9 @@ pf_result Simulation::step(float frame_dt) {
     run_count_stage(EffectStage::before_substeps);
     // The volume correction: in the first substep, then again whenever another
     // VolumeCorrection::kInterval of simulated time has passed (compression grows with time,
-    // not with frames: at 60 frames a second it runs once a step).
+    // not with frames: at 60 frames a second it runs once a step), or in every one
+    // (VolumeCorrection::every_projection).
+    const bool correct_always = VolumeCorrection::every_projection(desc_.params);
     const float substep_dt = frame_dt / float(substeps);
     float since_correction = 0.0f;
     // Leapfrog: the projections see the positions half a substep ahead of the velocities, and the
@@ -653,7 +659,7 @@ pf_result Simulation::step(float frame_dt) {
     const bool leapfrog = desc_.params.advection == PF_ADVECTION_LEAPFROG;
     if (leapfrog) run_half_move();
     for (uint32_t s = 0; s < substeps; ++s) {
-        const bool correct = s == 0 || since_correction >= VolumeCorrection::kInterval;
+        const bool correct = s == 0 || correct_always || since_correction >= VolumeCorrection::kInterval;
         if (correct) since_correction = 0.0f;
         run_substep(correct, leapfrog && s + 1 == substeps);
         since_correction += substep_dt;
@@ -723,6 +729,11 @@ pf_result Simulation::run_volume_correction_for_test() {
     run_one_step_for_test(0.01f, [&] {
         volume_correction_.run(*runner_, *solvers_in_use_.pressure, desc_.params, correction_inputs());
     });
+    return PF_OK;
+}
+
+pf_result Simulation::run_metrics_for_test() {
+    run_one_step_for_test(0.01f, [&] { run_metrics(); });
     return PF_OK;
 }
 
@@ -829,6 +840,7 @@ void Simulation::take_lagged_status(int64_t step) {
     const StepStatus& got = received_[s];
     if (!got.valid || got.step != measured) return;  // no such step (the first ones)
     cfl_speed_ = got.max_speed;
+    cfl_strain_ = got.strain;
     cfl_step_ = measured;
     // A fixed-point sum overflowed in a step run at today's range: widen it from this step on
     // (the overflowing step's result is flagged; integer sums stay deterministic).
@@ -845,6 +857,7 @@ void Simulation::read_status_slot(int s) const {
     got.valid = 1;
     got.step = int64_t(fence_step_[s]);
     std::memcpy(&got.max_speed, &words[PF_STATUS_MAX_SPEED], sizeof(float));
+    std::memcpy(&got.strain, &words[PF_STATUS_STRAIN], sizeof(float));
     got.flags = words[PF_STATUS_FLAGS];
     // The GPU's live count then, plus what was added since, bounds today's count (sinks
     // only lower it).
@@ -878,6 +891,7 @@ void Simulation::read_status_slot(int s) const {
         m.potential_energy = float(double(height_energy) - double(live) * lowest_potential_per_particle());
         m.fluid_cells = words[PF_STATUS_FLUID_CELLS];
         std::memcpy(&m.interior_density, &words[PF_STATUS_INTERIOR_DENSITY], sizeof(float));
+        std::memcpy(&m.strain, &words[PF_STATUS_STRAIN], sizeof(float));
         // Mass over density: the particles' volume at rest density, divided by the density they
         // hold where no free surface thins the count (docs/design.md §4.11).
         const double rest_volume = double(live) / desc_.fill_particles_per_cell * std::pow(double(desc_.cell_size), 3);
@@ -1290,6 +1304,7 @@ void Simulation::stats(pf_stats& out) const {
     out.potential_energy = metrics_.potential_energy;
     out.interior_density = metrics_.interior_density;
     out.liquid_volume = metrics_.liquid_volume;
+    out.strain = metrics_.strain;
     if (metrics_first_set_ && metrics_first_.liquid_volume > 0.0f)
         out.liquid_volume_drift = float(double(metrics_.liquid_volume) / metrics_first_.liquid_volume - 1.0);
     if (energy_first_set_ && energy_first_ > 0.0)

@@ -135,6 +135,9 @@ public:
     // Test access: the volume correction alone, on the cell types and counts as they are (set
     // them with write_grid_for_test); its potential is read with read_volume_potential.
     pf_result run_volume_correction_for_test();
+    // Test access: the metrics pass alone on the grid and particles as they are (set them with
+    // write_grid_for_test); its words are read with read_grid(GridBuffer::status).
+    pf_result run_metrics_for_test();
     std::vector<float> read_volume_potential() const;
     // Test access: the current solver alone on a given system (cell types, right-hand side;
     // `pressure` is the warm start and receives the solution). The status buffer's solver words
@@ -413,9 +416,11 @@ private:
         int64_t step = 0;
         float max_speed = 0.0f;
         uint32_t flags = 0;
+        float strain = 0.0f;    // PF_STATUS_STRAIN
     };
     mutable StepStatus received_[kReadbackSlots] = {};
     float cfl_speed_ = 0.0f;                  // the max speed the CFL condition starts from...
+    float cfl_strain_ = 0.0f;                 // ...the strain its straight-move limit starts from...
     // Step numbers the step logic compares are signed: a restored snapshot places them before
     // the restoring simulation's first step when it has run fewer (src/sim/snapshot.cpp).
     int64_t cfl_step_ = 0;                    // ...measured at the end of this step
@@ -428,6 +433,8 @@ private:
     pf_pressure_solver fence_solver_[kReadbackSlots] = {};  // the solver of each readback's step
     bool fence_capped_[kReadbackSlots] = {};                 // whether the budget cut its solves' iterations
     uint64_t fence_added_[kReadbackSlots] = {};             // and added_total_ then
+    uint32_t fence_substeps_[kReadbackSlots] = {};  // SCRATCH
+    mutable float xc_prev_ = 0.0f, xc_cur_ = 0.0f; mutable uint32_t xn_ = 1;  // SCRATCH
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
     // Adds PF_FLAG_* bits, logging one warning for each bit not already set.
     void raise_flags(uint32_t bits) const;
@@ -437,6 +444,7 @@ private:
         float potential_energy = 0;  // from the domain's lowest corner along g, J
         float interior_density = 0;  // mean count / rest over interior FLUID cells (0: none)
         float liquid_volume = 0;     // the particles' rest volume / interior_density, m^3
+        float strain = 0;            // PF_STATUS_STRAIN, 1/s^2
         uint32_t fluid_cells = 0;
     };
     mutable Metrics metrics_{};
@@ -450,7 +458,7 @@ private:
     void restart_energy_reference();
     double particle_mass() const;                   // kg
     double lowest_potential_per_particle() const;   // m g . x at the domain's lowest corner, J
-    gl::Buffer metrics_partials_;          // two vec4 per workgroup of the metrics pass
+    gl::Buffer metrics_partials_;          // three vec4 per workgroup of the metrics pass
     uint64_t flags_cleared_at_step_ = 0;   // pf_clear_flags: ignore flags read back from older steps
     float added_speed_ = 0.0f;             // fastest particle added since...
     int64_t added_at_step_ = 0;            // ...this step (no readback covers it yet)

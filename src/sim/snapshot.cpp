@@ -29,7 +29,8 @@ constexpr char kMagic[8] = {'p', 'f', 'l', 'i', 'p', 's', 'n', 'p'};
 // and what its recent solves needed (2026-11-27).
 // 6: the effects' state holds the surface tension's settings (2026-11-27).
 // 7: the viscosity settings gained coupling_rounds (2026-11-28).
-constexpr uint32_t kFormat = 7;
+// 8: the readbacks and the CFL state gained the strain (PF_STATUS_STRAIN, 2026-12-05).
+constexpr uint32_t kFormat = 8;
 
 struct Header {
     char magic[8];
@@ -84,7 +85,7 @@ struct Simulation::SnapshotState {
     // The readbacks the next steps take in (Simulation::take_lagged_status), by slot, and the
     // CFL input in use: the continuation chooses the same substeps as the original.
     int64_t cfl_step;
-    float cfl_speed;
+    float cfl_speed, cfl_strain;
     StepStatus received[kReadbackSlots];
     // The newest status words read back, which effects learn from (FrameInfo::status).
     uint32_t status_words[PF_STATUS_WORDS];
@@ -116,6 +117,7 @@ std::vector<uint8_t> Simulation::snapshot_host_state() const {
     s.fill_calls = fill_calls_;
     s.cfl_step = cfl_step_;
     s.cfl_speed = cfl_speed_;
+    s.cfl_strain = cfl_strain_;
     for (int k = 0; k < kReadbackSlots; ++k) s.received[k] = received_[k];
     std::copy(status_words_.begin(), status_words_.end(), std::begin(s.status_words));
     w.put(s);
@@ -229,9 +231,10 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
         s.hydrostatic_start_pending > 1 || s.steps < s.status_step)
         return bad("its step state is invalid");
     const auto speed_ok = [](float v) { return std::isfinite(v) && v >= 0.0f; };
-    bool readbacks_ok = speed_ok(s.cfl_speed);
-    for (const StepStatus& r : s.received) readbacks_ok = readbacks_ok && r.valid <= 1 && (r.valid == 0 || speed_ok(r.max_speed));
-    if (!readbacks_ok) return bad("its CFL state (readback slots, speeds) is invalid");
+    bool readbacks_ok = speed_ok(s.cfl_speed) && std::isfinite(s.cfl_strain);
+    for (const StepStatus& r : s.received)
+        readbacks_ok = readbacks_ok && r.valid <= 1 && (r.valid == 0 || (speed_ok(r.max_speed) && std::isfinite(r.strain)));
+    if (!readbacks_ok) return bad("its CFL state (readback slots, speeds, strains) is invalid");
     if (effect_count != kEffectCount) return bad("it holds " + std::to_string(effect_count) + " effects, this build has " +
                                                  std::to_string(kEffectCount));
     std::vector<std::pair<const uint8_t*, size_t>> effect_bytes;
@@ -320,6 +323,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     added_at_step_ = rebase_signed(s.added_at_step);
     cfl_step_ = rebase_signed(s.cfl_step);
     cfl_speed_ = s.cfl_speed;
+    cfl_strain_ = s.cfl_strain;
     std::copy(std::begin(s.status_words), std::end(s.status_words), status_words_.begin());
     for (StepStatus& r : received_) r = StepStatus{};
     std::fill(std::begin(fence_capped_), std::end(fence_capped_), false);

@@ -8,6 +8,7 @@ namespace pf {
 ProjectionCount projections_for(const ProjectionDemand& d) {
     double fewest = 1.0;
     if (d.max_dt > 0.0f) fewest = std::max(fewest, std::ceil(double(d.frame_dt) / double(d.max_dt)));
+    if (d.strain > 0.0f) fewest = std::max(fewest, std::ceil(double(d.frame_dt) * d.strain / kStrainRate));
     const float v_est = std::max(d.speed + d.acceleration * d.frame_dt, d.imposed_speed);
     const double wanted =
         std::max(fewest, std::ceil(double(d.frame_dt) * v_est / (double(d.cfl) * d.cell_size)));

@@ -21,7 +21,18 @@ struct ProjectionDemand {
     float acceleration = 0.0f;    // largest acceleration, m/s^2: gravity and the effects'
     float imposed_speed = 0.0f;   // a speed effects impose whatever was measured
     float max_dt = 0.0f;          // the longest substep every effect stays stable at (0: no limit)
+    // The liquid's mean strain P = (tr(G^2) - tr(G)^2) / 2 of its velocity gradient G, 1/s^2
+    // (shaders/sim/metrics.comp; the previous step's readback), for an integrator that moves
+    // particles along straight lines at large CFL (leapfrog); 0: no strain limit.
+    float strain = 0.0f;
 };
+
+// A straight move of dt through a divergence-free flow changes a volume by the factor
+// 1 - dt^2 P (strain compresses, rotation expands), so k projections of frame_dt / k compress
+// the liquid by frame_dt^2 P / k a frame. The strain limit keeps that at most kStrainRate
+// times the frame's length, 0.83% per 1/60 s: the dam-break experiments' bounds held there
+// over perturbed fills, 1% missed one (docs/accuracy.md, "The strain count").
+constexpr float kStrainRate = 0.5f;  // 1/s
 
 struct ProjectionCount {
     uint32_t count = 1;
@@ -31,7 +42,7 @@ struct ProjectionCount {
 
 // The speed was measured at the end of the previous step: it may grow by one frame of
 // acceleration before this frame ends. k = clamp(ceil(frame_dt v / (cfl dx)), 1, max), at least
-// as many as the effects' own limits ask for.
+// as many as the effects' own limits and the strain limit (frame_dt P / kStrainRate) ask for.
 ProjectionCount projections_for(const ProjectionDemand& demand);
 
 // The GPU time of the newest measured step (the library's own timer queries, a few steps late).

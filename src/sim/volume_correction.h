@@ -8,6 +8,7 @@
 // of the projection it added energy when the solve was unconverged and smothered waves when
 // it was converged).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -70,6 +71,18 @@ public:
     // at 60 frames a second once a step; in long frames every substep of 1/60 s or longer
     // (docs/design.md §4.5: once per 0.5 s frame left the last substeps' counts 5% thin).
     static constexpr float kInterval = 1.0f / 60.0f;
+    // Leapfrog's large steps compress the liquid within a frame (a straight move through strain),
+    // and a correction once a frame left the short dam break 8.7% compressed at 32 cells; with it
+    // the correction runs in every projection.
+    static bool every_projection(const pf_sim_params& params) { return params.advection == PF_ADVECTION_LEAPFROG; }
+    // The largest displacement of one run, in cells an axis (shaders/sim/volume_correction_move.comp):
+    // half a cell per kInterval of the substep dt, between a quarter and a half. Half a cell in
+    // each of several projections a frame clumped the floor's rows of a column; a quarter in a
+    // frame of one projection left a tank's gauge further from the experiment (docs/accuracy.md,
+    // "The strain count").
+    static float reach_cells(const pf_sim_params& params, float dt) {
+        return every_projection(params) ? std::clamp(0.5f * dt / kInterval, 0.25f, 0.5f) : 0.5f;
+    }
     // The displacement potential q of the last run (metres; tests read it).
     const gl::Buffer& potential() const { return potential_; }
 

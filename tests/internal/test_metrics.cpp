@@ -1,7 +1,8 @@
 // Accuracy metrics of pf_stats (docs/design.md §4.11): the GPU's reductions against a
 // double-precision CPU computation from the buffers the step leaves behind, the divergence a
 // converged solve leaves against what 5 Jacobi sweeps leave, the kinetic energy of a free fall,
-// and their arrival through the readback ring without the caller waiting.
+// the strain of analytic velocity fields, and their arrival through the readback ring without
+// the caller waiting.
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -57,7 +58,10 @@ TEST_F(Metrics, GpuReductionsMatchTheCpu) {
     const std::vector<uint32_t> count = sim.read_grid(GridBuffer::cell_count);
     std::vector<uint8_t> type(type_words.size());
     for (size_t c = 0; c < type.size(); ++c) type[c] = uint8_t(PF_CELL_KIND(type_words[c]));
-    const std::vector<double> div = ref::divergence(g, type, words_as_floats(sim.read_grid(GridBuffer::face_vel)));
+    const std::vector<double> face_vel = words_as_floats(sim.read_grid(GridBuffer::face_vel));
+    const std::vector<double> div = ref::divergence(g, type, face_vel);
+    double strain_sum = 0, strain_scale = 0;
+    for (double p : ref::strain(g, type, face_vel)) strain_sum += p, strain_scale += std::abs(p);
     double sum2 = 0, max_div = 0;
     uint32_t fluid = 0;
     for (size_t c = 0; c < div.size(); ++c) {
@@ -81,6 +85,9 @@ TEST_F(Metrics, GpuReductionsMatchTheCpu) {
     EXPECT_NEAR(st.divergence_l2, l2, 1e-5 * l2);
     EXPECT_NEAR(st.divergence_max, max_div, 1e-5 * max_div);
     EXPECT_NEAR(st.kinetic_energy, 0.5 * mass * v2, 1e-5 * 0.5 * mass * v2);
+    // The strain's cell values have either sign: its sum is held to the sum of their sizes.
+    ASSERT_GT(strain_scale, 0.0);
+    EXPECT_NEAR(st.strain, strain_sum / fluid, 1e-5 * strain_scale / fluid);
     EXPECT_NEAR(st.particle_volume, particle_volume_of(count, d), 1e-6 * particle_volume_of(count, d));
     // Interior cells: holding particles, no empty face neighbour (walls count as closed); with no
     // obstacle a cell is FLUID exactly when it holds a particle, so these are the GPU's.
@@ -159,6 +166,63 @@ TEST_F(Metrics, KineticEnergyOfAFreeFallGrowsWithTimeSquared) {
         // most 2.1e-7 in 15 frames).
         EXPECT_NEAR(st.kinetic_energy, expected, 1e-5 * expected) << "frame " << f;
     }
+}
+
+// The strain P = (tr(G^2) - tr(G)^2) / 2 that the step clock limits for straight moves
+// (src/sim/step_clock.h), on linear fields set on the faces: a straight move of dt through
+// u = (s x, -s y, 0) maps a patch by (1 + s dt, 1 - s dt), area factor 1 - s^2 dt^2 (P = s^2);
+// through a rotation of w by 1 + w^2 dt^2 (P = -w^2); a shear moves no area (P = 0). The cells
+// of the top layer are AIR, so the layer below is FLUID but not interior: it counts in the mean
+// as unstrained (P summed over interior cells, divided by every FLUID cell).
+TEST_F(Metrics, StrainOfLinearFieldsIsWhatAStraightMoveCompresses) {
+    const int n[3] = {12, 10, 8};
+    pf_sim_desc d = test_desc(n[0], n[1], n[2], 0.1f);
+    SimPtr handle = create(d);
+    ASSERT_TRUE(handle);
+    Simulation& sim = *pf::entry(handle)->impl;
+    std::vector<uint32_t> types(size_t(n[0]) * n[1] * n[2], PF_CELL_FLUID);
+    for (int k = 0; k < n[2]; ++k)
+        for (int i = 0; i < n[0]; ++i) types[(size_t(k) * n[1] + (n[1] - 1)) * n[0] + i] = PF_CELL_AIR;
+    sim.write_grid_for_test(GridBuffer::cell_type, types);
+    const double fluid = double(n[0]) * (n[1] - 1) * n[2], interior = double(n[0]) * (n[1] - 2) * n[2];
+
+    // Face velocities of u(x) = A x (world coordinates from the grid's corner, x = g dx).
+    const auto strain_of = [&](const double (&A)[3][3]) {
+        std::vector<uint32_t> words(sim.read_grid(GridBuffer::face_vel).size(), 0u);
+        size_t f = 0;
+        for (int axis = 0; axis < 3; ++axis) {
+            int dims[3] = {n[0], n[1], n[2]};
+            dims[axis] += 1;
+            for (int k = 0; k < dims[2]; ++k)
+                for (int j = 0; j < dims[1]; ++j)
+                    for (int i = 0; i < dims[0]; ++i, ++f) {
+                        double g[3] = {i + 0.5, j + 0.5, k + 0.5};
+                        g[axis] -= 0.5;
+                        double u = 0;
+                        for (int b = 0; b < 3; ++b) u += A[axis][b] * (g[b] - 4.0) * d.cell_size;
+                        const float uf = float(u);
+                        std::memcpy(&words[f], &uf, 4);
+                    }
+        }
+        sim.write_grid_for_test(GridBuffer::face_vel, words);
+        EXPECT_EQ(sim.run_metrics_for_test(), PF_OK);
+        const std::vector<uint32_t> status = sim.read_grid(GridBuffer::status);
+        float p = 0;
+        std::memcpy(&p, &status[PF_STATUS_STRAIN], 4);
+        EXPECT_EQ(status[PF_STATUS_FLUID_CELLS], uint32_t(fluid));
+        return double(p);
+    };
+    const double s = 3.0, w = 2.0, shear = 5.0, share = interior / fluid;
+    // Float face values up to ~40 cells x 5 /s: rounding a few 1e-7 of them, differenced over a cell.
+    const double tol = 1e-4;
+    EXPECT_NEAR(strain_of({{s, 0, 0}, {0, -s, 0}, {0, 0, 0}}), s * s * share, tol * s * s);
+    EXPECT_NEAR(strain_of({{0, -w, 0}, {w, 0, 0}, {0, 0, 0}}), -w * w * share, tol * w * w);
+    EXPECT_NEAR(strain_of({{0, shear, 0}, {0, 0, 0}, {0, 0, 0}}), 0.0, tol * shear * shear);
+    // Strain in one plane and rotation in another add: P = s^2 - w^2.
+    EXPECT_NEAR(strain_of({{s, 0, 0}, {0, -s, -w}, {0, w, 0}}), (s * s - w * w) * share, tol * s * s);
+    // Uniform compression (not divergence free): P = (3 c^2 - 9 c^2) / 2 = -3 c^2 (volume grows by
+    // dt tr G; P is the second-order term).
+    EXPECT_NEAR(strain_of({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), -3.0 * share, tol);
 }
 
 // The metrics come through the readback ring: pf_get_stats never waits, so they arrive some

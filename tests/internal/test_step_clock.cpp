@@ -44,6 +44,30 @@ TEST(StepClock, EffectsLimitsAndImposedSpeedsCount) {
     EXPECT_EQ(projections_for(d).count, 10u);
 }
 
+TEST(StepClock, StrainLimitsTheCompressionOfStraightMoves) {
+    ProjectionDemand d = demand(2.0f, 8.0f, 16);
+    ASSERT_EQ(projections_for(d).count, 1u) << "the speed alone asks for one";
+    // frame_dt^2 P = 0.022: one projection would compress the liquid 2.2% in the frame; three
+    // keep it under kStrainRate / 60 = 0.83%.
+    d.strain = 0.022f * 3600.0f;
+    EXPECT_EQ(projections_for(d).count, 3u);
+    d.strain = 0.008f * 3600.0f;  // 0.8% with one
+    EXPECT_EQ(projections_for(d).count, 1u);
+    // Per time, not per frame: a frame twice as long compresses four times as much with one
+    // projection and may compress twice as much (8.8% / 1.67%: six projections).
+    d = demand(0.0f, 8.0f, 16);
+    d.frame_dt = 2.0f / 60.0f;
+    d.strain = 0.022f * 3600.0f;
+    EXPECT_EQ(projections_for(d).count, 6u);
+    // Rotation (P < 0) expands: no limit; the cap still clamps and says so.
+    d.strain = -1e6f;
+    EXPECT_EQ(projections_for(d).count, 1u);
+    d.strain = 1e6f;
+    const ProjectionCount k = projections_for(d);
+    EXPECT_EQ(k.count, 16u);
+    EXPECT_TRUE(k.clamped);
+}
+
 TEST(StepClock, TravelIsTheFastestParticlesCellsPerProjection) {
     const ProjectionCount k = projections_for(demand(2.0f, 16.0f, 16));
     EXPECT_EQ(k.count, 1u);

@@ -223,6 +223,50 @@ std::vector<double> divergence(const Grid& grid, const std::vector<uint8_t>& typ
     return div;
 }
 
+std::vector<double> strain(const Grid& grid, const std::vector<uint8_t>& type, const std::vector<double>& vel) {
+    std::vector<double> out(grid.cells(), 0.0);
+    const glm::ivec3 n = grid.cell_dims();
+    const auto inside = [&](glm::ivec3 c) { return glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) && glm::all(glm::lessThan(c, n)); };
+    const auto fluid_at = [&](glm::ivec3 c) { return inside(c) && is_fluid(type, grid.cell_index(c.x, c.y, c.z)); };
+    const auto face = [&](int a, glm::ivec3 f) { return vel[grid.face_index(a, f.x, f.y, f.z)]; };
+    const auto centred = [&](int a, glm::ivec3 c) {
+        glm::ivec3 hi = c;
+        hi[a] += 1;
+        return 0.5 * (face(a, c) + face(a, hi));
+    };
+    for_each_cell(grid, [&](int i, int j, int k, int id) {
+        if (!is_fluid(type, id)) return;
+        const glm::ivec3 c(i, j, k);
+        for (int m = 0; m < 6; ++m) {
+            glm::ivec3 nb = c;
+            nb[m / 2] += (m % 2) ? 1 : -1;
+            if (inside(nb) && type[grid.cell_index(nb.x, nb.y, nb.z)] == AIR) return;
+        }
+        double G[3][3];  // G[d][a] = d u_a / d x_d
+        for (int a = 0; a < 3; ++a)
+            for (int d = 0; d < 3; ++d) {
+                if (d == a) {
+                    glm::ivec3 hi = c;
+                    hi[a] += 1;
+                    G[d][a] = (face(a, hi) - face(a, c)) / grid.dx;
+                    continue;
+                }
+                glm::ivec3 p = c, q = c;
+                p[d] += 1;
+                q[d] -= 1;
+                const bool has_p = fluid_at(p), has_q = fluid_at(q);
+                const double span = double(has_p) + double(has_q);
+                const double up = has_p ? centred(a, p) : centred(a, c), down = has_q ? centred(a, q) : centred(a, c);
+                G[d][a] = span > 0.0 ? (up - down) / (span * grid.dx) : 0.0;
+            }
+        double trace = G[0][0] + G[1][1] + G[2][2], trace_of_square = 0.0;
+        for (int a = 0; a < 3; ++a)
+            for (int d = 0; d < 3; ++d) trace_of_square += G[a][d] * G[d][a];
+        out[id] = 0.5 * (trace_of_square - trace * trace);
+    });
+    return out;
+}
+
 void wall_release(const Grid& grid, const std::vector<uint8_t>& type, const std::vector<double>& last_pressure,
                   glm::dvec3 gravity, double density, std::vector<double>& vel) {
     const double holding = 0.1 * density * glm::length(gravity) * grid.dx;

@@ -97,6 +97,12 @@ GridForces grid_forces(const Grid& grid, const P2GResult& p2g_result, glm::dvec3
 std::vector<double> divergence(const Grid& grid, const std::vector<uint8_t>& type,
                                const std::vector<double>& vel);
 
+// §4.11 (shaders/sim/metrics.comp): per interior FLUID cell (no AIR face neighbour) the strain
+// P = (tr(G^2) - tr(G)^2) / 2 of the cell-centred velocity gradient G, in 1/s^2: G's diagonal
+// from the cell's own faces, its other entries central differences of face-averaged components
+// between FLUID neighbours (one-sided beside a non-FLUID one, 0 with neither); 0 elsewhere.
+std::vector<double> strain(const Grid& grid, const std::vector<uint8_t>& type, const std::vector<double>& vel);
+
 // §2 wall release: a FLUID cell touching AIR whose last pressure is at most 0.1·ρ|g|dx gives each of
 // its domain walls that gravity pulls the liquid away from the part of its opposite face's velocity
 // that leaves the wall (grids one cell thick along an axis keep their walls there).
