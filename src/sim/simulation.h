@@ -433,8 +433,6 @@ private:
     pf_pressure_solver fence_solver_[kReadbackSlots] = {};  // the solver of each readback's step
     bool fence_capped_[kReadbackSlots] = {};                 // whether the budget cut its solves' iterations
     uint64_t fence_added_[kReadbackSlots] = {};             // and added_total_ then
-    uint32_t fence_substeps_[kReadbackSlots] = {};  // SCRATCH
-    mutable float xc_prev_ = 0.0f, xc_cur_ = 0.0f; mutable uint32_t xn_ = 1;  // SCRATCH
     mutable uint32_t flags_ = 0;           // sticky PF_FLAG_* bits
     // Adds PF_FLAG_* bits, logging one warning for each bit not already set.
     void raise_flags(uint32_t bits) const;
