@@ -4,9 +4,10 @@
 // touched, so the correction never enters FLIP's velocity difference and adds no kinetic
 // energy. Walls and faces beside SOLID cells do not move (d = 0); q = 0 at the free surface,
 // so a face between FLUID and AIR divides its difference by theta as the velocity update does. A
-// displacement is kept within sim.correction_reach cells per axis (half a cell; a quarter where
-// the correction runs in every projection: src/sim/volume_correction.h), then the wall clamp of
-// every advection scheme applies. PF_ORDERED walks the particles in the tiled P2G's order, as G2P does on large
+// displacement is kept within sim.correction_reach cells per axis (half a cell; where the
+// correction runs in every projection, half a cell per 1/60 s of the substep, at least a quarter:
+// VolumeCorrection::reach_cells in src/sim/volume_correction.h), then the wall clamp of every
+// advection scheme applies. PF_ORDERED walks the particles in the tiled P2G's order, as G2P does on large
 // grids (common/particle_order.glsl): its reads of the potential are gathers too.
 #include "common/sim.glsl"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;

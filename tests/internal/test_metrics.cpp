@@ -220,8 +220,8 @@ TEST_F(Metrics, StrainOfLinearFieldsIsWhatAStraightMoveCompresses) {
     EXPECT_NEAR(strain_of({{0, shear, 0}, {0, 0, 0}, {0, 0, 0}}), 0.0, tol * shear * shear);
     // Strain in one plane and rotation in another add: P = s^2 - w^2.
     EXPECT_NEAR(strain_of({{s, 0, 0}, {0, -s, -w}, {0, w, 0}}), (s * s - w * w) * share, tol * s * s);
-    // Uniform compression (not divergence free): P = (3 c^2 - 9 c^2) / 2 = -3 c^2 (volume grows by
-    // dt tr G; P is the second-order term).
+    // A uniform expansion G = c I (not divergence free): P = (3 c^2 - 9 c^2) / 2 = -3 c^2 (the volume
+    // grows by dt tr G to first order; P is the second-order term).
     EXPECT_NEAR(strain_of({{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}), -3.0 * share, tol);
 }
 
