@@ -10,9 +10,9 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <cstring>
 
 #include "api/handle.h"
+#include "reference/cpu_reference.h"
 #include "support/sim_fixture.h"
 
 namespace pf::test {
@@ -53,22 +53,11 @@ protected:
         Simulation& sim = *pf::entry(handle)->impl;
 
         // Face velocities of the rotation about the origin: u = -w y on u faces, v = w x on v faces.
-        std::vector<uint32_t> words(sim.read_grid(GridBuffer::face_vel).size(), 0u);
-        const int n[3] = {16, 16, 4};
-        size_t f = 0;
-        for (int axis = 0; axis < 3; ++axis) {
-            int dims[3] = {n[0], n[1], n[2]};
-            dims[axis] += 1;
-            for (int k = 0; k < dims[2]; ++k)
-                for (int j = 0; j < dims[1]; ++j)
-                    for (int i = 0; i < dims[0]; ++i, ++f) {
-                        double g[3] = {i + 0.5, j + 0.5, k + 0.5};
-                        g[axis] -= 0.5;
-                        const double x = d.origin[0] + g[0] * d.cell_size, y = d.origin[1] + g[1] * d.cell_size;
-                        const float u = axis == 0 ? float(-kOmega * y) : axis == 1 ? float(kOmega * x) : 0.0f;
-                        std::memcpy(&words[f], &u, 4);
-                    }
-        }
+        const ref::Grid grid{16, 16, 4, d.cell_size, glm::dvec3(d.origin[0], d.origin[1], d.origin[2])};
+        const std::vector<uint32_t> words = floats_as_words(ref::sample_faces(grid, [&](int axis, const glm::dvec3& g) {
+            const glm::dvec3 x = grid.to_world(g);
+            return axis == 0 ? -kOmega * x.y : axis == 1 ? kOmega * x.x : 0.0;
+        }));
         sim.write_grid_for_test(GridBuffer::face_vel, words);
 
         // 12 particles on the circle of radius R in the plane z = 0, at different phases.

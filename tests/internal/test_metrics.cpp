@@ -187,23 +187,13 @@ TEST_F(Metrics, StrainOfLinearFieldsIsWhatAStraightMoveCompresses) {
     const double fluid = double(n[0]) * (n[1] - 1) * n[2], interior = double(n[0]) * (n[1] - 2) * n[2];
 
     // Face velocities of u(x) = A x (world coordinates from the grid's corner, x = g dx).
+    const ref::Grid grid{n[0], n[1], n[2], d.cell_size, glm::dvec3(0.0)};
     const auto strain_of = [&](const double (&A)[3][3]) {
-        std::vector<uint32_t> words(sim.read_grid(GridBuffer::face_vel).size(), 0u);
-        size_t f = 0;
-        for (int axis = 0; axis < 3; ++axis) {
-            int dims[3] = {n[0], n[1], n[2]};
-            dims[axis] += 1;
-            for (int k = 0; k < dims[2]; ++k)
-                for (int j = 0; j < dims[1]; ++j)
-                    for (int i = 0; i < dims[0]; ++i, ++f) {
-                        double g[3] = {i + 0.5, j + 0.5, k + 0.5};
-                        g[axis] -= 0.5;
-                        double u = 0;
-                        for (int b = 0; b < 3; ++b) u += A[axis][b] * (g[b] - 4.0) * d.cell_size;
-                        const float uf = float(u);
-                        std::memcpy(&words[f], &uf, 4);
-                    }
-        }
+        const std::vector<uint32_t> words = floats_as_words(ref::sample_faces(grid, [&](int axis, const glm::dvec3& g) {
+            double u = 0;
+            for (int b = 0; b < 3; ++b) u += A[axis][b] * (g[b] - 4.0) * d.cell_size;
+            return u;
+        }));
         sim.write_grid_for_test(GridBuffer::face_vel, words);
         EXPECT_EQ(sim.run_metrics_for_test(), PF_OK);
         const std::vector<uint32_t> status = sim.read_grid(GridBuffer::status);

@@ -9,7 +9,6 @@
 // particles carry velocities of their own (FLIP with the grid unchanged keeps them), so its
 // offset from the field is not zero.
 #include <cmath>
-#include <cstring>
 #include <random>
 
 #include "api/handle.h"
@@ -54,20 +53,9 @@ protected:
         Simulation& sim = *pf::entry(handle)->impl;
 
         ref::Grid grid{kN, kN, kN, kDx, glm::dvec3(d.origin[0], d.origin[1], d.origin[2])};
-        std::vector<double> field(size_t(grid.faces()));
-        std::vector<uint32_t> words(field.size());
-        for (int c = 0; c < 3; ++c) {
-            const glm::ivec3 dims = grid.face_dims(c);
-            for (int k = 0; k < dims.z; ++k)
-                for (int j = 0; j < dims.y; ++j)
-                    for (int i = 0; i < dims.x; ++i) {
-                        const glm::dvec3 g = glm::dvec3(i, j, k) + ref::Grid::face_offset_g(c);
-                        const float u = float(swirl(grid.to_world(g))[c]);
-                        const int f = grid.face_index(c, i, j, k);
-                        field[size_t(f)] = double(u);  // the reference reads the GPU's floats
-                        std::memcpy(&words[size_t(f)], &u, 4);
-                    }
-        }
+        const std::vector<uint32_t> words = floats_as_words(
+            ref::sample_faces(grid, [&](int c, const glm::dvec3& g) { return swirl(grid.to_world(g))[c]; }));
+        const std::vector<double> field = words_as_floats(words);  // the reference reads the GPU's floats
         sim.write_grid_for_test(GridBuffer::face_vel, words);
         sim.write_grid_for_test(GridBuffer::face_vel_old, words);
         // No obstacle: every cell AIR (the trace stops before SOLID ones; nothing classified them).

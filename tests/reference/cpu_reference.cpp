@@ -126,6 +126,13 @@ double dot(const std::vector<double>& a, const std::vector<double>& b) {
 
 } // namespace
 
+std::vector<double> sample_faces(const Grid& grid, const std::function<double(int c, const glm::dvec3& g)>& f) {
+    std::vector<double> out(size_t(grid.faces()));
+    for (int c = 0; c < 3; ++c)
+        for_each_face(grid, c, [&](int i, int j, int k, int id) { out[size_t(id)] = f(c, glm::dvec3(i, j, k) + Grid::face_offset_g(c)); });
+    return out;
+}
+
 P2GResult p2g(const Grid& grid, const Particles& particles) {
     P2GResult r;
     r.momentum.assign(grid.faces(), 0.0);

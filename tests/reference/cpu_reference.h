@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -60,6 +61,9 @@ enum class Transfer { pic_flip = 0, apic = 1 };
 enum class Advection { euler = 0, rk2 = 1, rk3 = 2, rk2_offset = 4 };  // pf_advection's values (no leapfrog)
 
 // Face fields: one std::vector<double> of size grid.faces(), u then v then w.
+// A face field sampled from f(c, g): the value on lattice c at grid coordinate g (cells from the
+// grid's origin, g = (i, j, k) + face_offset_g(c)), in the GPU's face order.
+std::vector<double> sample_faces(const Grid& grid, const std::function<double(int c, const glm::dvec3& g)>& f);
 
 // §4.2: momentum = Σ w·v_c, weight = Σ w over the §3 stencil, count per particle cell
 // clamp(floor(g), 0, n-1). Exact sums (the GPU's are quantised by S_m, S_w).
