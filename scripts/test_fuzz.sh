@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # libFuzzer stage: the samples' scene loader fuzzed (clang, -fsanitize=fuzzer,address,undefined)
 # from the shipped scenes and tests/fuzz/corpus/scene/ for PF_FUZZ_MAX_TIME seconds (default
-# 60) in build-fuzz/. Only that target is built there (the library plain, with clang).
+# 40, one fuzzing process per core) in build-fuzz/. Only that target is built there (the library
+# plain, with clang).
 # Skipped, saying so, when clang or its libFuzzer runtime is missing (scripts/setup.sh installs
 # both).
 #   PF_FUZZ_MAX_TIME=3600 scripts/test_fuzz.sh                  # a longer run by hand
@@ -12,7 +13,7 @@ if ! command -v clang++ >/dev/null || ! command -v clang >/dev/null; then
   exit 0
 fi
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
-      -DCMAKE_BUILD_TYPE=Release -DPF_FUZZ_MAX_TIME="${PF_FUZZ_MAX_TIME:-60}" \
+      -DCMAKE_BUILD_TYPE=Release -DPF_FUZZ_MAX_TIME="${PF_FUZZ_MAX_TIME:-40}" \
       -DPython3_EXECUTABLE="$PWD/.venv/bin/python" >/dev/null
 if ! grep -q '^PF_HAS_LIBFUZZER:INTERNAL=1' build-fuzz/CMakeCache.txt; then
   echo "test_fuzz: SKIPPED: clang cannot link -fsanitize=fuzzer (apt-get install libclang-rt-14-dev)"

@@ -3,6 +3,7 @@
 // (PIC/FLIP compresses slowly: a resting tank loses depth, a dam break loses volume).
 // Every bound is a measurement on llvmpipe with margin, stated next to it.
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <random>
 #include <string>
@@ -201,22 +202,23 @@ TEST_F(Volume, DamBreakAtHalfSecondFramesLosesLittleVolume) {
 }
 
 // The issue's own dam break (issue 6): a 48 x 24 x 8 tank of 5 cm cells, a 0.8 x 0.9 x 0.4 m
-// column, the default configuration, run 10 s. Its volume is the liquid volume, mass over
-// density (liquid_volume_of, pf_stats.liquid_volume): the capped count sum of particle_volume
-// also reads the cell-to-cell spread of counts in a disordered liquid as loss (measured at the
-// end of the 1/60 run: interior cells hold 7.98 particles on average, rest 8, with a standard
-// deviation of 0.71, which costs the capped sum 2.6%; docs/design.md §4.5).
+// column, the default configuration, run 10 s (CI's fast mode: 5 s at 1/60 s frames). Its
+// volume is the liquid volume, mass over density (liquid_volume_of, pf_stats.liquid_volume):
+// the capped count sum of particle_volume also reads the cell-to-cell spread of counts in a
+// disordered liquid as loss (measured at the end of the 10 s 1/60 run: interior cells hold 7.98
+// particles on average, rest 8, with a standard deviation of 0.71, which costs the capped sum
+// 2.6%; docs/design.md §4.5).
 struct DamBreakRun {
-    double liquid_end = 0, liquid_worst = 0;  // drift of the liquid volume: at 10 s, largest |drift| sampled
-    double particle_end = 0;                  // drift of the capped count sum at 10 s (reported)
+    double liquid_end = 0, liquid_worst = 0;  // drift of the liquid volume: at the end, largest |drift| sampled
+    double particle_end = 0;                  // drift of the capped count sum at the end (reported)
     double gpu_liquid_end = 0;                // pf_stats.liquid_volume_drift of the last step
     // A geometric check that reads no count: the mean surface height (each column's highest
-    // particle plus half the particle spacing, dx / 4 at 8 per cell) at 10 s against the depth the
+    // particle plus half the particle spacing, dx / 4 at 8 per cell) at the end against the depth the
     // particles fill at rest density over the tank's floor. The mean height of a surface is the
     // volume under it over the floor, waves or not; splashes and trapped air lift it.
     double surface_end = 0;
 };
-DamBreakRun issue_dam_break(float frame_dt, float volume_correction) {
+DamBreakRun issue_dam_break(float frame_dt, float volume_correction, double seconds = 10.0) {
     pf_sim_desc d = test_desc(48, 24, 8, 0.05f);
     d.params = pf_default_sim_params();
     d.params.volume_correction = volume_correction;
@@ -230,7 +232,7 @@ DamBreakRun issue_dam_break(float frame_dt, float volume_correction) {
     EXPECT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
     const std::vector<uint32_t> count0 = cell_counts_of(read_all(sim.get()), d);
     const double liquid0 = liquid_volume_of(count0, d), particle0 = particle_volume_of(count0, d);
-    const int frames = int(std::lround(10.0 / frame_dt)), every = std::max(1, int(std::lround(0.25 / frame_dt)));
+    const int frames = int(std::lround(seconds / frame_dt)), every = std::max(1, int(std::lround(0.25 / frame_dt)));
     for (int f = 1; f <= frames; ++f) {
         EXPECT_EQ(pf_step(sim.get(), frame_dt), PF_OK);
         if (f % every != 0 && f != frames) continue;
@@ -257,20 +259,24 @@ DamBreakRun issue_dam_break(float frame_dt, float volume_correction) {
 
 void record(const char* prefix, const DamBreakRun& r) {
     const std::string p(prefix);
-    ::testing::Test::RecordProperty(p + "liquid_volume_change_10s", std::to_string(r.liquid_end));
+    ::testing::Test::RecordProperty(p + "liquid_volume_change_end", std::to_string(r.liquid_end));
     ::testing::Test::RecordProperty(p + "liquid_volume_change_worst", std::to_string(r.liquid_worst));
-    ::testing::Test::RecordProperty(p + "gpu_liquid_volume_drift_10s", std::to_string(r.gpu_liquid_end));
-    ::testing::Test::RecordProperty(p + "particle_volume_change_10s", std::to_string(r.particle_end));
-    ::testing::Test::RecordProperty(p + "mean_surface_height_change_10s", std::to_string(r.surface_end));
+    ::testing::Test::RecordProperty(p + "gpu_liquid_volume_drift_end", std::to_string(r.gpu_liquid_end));
+    ::testing::Test::RecordProperty(p + "particle_volume_change_end", std::to_string(r.particle_end));
+    ::testing::Test::RecordProperty(p + "mean_surface_height_change_end", std::to_string(r.surface_end));
 }
 
 // At frame dt 1/60 the issue asks for 2% after 10 s. Measured on llvmpipe with issue 17's
 // position-only correction: +0.0% at 10 s, at most +1.4% at any quarter second, the GPU's figure
 // +0.5% (with the velocity correction before: +0.2%, -0.6% .. +1.4%; count sum -2.6%). Asserted:
 // 2% at the end and at every sample. The GPU's own figure (from the last substep's P2G counts)
-// within the same 2%. About 35 s on llvmpipe.
+// within the same 2%. CI's fast mode runs the first 5 s (the front's impact and the first
+// sloshes, about 30 s on llvmpipe) with the same bounds; the long mode (PF_STABILITY_LONG, as the
+// stability suite) the issue's 10 s. The 16^3 dam break above runs 10 s in both.
 TEST_F(Volume, IssueDamBreakKeepsItsLiquidVolumeAtSixtyFramesASecond) {
-    const DamBreakRun r = issue_dam_break(1.0f / 60.0f, pf_default_sim_params().volume_correction);
+    const double seconds = std::getenv("PF_STABILITY_LONG") ? 10.0 : 5.0;
+    const DamBreakRun r = issue_dam_break(1.0f / 60.0f, pf_default_sim_params().volume_correction, seconds);
+    RecordProperty("seconds", std::to_string(seconds));
     record("", r);
     EXPECT_LT(std::abs(r.liquid_end), 0.02);
     EXPECT_LT(std::abs(r.liquid_worst), 0.02);
