@@ -41,6 +41,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -266,6 +267,7 @@ struct Run {
     pf_advection advection = PF_ADVECTION_EULER;  // the integrator the run used
     float flip_ratio = 0.95f;                      // and its PIC/FLIP blend
     float cfl = 1.0f;                              // and its projection CFL
+    float tolerance = 0.0f;                        // and its pressure tolerance
     std::vector<double> t;                  // s, one per measurement (frame 0 is the initial state)
     std::map<std::string, std::vector<double>> measured;  // per quantity, m
     std::vector<Comparison> comparisons;    // one per series
@@ -289,8 +291,14 @@ double value_in(const Case& c, const std::string& var, double v, double scale) {
 // the first dimensionless time unit (Martin & Moyce) or of a tenth of a second (MARIN).
 double max_shift_in(const std::string& var) { return var == "t_s" ? 0.25 : 1.0; }
 
-Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, float cfl, const pf_advection* advection,
-             const float* flip_ratio, uint32_t perturb_seed, bool verbose) {
+// Parameters the command line sets over the preset's (unset: the preset's own).
+struct Overrides {
+    std::optional<float> cfl, flip_ratio, tolerance;
+    std::optional<pf_advection> advection;
+};
+
+Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, const Overrides& over,
+             uint32_t perturb_seed, bool verbose) {
     Run r;
     pf_sim_desc desc = pf_default_sim_desc();
     desc.gl_get_proc_address = pfs::get_proc;
@@ -298,12 +306,14 @@ Run run_case(const Case& c, pf_quality quality, uint32_t cells, double scale, fl
     pfs::check(pf_quality_params(quality, &desc.params), "pf_quality_params");
     // A substep budget, not a quality choice: let the CFL condition hold at any resolution.
     desc.params.max_substeps = 64;
-    if (cfl > 0) desc.params.cfl = cfl;
-    if (advection) desc.params.advection = *advection;
-    if (flip_ratio) desc.params.flip_ratio = *flip_ratio;
+    if (over.cfl) desc.params.cfl = *over.cfl;
+    if (over.advection) desc.params.advection = *over.advection;
+    if (over.flip_ratio) desc.params.flip_ratio = *over.flip_ratio;
+    if (over.tolerance) desc.params.pressure_tolerance = *over.tolerance;
     r.advection = desc.params.advection;
     r.flip_ratio = desc.params.flip_ratio;
     r.cfl = desc.params.cfl;
+    r.tolerance = desc.params.pressure_tolerance;
 
     // The experiment's last data time (s, at this scale) and the frames to cover it, plus room for
     // the alignment shift.
@@ -412,6 +422,7 @@ ojson report_run(const Case& c, const std::string& pname, const Run& r, uint32_t
     row["cells"] = cells;
     row["scale"] = scale;
     row["cfl"] = r.cfl;
+    row["pressure_tolerance"] = r.tolerance;
     row["perturb_seed"] = seed;
     row["advection"] = pfs::advection_name(r.advection);
     row["flip_ratio"] = r.flip_ratio;
@@ -472,9 +483,7 @@ void print_spread(const Case& c, const std::string& preset, const std::vector<st
 int run(int argc, char** argv) {
     uint32_t cells = 16;
     double scale = 1.0;
-    float cfl = 0.0f;
-    pf_advection advection = PF_ADVECTION_EULER;
-    float flip_ratio = 0.95f;
+    Overrides over;
     std::vector<pf_quality> presets;
     std::vector<std::string> case_names;
     std::vector<uint32_t> perturb_seeds;
@@ -492,15 +501,15 @@ int run(int argc, char** argv) {
     app.add_option("--data", data_path, "the published data (docs/validation_data.json)");
     app.add_option("--scale", scale, "build the experiments this many times larger (Froude similarity); default 1")
         ->check(CLI::Range(0.1, 100.0));
-    app.add_option("--cfl", cfl, "override the presets' cfl (cells a particle may cross per substep)")
+    app.add_option("--cfl", over.cfl, "override the presets' cfl (cells a particle may cross per substep)")
         ->check(CLI::Range(0.05f, 16.0f));
-    const CLI::Option* advection_given =
-        app.add_option("--advection", advection, "override the presets' particle integrator")
-            ->transform(pfs::NameMap(pfs::enum_choices(pfs::advection_name, PF_ADVECTION_COUNT), "advection"))
-            ->type_name("NAME");
-    const CLI::Option* flip_given =
-        app.add_option("--flip-ratio", flip_ratio, "override the presets' PIC/FLIP blend (0 = PIC, 1 = FLIP)")
-            ->check(CLI::Range(0.0f, 1.0f));
+    app.add_option("--advection", over.advection, "override the presets' particle integrator")
+        ->transform(pfs::NameMap(pfs::enum_choices(pfs::advection_name, PF_ADVECTION_COUNT), "advection"))
+        ->type_name("NAME");
+    app.add_option("--flip-ratio", over.flip_ratio, "override the presets' PIC/FLIP blend (0 = PIC, 1 = FLIP)")
+        ->check(CLI::Range(0.0f, 1.0f));
+    app.add_option("--tolerance", over.tolerance, "override the presets' pressure tolerance (relative residual)")
+        ->check(CLI::Range(1e-7f, 0.5f));
     app.add_option("--perturb", perturb_seeds,
                    "run each case from the lattice moved by up to 1e-3 of its spacing, once per seed (repeatable; "
                    "1 and up), and print each series' RMS mean and spread over the seeds")
@@ -536,8 +545,7 @@ int run(int argc, char** argv) {
             const std::string pname = pfs::choice_name(pfs::preset_choices(), quality);
             std::vector<std::vector<double>> rms_over_seeds(c.series.size());
             for (const uint32_t seed : perturb_seeds) {
-                const Run r = run_case(c, quality, cells, scale, cfl, advection_given->count() ? &advection : nullptr,
-                                       flip_given->count() ? &flip_ratio : nullptr, seed, verbose);
+                const Run r = run_case(c, quality, cells, scale, over, seed, verbose);
                 results.push_back(report_run(c, pname, r, cells, scale, seed));
                 for (size_t k = 0; k < c.series.size(); ++k) rms_over_seeds[k].push_back(r.comparisons[k].rms);
                 std::fflush(stdout);
