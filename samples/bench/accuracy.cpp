@@ -23,7 +23,8 @@
 // together only by the pressure's pull; with p >= 0 it flies apart, which is not what they measure).
 //
 // --check (CI, llvmpipe, small grids) asserts that the more accurate settings are measurably
-// more accurate (never timings) and exits non-zero otherwise.
+// more accurate (never timings) and exits non-zero otherwise; it runs only the configuration and
+// case pairs its checks compare.
 
 #include <glad/gl.h>
 
@@ -506,9 +507,12 @@ int run(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
+    // The pairs run_checks reads (each run is also checked for non-finite velocities).
+    const std::map<std::string, std::vector<std::string>> check_pairs = {
+        {"rotation", {"pic", "apic"}}, {"closed_box", {"jacobi_40", "mgpcg_1e-04", "pic", "flip_0.95"}}};
     if (opt.check) {
         opt.configs = {"jacobi_40", "mgpcg_1e-04", "pic", "flip_0.95", "apic"};
-        opt.cases = {"hydrostatic", "rotation", "closed_box"};
+        opt.cases = {"rotation", "closed_box"};
     }
 
     pfs::EglContext ctx(pfs::EglContext::Options{});
@@ -524,6 +528,10 @@ int run(int argc, char** argv) {
     std::printf("%-16s %-10s %-14s %10s %9s %10s  metrics\n", "config", "knob", "case", "gpu ms/fr", "substeps", "residual");
     for (const Config& config : configs) {
         for (const Case& c : cases) {
+            if (opt.check) {
+                const std::vector<std::string>& wanted = check_pairs.at(c.name);
+                if (std::find(wanted.begin(), wanted.end(), config.name) == wanted.end()) continue;
+            }
             const Run r = run_case(c, config, opt.n, opt.verbose);
             results[config.name][c.name] = r;
             std::string m;
