@@ -646,13 +646,6 @@ pf_result Simulation::step(float frame_dt) {
     upload_uniforms(frame_dt / float(substeps));
     step_substeps_ = substeps;
     begin_effects_step(frame_dt);
-    const bool correcting = desc_.params.volume_correction > 0.0f;
-    if (correcting) {
-        // What its solves needed lately, from this solver's readbacks (as the projection's).
-        const bool known = status_step_ > 0 && recent_solver_ == desc_.params.pressure_solver;
-        volume_correction_.set_recent(known ? VolumeCorrection::recent_from(status_words_.data()) : VolumeCorrection::Recent{});
-        volume_correction_.begin_step();
-    }
     run_count_stage(EffectStage::before_substeps);
     // The volume correction: in the first substep, then again whenever another
     // VolumeCorrection::kInterval of simulated time has passed (compression grows with time,
@@ -673,7 +666,6 @@ pf_result Simulation::step(float frame_dt) {
     }
     run_count_stage(EffectStage::after_substeps);
     run_metrics();
-    if (correcting) volume_correction_.report_step(*runner_, status_);
     runner_->end_step();
     end_effects_step();
 

@@ -1,7 +1,6 @@
 #include "sim/volume_correction.h"
 
 #include <algorithm>
-#include <cstring>
 #include <vector>
 
 namespace pf {
@@ -51,51 +50,15 @@ void VolumeCorrection::setup(PassRunner& runner, const Inputs& in) {
                  {PF_SLOT_VOLUME_POTENTIAL_OUT, &potential_}}});
 }
 
-PressureProblem VolumeCorrection::problem(const Inputs& in, const pf_sim_params& p) const {
-    const bool known = recent_.iterations != kUnknownIterations && recent_.residual >= 0.0f;
-    return PressureProblem{in.cell_type,
-                           rhs_,
-                           potential_,
-                           report_,
-                           p,
-                           known ? recent_.iterations : kUnknownIterations,
-                           kUnknownIterations,
-                           known && recent_.residual <= p.pressure_tolerance,
-                           known ? recent_.residual : -1.0f};
-}
-
 void VolumeCorrection::solve(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in) {
     const PassRunner::StatScope as_correction(runner, solve_stat_);
-    const pf_sim_params p = solve_params(params);
-    solver.solve(runner, problem(in, p));
+    solver.solve(runner, PressureProblem{in.cell_type, rhs_, potential_, report_, solve_params(params)});
 }
 
 void VolumeCorrection::solve_paired(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params,
                                     const Inputs& in, const PressureProblem& projection) {
     // Counted with the projection's solve: its passes are the projection's passes.
-    const pf_sim_params p = solve_params(params);
-    solver.solve_pair(runner, projection, problem(in, p));
-}
-
-VolumeCorrection::Recent VolumeCorrection::recent_from(const uint32_t* status) {
-    Recent r;
-    if (!status || status[PF_STATUS_CORRECTION_ITERATIONS] == 0) return r;  // none read back, or no correction ran
-    r.iterations = status[PF_STATUS_CORRECTION_ITERATIONS];
-    std::memcpy(&r.residual, &status[PF_STATUS_CORRECTION_RESIDUAL], sizeof r.residual);
-    return r;
-}
-
-void VolumeCorrection::begin_step() {
-    static_assert(PF_STATUS_SOLVER_LATER_ROUNDS == PF_STATUS_SOLVER_ITERATIONS + 3, "contiguous words");
-    const uint32_t zeros[4] = {};
-    report_.upload(PF_STATUS_SOLVER_ITERATIONS * 4, sizeof zeros, zeros);
-}
-
-void VolumeCorrection::report_step(PassRunner& runner, const gl::Buffer& status) {
-    static_assert(PF_STATUS_SOLVER_FIRST_ROUND == PF_STATUS_SOLVER_RESIDUAL + 1 &&
-                      PF_STATUS_CORRECTION_ITERATIONS == PF_STATUS_CORRECTION_RESIDUAL + 1,
-                  "the correction's figures are copied as one pair of words");
-    runner.copy(report_, PF_STATUS_SOLVER_RESIDUAL * 4, status, PF_STATUS_CORRECTION_RESIDUAL * 4, 8);
+    solver.solve_pair(runner, projection, PressureProblem{in.cell_type, rhs_, potential_, report_, solve_params(params)});
 }
 
 void VolumeCorrection::move(PassRunner& runner, const Inputs& in) {

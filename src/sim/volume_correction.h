@@ -58,23 +58,6 @@ public:
     void solve_paired(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in,
                       const PressureProblem& projection);
 
-    // What the correction's solves needed in a recent step (the status words below, read back a
-    // few steps late), so that its solver issues a margin above that instead of its cap of
-    // iterations (issued_iterations in src/sim/solvers/pressure_solver.h): in a pair solve the
-    // correction's cap set the pair's dispatches whatever the projection needed.
-    struct Recent {
-        uint32_t iterations = kUnknownIterations;
-        float residual = -1.0f;  // < 0: not known
-    };
-    // From the newest status words read back (`status`, PF_STATUS_WORDS of them; null: none yet).
-    static Recent recent_from(const uint32_t* status);
-    void set_recent(const Recent& recent) { recent_ = recent; }
-    // Once a step, before its first solve: the report's per-step words restart.
-    void begin_step();
-    // Once a step, after its last solve: the step's largest residual and most first-round
-    // iterations of the correction into PF_STATUS_CORRECTION_RESIDUAL and _ITERATIONS of `status`.
-    void report_step(PassRunner& runner, const gl::Buffer& status);
-
     // The solve's parameters: the simulation's solver without separation (the potential has
     // either sign), to the pressure's tolerance but never below kTolerance, with at most
     // kMaxKrylovIterations Krylov iterations (a correction that moves part of the excess needs
@@ -104,12 +87,7 @@ public:
     const gl::Buffer& potential() const { return potential_; }
 
 private:
-    // The correction's problem: its buffers, `solve_params` (solve_params(); the problem keeps a
-    // reference to it) and the recent figures.
-    PressureProblem problem(const Inputs& in, const pf_sim_params& solve_params) const;
-
     gl::Buffer rhs_, potential_, report_;
-    Recent recent_;
     StatId setup_stat_ = 0, solve_stat_ = 0, move_stat_ = 0;
 };
 
