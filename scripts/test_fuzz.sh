@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # libFuzzer stage: the samples' scene loader fuzzed (clang, -fsanitize=fuzzer,address,undefined)
 # from the shipped scenes and tests/fuzz/corpus/scene/ for PF_FUZZ_MAX_TIME seconds (default
-# 40, one fuzzing process per core) in build-fuzz/. Only that target is built there (the library
-# plain, with clang).
+# 40, one fuzzing process per core, at most 4) in build-fuzz/. Only that target is built there
+# (the library plain, with clang).
 # Skipped, saying so, when clang or its libFuzzer runtime is missing (scripts/setup.sh installs
 # both).
 #   PF_FUZZ_MAX_TIME=3600 scripts/test_fuzz.sh                  # a longer run by hand
