@@ -507,12 +507,18 @@ int run(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
-    // The pairs run_checks reads (each run is also checked for non-finite velocities).
+    // The configurations each case runs under for run_checks (each run is also checked for
+    // non-finite velocities).
     const std::map<std::string, std::vector<std::string>> check_pairs = {
         {"rotation", {"pic", "apic"}}, {"closed_box", {"jacobi_40", "mgpcg_1e-04", "pic", "flip_0.95"}}};
     if (opt.check) {
-        opt.configs = {"jacobi_40", "mgpcg_1e-04", "pic", "flip_0.95", "apic"};
-        opt.cases = {"rotation", "closed_box"};
+        opt.configs.clear();
+        opt.cases.clear();
+        for (const auto& [c, configs] : check_pairs) {
+            opt.cases.push_back(c);
+            for (const std::string& config : configs)
+                if (std::find(opt.configs.begin(), opt.configs.end(), config) == opt.configs.end()) opt.configs.push_back(config);
+        }
     }
 
     pfs::EglContext ctx(pfs::EglContext::Options{});

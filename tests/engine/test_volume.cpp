@@ -3,7 +3,6 @@
 // (PIC/FLIP compresses slowly: a resting tank loses depth, a dam break loses volume).
 // Every bound is a measurement on llvmpipe with margin, stated next to it.
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <random>
 #include <string>
@@ -274,7 +273,7 @@ void record(const char* prefix, const DamBreakRun& r) {
 // sloshes, about 30 s on llvmpipe) with the same bounds; the long mode (PF_STABILITY_LONG, as the
 // stability suite) the issue's 10 s. The 16^3 dam break above runs 10 s in both.
 TEST_F(Volume, IssueDamBreakKeepsItsLiquidVolumeAtSixtyFramesASecond) {
-    const double seconds = std::getenv("PF_STABILITY_LONG") ? 10.0 : 5.0;
+    const double seconds = long_mode() ? 10.0 : 5.0;
     const DamBreakRun r = issue_dam_break(1.0f / 60.0f, pf_default_sim_params().volume_correction, seconds);
     RecordProperty("seconds", std::to_string(seconds));
     record("", r);

@@ -26,7 +26,6 @@
 // not met (docs/accuracy.md, "The ghost fluid as the default"). The energy bound is the issue's.
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <initializer_list>
 #include <iterator>
@@ -39,8 +38,7 @@
 namespace pf::test {
 namespace {
 
-// CI's fast mode: 3 periods; its long mode (PF_STABILITY_LONG, as the stability suite): 10.
-bool long_mode() { return std::getenv("PF_STABILITY_LONG") != nullptr; }
+// CI's fast mode: 3 periods; its long mode (long_mode(), as the stability suite): 10.
 double periods_to_run() { return long_mode() ? 10.0 : 3.0; }
 
 struct WaveRun {

@@ -129,8 +129,6 @@ void Stability::expect_usable(pf_sim* sim, const pf_sim_desc& d, const std::stri
     check(sim, d, expected, when + ", then used again");
 }
 
-bool long_mode() { return std::getenv("PF_STABILITY_LONG") != nullptr; }
-
 std::string preset_name(const ::testing::TestParamInfo<pf_quality>& info) {
     switch (info.param) {
         case PF_QUALITY_FAST: return "fast";

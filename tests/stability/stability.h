@@ -61,10 +61,6 @@ protected:
     LogRecord log_;
 };
 
-// PF_STABILITY_LONG is set: cases run at their full size and length (by hand; CI runs the fast
-// mode, which keeps every case but shrinks the costliest ones, as each file says).
-bool long_mode();
-
 // Name of a preset for test names: fast, balanced, accurate.
 std::string preset_name(const ::testing::TestParamInfo<pf_quality>& info);
 

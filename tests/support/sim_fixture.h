@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <vector>
@@ -13,6 +14,10 @@
 #include "support/test_context.h"
 
 namespace pf::test {
+
+// PF_STABILITY_LONG is set: the long physics runs go at their full size and length (by hand;
+// CI runs the fast mode, which keeps every case but shrinks the costliest ones, as each file says).
+inline bool long_mode() { return std::getenv("PF_STABILITY_LONG") != nullptr; }
 
 struct SimDeleter {
     void operator()(pf_sim* s) const { pf_destroy(s); }
