@@ -614,8 +614,11 @@ ProjectionCount Simulation::substeps_for(float frame_dt) const {
     }
     demand.acceleration = accel;
     // Leapfrog moves particles along straight lines at a large projection CFL; the strain limits
-    // the compression that makes.
-    if (desc_.params.advection == PF_ADVECTION_LEAPFROG) demand.strain = cfl_strain_;
+    // the compression that makes, and a long frame is cut into projections of at most 1/30 s.
+    if (desc_.params.advection == PF_ADVECTION_LEAPFROG) {
+        demand.strain = cfl_strain_;
+        demand.longest_projection = kLeapfrogLongestProjection;
+    }
     return projections_for(demand);
 }
 

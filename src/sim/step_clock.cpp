@@ -9,6 +9,10 @@ ProjectionCount projections_for(const ProjectionDemand& d) {
     double fewest = 1.0;
     if (d.max_dt > 0.0f) fewest = std::max(fewest, std::ceil(double(d.frame_dt) / double(d.max_dt)));
     if (d.strain > 0.0f) fewest = std::max(fewest, std::ceil(double(d.frame_dt) * d.strain / kStrainRate));
+    // A frame a rounding longer than the longest projection (0.0333334 s against 1/30) takes one.
+    if (d.longest_projection > 0.0f) {
+        fewest = std::max(fewest, std::ceil(double(d.frame_dt) / double(d.longest_projection) - 1e-4));
+    }
     const float v_est = std::max(d.speed + d.acceleration * d.frame_dt, d.imposed_speed);
     const double wanted =
         std::max(fewest, std::ceil(double(d.frame_dt) * v_est / (double(d.cfl) * d.cell_size)));

@@ -68,6 +68,26 @@ TEST(StepClock, StrainLimitsTheCompressionOfStraightMoves) {
     EXPECT_TRUE(k.clamped);
 }
 
+TEST(StepClock, TheLongestProjectionCutsLongFrames) {
+    ProjectionDemand d = demand(0.0f, 8.0f, 16);
+    d.acceleration = 0.0f;  // neither speed nor acceleration asks for more than one
+    d.longest_projection = kLeapfrogLongestProjection;
+    EXPECT_EQ(projections_for(d).count, 1u) << "a 1/60 s frame";
+    for (const float frame : {1.0f / 30.0f, 0.0333334f}) {  // 1/30 s, as a game might round it
+        d.frame_dt = frame;
+        EXPECT_EQ(projections_for(d).count, 1u) << frame;
+    }
+    d.frame_dt = 0.1f;
+    EXPECT_EQ(projections_for(d).count, 3u);
+    d.frame_dt = 0.5f;
+    EXPECT_EQ(projections_for(d).count, 15u);
+    EXPECT_FALSE(projections_for(d).clamped);
+    d.frame_dt = 1.0f;  // 30 wanted: the cap clamps and says so
+    const ProjectionCount k = projections_for(d);
+    EXPECT_EQ(k.count, 16u);
+    EXPECT_TRUE(k.clamped);
+}
+
 TEST(StepClock, TravelIsTheFastestParticlesCellsPerProjection) {
     const ProjectionCount k = projections_for(demand(2.0f, 16.0f, 16));
     EXPECT_EQ(k.count, 1u);
