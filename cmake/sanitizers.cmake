@@ -20,6 +20,7 @@ if(PF_SANITIZE)
   # -O1 and line tables only (after the build type's -O2 -g, so they win): what ASan's reports
   # need, and half the compile time of the instrumented test suites (test_api_validation.cpp:
   # 26.7 s at -O2 -g, 14.2 s at -O1 -g1, 2026-11-26), which was most of CI's sanitizer build.
+  # The GoogleTest programs' own files go further, to -O0 (tests/CMakeLists.txt says which keep -O1).
   add_compile_options(-O1 -g1)
   message(STATUS "pflip: sanitizers on (${PF_SANITIZE_FLAGS})")
 endif()
