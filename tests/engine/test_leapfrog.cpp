@@ -30,6 +30,7 @@ protected:
     Flight fly(pf_advection advection, const std::vector<float>& frames) {
         pf_sim_desc d = test_desc(16, 32, 16, kDx);
         d.params.advection = advection;
+        d.params.cfl = 1.0f;  // the substep counts of kFrames below
         SimPtr sim = create(d);
         if (!sim) return {};
         const float lo[3] = {0.35f, 1.15f, 0.35f}, hi[3] = {0.45f, 1.25f, 0.45f}, v[3] = {1.0f, 0.5f, 0.0f};

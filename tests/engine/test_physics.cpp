@@ -250,6 +250,7 @@ TEST_F(Physics, SubstepsFollowCfl) {
     d.params.pressure_solver = PF_PRESSURE_SOLVER_JACOBI;  // a fixed dispatch count per substep (below)
     d.params.p2g = PF_P2G_FIXED_POINT;                      // one P2G dispatch per substep
     d.params.cfl = 1.0f;  // the counts below: 5 substeps, and the volume correction's schedule in them
+    d.params.advection = PF_ADVECTION_EULER;  // once per 1/60 s (leapfrog corrects in every substep)
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
     const float lo[3] = {0.2f, 0.2f, 0.2f}, hi[3] = {0.6f, 0.6f, 0.6f}, v[3] = {12.0f, 0.0f, 0.0f};

@@ -114,6 +114,7 @@ TEST_F(Push, NextStepTakesSubstepsForThePushedSpeed) {
     pf_sim_desc d = test_desc(16, 16, 16, 0.1f);
     d.params.gravity[1] = 0.0f;
     d.params.max_substeps = 32;
+    d.params.cfl = 1.0f;  // the count below
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
     const float lo[3] = {0.4f, 0.4f, 0.4f}, hi[3] = {1.2f, 1.2f, 1.2f};
