@@ -925,7 +925,8 @@ typedef enum pf_emitter_shape {
     PF_EMITTER_SPHERE = 1,        /**< anywhere in the ball of `radius` */
     PF_EMITTER_DISC = 2,          /**< a nozzle: on the disc of `radius` facing local +y, spread over the flight
                                        of one frame from it (at `velocity`, gravity acting, which also adds to
-                                       their velocity), so a jet leaves it unbroken, however slow */
+                                       their velocity, the jet narrowing as it speeds up), so a jet leaves it
+                                       unbroken, however slow */
     PF_EMITTER_SHAPE_COUNT = 3,
     PF_EMITTER_SHAPE_FORCE32 = 0x7fffffff
 } pf_emitter_shape;

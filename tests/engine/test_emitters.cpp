@@ -158,12 +158,14 @@ TEST_F(Emitters, DiscNozzleShootsAnUnbrokenJetAtItsVelocity) {
 // A slow pour under gravity (a 5 mm nozzle at 0.1 m/s, 2 mm cells, the balanced preset): the jet
 // stays one stream. Mass flux is conserved down a free-falling jet, so 2 mm bands of it from 4 to
 // 30 mm below the nozzle should hold (rate / particle volume) * 2 mm / v(d) particles, v(d) =
-// sqrt(U^2 + 2 g d). Measured: 0.39 to 1.54 times that (a band is one cell high, and the grid
-// transfers average the velocities of the particles that share a cell, so bands bunch a
-// little). Before the disc spread its frame's particles over the flight of a frame with gravity,
-// it spread them over U * dt only while the previous frame's fell further: the bands held 0 to
-// 0.10 times the flux and 2.07 to 2.25 times it between (clumps with gaps; a viscous pour
-// broke into beads). Asserted: every band within 0.25 and 2 times the flux.
+// sqrt(U^2 + 2 g d). Measured on llvmpipe: 0.67 to 1.42 times that (1.50 at a projection CFL of 8,
+// Euler or leapfrog; a band is one cell high and the grid transfers average the velocities of the
+// particles that share a cell). While the disc placed its frame's particles at its full radius
+// with no inward velocity, the projection pulled the top of each frame's batch into the
+// stretching stream below: gaps at the batches' boundaries, 0.39 of the flux at 18 mm (0.00 at
+// 28 mm with leapfrog at CFL 8). Before the disc spread its particles over the flight of a frame
+// with gravity, the bands held 0 to 0.10 times the flux and 2.07 to 2.25 times it between.
+// Asserted: every band within 0.5 and 1.75 times the flux.
 TEST_F(Emitters, SlowPourUnderGravityLeavesAsOneStream) {
     const pf_sim_desc d = balanced_desc(12, 40, 12, 0.002f);
     SimPtr sim = create(d);
@@ -182,8 +184,8 @@ TEST_F(Emitters, SlowPourUnderGravityLeavesAsOneStream) {
             if (below >= top && below < top + band) ++n;
         }
         const double expected = per_second * band / std::sqrt(speed * speed + 2.0 * g * (top + band / 2));
-        EXPECT_GE(double(n), 0.25 * expected) << "band " << top * 1000 << " mm below the nozzle";
-        EXPECT_LE(double(n), 2.0 * expected) << "band " << top * 1000 << " mm below the nozzle";
+        EXPECT_GE(double(n), 0.5 * expected) << "band " << top * 1000 << " mm below the nozzle";
+        EXPECT_LE(double(n), 1.75 * expected) << "band " << top * 1000 << " mm below the nozzle";
         RecordProperty("band_" + std::to_string(int(std::lround(top * 1000))) + "mm_over_flux", std::to_string(n / expected));
     }
 }

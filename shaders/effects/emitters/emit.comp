@@ -65,8 +65,20 @@ void main() {
         float rad = size.x * sqrt(r.x), phi = kTwoPi * r.y;
         p = vec3(rad * cos(phi), 0.0, rad * sin(phi));
         float tau = frame_dt * r.z;
-        along = v * tau + 0.5 * sim.gravity.xyz * (tau * tau);
-        v += sim.gravity.xyz * tau;
+        vec3 g = sim.gravity.xyz;
+        vec3 v_tau = v + g * tau;
+        along = v * tau + 0.5 * g * (tau * tau);
+        // A free jet keeps its flux: as its speed grows its section shrinks by |v0| / |v|, so a
+        // point rad from the axis is rad sqrt(|v0| / |v|) from it tau later, moving inwards at
+        // half the stretch rate d|v|/ds = (v . g) / |v|^2 times that distance: the jet leaves
+        // divergence-free, and the projection does not pull the top of each frame's batch into
+        // the stretching stream below it (which left gaps between the frames' batches).
+        float s0 = length(v), s1 = length(v_tau);
+        if (s0 > 0.0 && s1 > 0.0) {
+            p *= sqrt(s0 / s1);
+            v_tau -= (0.5 * dot(v_tau, g) / (s1 * s1)) * quat_rotate(q, p);
+        }
+        v = v_tau;
     }
     vec3 x = ps.xyz + quat_rotate(q, p) + along;
     pos[slot] = vec4(keep_in_domain(x), 0.0);
