@@ -199,8 +199,9 @@ typedef enum pf_advection {
                                        frame's end. Ballistic motion is exact and the collapse of a column
                                        lags less at large CFL (docs/accuracy.md); one extra advection pass a
                                        pf_step. For large CFLs: the substeps are also at least what the
-                                       liquid's strain asks (pf_stats.strain) and at most 1/30 s long, and
-                                       the volume correction runs in every substep (docs/design.md §5) */
+                                       liquid's strain asks (pf_stats.strain) and at most 0.5 sqrt(cell_size /
+                                       |gravity|) long, and the volume correction runs in every substep
+                                       (docs/design.md §5) */
     PF_ADVECTION_RK2_OFFSET = 4,  /**< RK2's path through the grid velocity plus the particle's own difference
                                        from it at the substep's start: FLIP's velocity where the grid is uniform,
                                        bent by the grid's change along the path (walls, obstacles); holds the

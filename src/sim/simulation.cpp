@@ -614,10 +614,13 @@ ProjectionCount Simulation::substeps_for(float frame_dt) const {
     }
     demand.acceleration = accel;
     // Leapfrog moves particles along straight lines at a large projection CFL; the strain limits
-    // the compression that makes, and a long frame is cut into projections of at most 1/30 s.
+    // the compression that makes, and a long frame is cut into projections of at most half the
+    // gravity time sqrt(dx / |g|).
     if (desc_.params.advection == PF_ADVECTION_LEAPFROG) {
         demand.strain = cfl_strain_;
         demand.longest_projection = kLeapfrogLongestProjection;
+        const float* g = desc_.params.gravity;
+        demand.gravity = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
     }
     return projections_for(demand);
 }

@@ -9,10 +9,9 @@ ProjectionCount projections_for(const ProjectionDemand& d) {
     double fewest = 1.0;
     if (d.max_dt > 0.0f) fewest = std::max(fewest, std::ceil(double(d.frame_dt) / double(d.max_dt)));
     if (d.strain > 0.0f) fewest = std::max(fewest, std::ceil(double(d.frame_dt) * d.strain / kStrainRate));
-    // A frame a rounding longer than the longest projection (0.0333334 s against 1/30) takes one.
-    if (d.longest_projection > 0.0f) {
-        fewest = std::max(fewest, std::ceil(double(d.frame_dt) / double(d.longest_projection) - 1e-4));
-    }
+    // A frame a rounding longer than the longest projection takes one.
+    const float longest = longest_projection_seconds(d.longest_projection, d.cell_size, d.gravity);
+    if (longest > 0.0f) fewest = std::max(fewest, std::ceil(double(d.frame_dt) / double(longest) - 1e-4));
     const float v_est = std::max(d.speed + d.acceleration * d.frame_dt, d.imposed_speed);
     const double wanted =
         std::max(fewest, std::ceil(double(d.frame_dt) * v_est / (double(d.cfl) * d.cell_size)));
@@ -21,6 +20,11 @@ ProjectionCount projections_for(const ProjectionDemand& d) {
     out.clamped = wanted > double(d.max_projections);
     out.travel_cells = float(double(d.frame_dt) / out.count * v_est / d.cell_size);
     return out;
+}
+
+float longest_projection_seconds(float units, float cell_size, float gravity) {
+    if (!(units > 0.0f) || !(gravity > 0.0f) || !(cell_size > 0.0f)) return 0.0f;
+    return units * std::sqrt(cell_size / gravity);
 }
 
 BudgetPlan fit_budget(float budget_ms, uint32_t wanted, uint32_t max_iterations, const MeasuredStep& m) {

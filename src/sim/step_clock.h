@@ -25,8 +25,10 @@ struct ProjectionDemand {
     // (shaders/sim/metrics.comp; the previous step's readback), for an integrator that moves
     // particles along straight lines at large CFL (leapfrog); 0: no strain limit.
     float strain = 0.0f;
-    // The integrator's longest projection step, s (kLeapfrogLongestProjection); 0: no limit.
+    // The integrator's longest projection step in units of the gravity time sqrt(cell_size /
+    // gravity) (kLeapfrogLongestProjection); 0, or no gravity: no limit.
     float longest_projection = 0.0f;
+    float gravity = 0.0f;         // |g|, m/s^2
 };
 
 // A straight move of dt through a divergence-free flow changes a volume by the factor
@@ -36,12 +38,19 @@ struct ProjectionDemand {
 // over perturbed fills, 1% missed one (docs/accuracy.md, "The strain count").
 constexpr float kStrainRate = 0.5f;  // 1/s
 
-// Leapfrog's longest projection step, s. At a large projection CFL a slow liquid asks for one
-// projection however long the frame, and a whole frame of 0.1 s is too long a step for the
-// pressure and the volume correction of a liquid at rest (a noisy tank at 0.1 s frames rose 6%,
-// a dam break at 0.5 s frames lost 16% of its volume: docs/design.md §5). A game at 30 frames a
-// second still takes one projection a frame.
-constexpr float kLeapfrogLongestProjection = 1.0f / 30.0f;
+// Leapfrog's longest projection step, in units of sqrt(dx / |g|): the time in which gravity moves
+// liquid about a cell, so that a liquid and the same liquid built larger (Froude similarity) take
+// the same steps. At a large projection CFL a slow liquid asks for one projection however long
+// the frame, and a projection much longer than that is too long a step for the pressure and the
+// volume correction of a liquid at rest: a noisy tank's depth changed 6.1% in 10 s at 0.99 of the
+// unit (10 cm cells, 0.1 s frames), 6.2% in 3.2 s at 1 cm cells and 30 frames a second (the same
+// flow, built smaller), 1.9% in 7 s at 0.69 and 0.4% in 5 s at 0.49 (docs/design.md §5). A 1/60 s
+// frame takes one projection from cells of 10.9 mm up.
+constexpr float kLeapfrogLongestProjection = 0.5f;
+
+// The longest projection step in seconds: kLeapfrogLongestProjection-like `units` of
+// sqrt(cell_size / gravity); 0 (no limit) without gravity.
+float longest_projection_seconds(float units, float cell_size, float gravity);
 
 struct ProjectionCount {
     uint32_t count = 1;

@@ -1,5 +1,7 @@
 // The step's clocks without a GL context (src/sim/step_clock.h): how many projections a frame
 // takes and how far the velocity is extrapolated for the particle trace.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "pf/pf.h"
@@ -71,21 +73,50 @@ TEST(StepClock, StrainLimitsTheCompressionOfStraightMoves) {
 TEST(StepClock, TheLongestProjectionCutsLongFrames) {
     ProjectionDemand d = demand(0.0f, 8.0f, 16);
     d.acceleration = 0.0f;  // neither speed nor acceleration asks for more than one
+    d.cell_size = 0.1f;
+    d.gravity = 9.81f;
     d.longest_projection = kLeapfrogLongestProjection;
+    const float unit = std::sqrt(0.1f / 9.81f);  // 0.101 s
+    EXPECT_FLOAT_EQ(longest_projection_seconds(kLeapfrogLongestProjection, 0.1f, 9.81f), 0.5f * unit);
     EXPECT_EQ(projections_for(d).count, 1u) << "a 1/60 s frame";
-    for (const float frame : {1.0f / 30.0f, 0.0333334f}) {  // 1/30 s, as a game might round it
+    for (const float frame : {0.5f * unit, 0.5f * unit * 1.00001f}) {  // exactly the longest, and a rounding above
         d.frame_dt = frame;
         EXPECT_EQ(projections_for(d).count, 1u) << frame;
     }
     d.frame_dt = 0.1f;
-    EXPECT_EQ(projections_for(d).count, 3u);
+    EXPECT_EQ(projections_for(d).count, 2u);
     d.frame_dt = 0.5f;
-    EXPECT_EQ(projections_for(d).count, 15u);
+    EXPECT_EQ(projections_for(d).count, 10u);
     EXPECT_FALSE(projections_for(d).clamped);
-    d.frame_dt = 1.0f;  // 30 wanted: the cap clamps and says so
+    d.frame_dt = 1.0f;  // 20 wanted: the cap clamps and says so
     const ProjectionCount k = projections_for(d);
     EXPECT_EQ(k.count, 16u);
     EXPECT_TRUE(k.clamped);
+    // Without gravity nothing sets the unit: no limit.
+    d.gravity = 0.0f;
+    d.frame_dt = 0.5f;
+    EXPECT_EQ(projections_for(d).count, 1u);
+}
+
+// Froude similarity: a liquid built 100 times larger, its frames sqrt(100) times longer, takes
+// the same projections (1 mm cells at 4 ms frames, 10 cm at 40 ms, 10 m at 0.4 s).
+TEST(StepClock, TheLongestProjectionScalesWithTheCell) {
+    for (const float frame_units : {0.4f, 0.6f, 1.3f, 3.7f}) {
+        uint32_t counts[3] = {};
+        const float cells[3] = {1e-3f, 0.1f, 10.0f};
+        for (int i = 0; i < 3; ++i) {
+            ProjectionDemand d = demand(0.0f, 8.0f, 64);
+            d.acceleration = 0.0f;
+            d.cell_size = cells[i];
+            d.gravity = 9.81f;
+            d.longest_projection = kLeapfrogLongestProjection;
+            d.frame_dt = frame_units * std::sqrt(cells[i] / 9.81f);
+            counts[i] = projections_for(d).count;
+        }
+        EXPECT_EQ(counts[0], counts[1]) << frame_units;
+        EXPECT_EQ(counts[2], counts[1]) << frame_units;
+        EXPECT_EQ(counts[1], uint32_t(std::ceil(frame_units / kLeapfrogLongestProjection))) << frame_units;
+    }
 }
 
 TEST(StepClock, TravelIsTheFastestParticlesCellsPerProjection) {
