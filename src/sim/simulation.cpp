@@ -615,7 +615,7 @@ ProjectionCount Simulation::substeps_for(float frame_dt) const {
     demand.acceleration = accel;
     // Leapfrog moves particles along straight lines at a large projection CFL; the strain limits
     // the compression that makes, and a long frame is cut into projections of at most half the
-    // gravity time sqrt(dx / |g|).
+    // gravity time sqrt(dx / |g|), the unit of both.
     if (desc_.params.advection == PF_ADVECTION_LEAPFROG) {
         demand.strain = cfl_strain_;
         demand.longest_projection = kLeapfrogLongestProjection;

@@ -8,7 +8,10 @@ namespace pf {
 ProjectionCount projections_for(const ProjectionDemand& d) {
     double fewest = 1.0;
     if (d.max_dt > 0.0f) fewest = std::max(fewest, std::ceil(double(d.frame_dt) / double(d.max_dt)));
-    if (d.strain > 0.0f) fewest = std::max(fewest, std::ceil(double(d.frame_dt) * d.strain / kStrainRate));
+    if (d.strain > 0.0f) {
+        const double unit = d.gravity > 0.0f ? std::sqrt(double(d.cell_size) / d.gravity) : double(kStrainGravityTime);
+        fewest = std::max(fewest, std::ceil(double(d.frame_dt) * d.strain / kStrainRate * unit / kStrainGravityTime));
+    }
     // A frame a rounding longer than the longest projection takes one.
     const float longest = longest_projection_seconds(d.longest_projection, d.cell_size, d.gravity);
     if (longest > 0.0f) fewest = std::max(fewest, std::ceil(double(d.frame_dt) / double(longest) - 1e-4));

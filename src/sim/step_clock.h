@@ -28,15 +28,23 @@ struct ProjectionDemand {
     // The integrator's longest projection step in units of the gravity time sqrt(cell_size /
     // gravity) (kLeapfrogLongestProjection); 0, or no gravity: no limit.
     float longest_projection = 0.0f;
-    float gravity = 0.0f;         // |g|, m/s^2
+    float gravity = 0.0f;         // |g|, m/s^2: the gravity time sqrt(cell_size / gravity) is the unit of both limits above
 };
 
 // A straight move of dt through a divergence-free flow changes a volume by the factor
 // 1 - dt^2 P (strain compresses, rotation expands), so k projections of frame_dt / k compress
 // the liquid by frame_dt^2 P / k a frame. The strain limit keeps that at most kStrainRate
-// times the frame's length, 0.83% per 1/60 s: the dam-break experiments' bounds held there
-// over perturbed fills, 1% missed one (docs/accuracy.md, "The strain count").
-constexpr float kStrainRate = 0.5f;  // 1/s
+// times the frame's length in units of the gravity time sqrt(dx / |g|) over the gravity time of
+// the laboratory columns it was measured on (kStrainGravityTime): 0.83% per 1/60 s there, where
+// the dam-break experiments' bounds held over perturbed fills and 1% missed one (docs/accuracy.md,
+// "The strain count"). In units of the gravity time a liquid and the same liquid built larger take
+// the same projections; in seconds, the columns built four times larger took half as many and
+// two of eight lost liquid volume to compression (docs/accuracy.md, "The strain count at a
+// game's size").
+constexpr float kStrainRate = 0.5f;  // 1/s at kStrainGravityTime
+// sqrt(dx / |g|) of the Martin & Moyce columns at 16 cells (3.572 mm), s; without gravity the
+// strain limit takes this unit.
+constexpr float kStrainGravityTime = 0.0190816f;
 
 // Leapfrog's longest projection step, in units of sqrt(dx / |g|): the time in which gravity moves
 // liquid about a cell, so that a liquid and the same liquid built larger (Froude similarity) take
@@ -60,8 +68,8 @@ struct ProjectionCount {
 
 // The speed was measured at the end of the previous step: it may grow by one frame of
 // acceleration before this frame ends. k = clamp(ceil(frame_dt v / (cfl dx)), 1, max), at least
-// as many as the effects' own limits, the strain limit (frame_dt P / kStrainRate) and the
-// integrator's longest projection ask for.
+// as many as the effects' own limits, the strain limit (frame_dt P / kStrainRate times the gravity
+// time over kStrainGravityTime) and the integrator's longest projection ask for.
 ProjectionCount projections_for(const ProjectionDemand& demand);
 
 // The GPU time of the newest measured step (the library's own timer queries, a few steps late).

@@ -72,8 +72,9 @@ TEST_F(Leapfrog, AThrownBlockFollowsItsParabola) {
 
 // A collapsing column at laboratory scale (4 mm cells), at a projection CFL of 8: its speed asks
 // for one projection a frame, its strain for several. Each step takes
-// max(speed count, ceil(frame_dt P / 0.5 1/s)) projections from the previous step's readback
-// (docs/design.md §5), and the volume correction moves the particles in every one of them.
+// max(speed count, ceil(frame_dt P / 0.5 1/s * sqrt(dx / |g|) / 0.0190816 s)) projections from the
+// previous step's readback (docs/design.md §5), and the volume correction moves the particles in
+// every one of them.
 TEST_F(Leapfrog, AStrainingFlowTakesTheProjectionsItsStrainAsks) {
     constexpr float kCell = 0.004f, kFrame = 1.0f / 60.0f;
     pf_sim_desc d = test_desc(32, 20, 4, kCell);
@@ -92,7 +93,8 @@ TEST_F(Leapfrog, AStrainingFlowTakesTheProjectionsItsStrainAsks) {
         if (f >= 2) {  // the first steps also count the speed of the fill
             const double v = before.max_speed + 9.81 * kFrame;
             const double by_speed = std::max(1.0, std::ceil(kFrame * v / (d.params.cfl * kCell)));
-            const double by_strain = std::ceil(kFrame * double(before.strain) / 0.5);
+            const double gravity_time = std::sqrt(double(kCell) / 9.81);
+            const double by_strain = std::ceil(kFrame * double(before.strain) / 0.5 * gravity_time / 0.0190816);
             EXPECT_EQ(double(st.substeps), std::min(16.0, std::max(by_speed, by_strain)))
                 << "frame " << f << ": strain " << before.strain << " 1/s^2, speed " << before.max_speed << " m/s";
             raised += by_strain > by_speed;

@@ -70,6 +70,42 @@ TEST(StepClock, StrainLimitsTheCompressionOfStraightMoves) {
     EXPECT_TRUE(k.clamped);
 }
 
+// The strain limit's unit is the gravity time sqrt(dx / |g|), measured at the laboratory columns'
+// 3.572 mm cells: there it is 0.5 1/s, at 4 times their cells (2 times the gravity time) a
+// frame may compress half as much; without gravity the laboratory's unit.
+TEST(StepClock, StrainLimitIsInGravityTime) {
+    ProjectionDemand d = demand(0.0f, 8.0f, 16);
+    d.strain = 0.022f * 3600.0f;  // 2.64 times what a 1/60 s frame may compress with one projection
+    d.gravity = 9.81f;
+    d.cell_size = 9.81f * kStrainGravityTime * kStrainGravityTime;  // 3.572 mm
+    EXPECT_EQ(projections_for(d).count, 3u);
+    d.cell_size *= 4.0f;
+    EXPECT_EQ(projections_for(d).count, 6u);  // 5.28
+    d.gravity = 0.0f;
+    EXPECT_EQ(projections_for(d).count, 3u);
+}
+
+// Froude similarity: the same flow 100 times larger (strain 1/100, frames 10 times longer) takes
+// the same projections.
+TEST(StepClock, TheStrainLimitScalesWithTheCell) {
+    for (const float strain_at_1mm : {3e3f, 2e4f, 1e5f}) {
+        uint32_t counts[3] = {};
+        const float cells[3] = {1e-3f, 0.1f, 10.0f};
+        for (int i = 0; i < 3; ++i) {
+            ProjectionDemand d = demand(0.0f, 8.0f, 64);
+            d.acceleration = 0.0f;
+            d.cell_size = cells[i];
+            d.gravity = 9.81f;
+            d.frame_dt = 0.4f * std::sqrt(cells[i] / 9.81f);
+            d.strain = strain_at_1mm * 1e-3f / cells[i];
+            counts[i] = projections_for(d).count;
+        }
+        EXPECT_GT(counts[1], 1u) << strain_at_1mm;
+        EXPECT_EQ(counts[0], counts[1]) << strain_at_1mm;
+        EXPECT_EQ(counts[2], counts[1]) << strain_at_1mm;
+    }
+}
+
 TEST(StepClock, TheLongestProjectionCutsLongFrames) {
     ProjectionDemand d = demand(0.0f, 8.0f, 16);
     d.acceleration = 0.0f;  // neither speed nor acceleration asks for more than one
