@@ -28,7 +28,9 @@ struct ProjectionDemand {
     // The integrator's longest projection step in units of the gravity time sqrt(cell_size /
     // gravity) (kLeapfrogLongestProjection); 0, or no gravity: no limit.
     float longest_projection = 0.0f;
-    float gravity = 0.0f;         // |g|, m/s^2: the gravity time sqrt(cell_size / gravity) is the unit of both limits above
+    // |g|, m/s^2: the gravity time sqrt(cell_size / gravity) is the unit of the strain limit and of
+    // the longest projection.
+    float gravity = 0.0f;
 };
 
 // A straight move of dt through a divergence-free flow changes a volume by the factor
