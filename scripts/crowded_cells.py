@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The most crowded cell of a dam break, frame by frame (docs/performance.md, issue 18 step 8):
+"""The most crowded cell of a dam break, frame by frame (docs/notes/2026-11-27-wall-return.md):
 how many particles it holds, where inside it they sit (how many on a wall's plane), how they move,
 and how full its neighbours are. dam_break_1m's tank (2 x 1 x 1 m) at N cells a metre, 8 particles
 a cell, the balanced preset, through the Python client.

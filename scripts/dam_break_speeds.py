@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""What sets a dam break's substep count, frame by frame (docs/performance.md, issue 18 step 7):
+"""What sets a dam break's substep count, frame by frame
+(docs/notes/2026-11-27-kernel-profile-and-gaps.md):
 the fastest particles (how many exceed 1.5 times the speed of free fall from the column's top, and
 where the fastest are) and the most crowded cells. dam_break_1m's tank (2 x 1 x 1 m) and column
 (0.75 x 0.75 x 1 m) at N cells a metre, 8 particles a cell, the balanced preset, through the

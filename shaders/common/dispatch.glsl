@@ -9,7 +9,7 @@ uint flat_id() {
 
 // The coordinates of flat index i in a box of d (x fastest), with two integer divisions (each a
 // long instruction sequence on GPUs); i % d.x, (i / d.x) % d.y, i / (d.x d.y) takes three
-// divisions and two modulos (docs/performance.md, step 7).
+// divisions and two modulos (docs/notes/2026-11-27-kernel-profile-and-gaps.md).
 ivec3 unflatten(int i, ivec3 d) {
     int row = i / d.x;
     int k = row / d.y;

@@ -95,7 +95,7 @@ float mirror_sum(float t[8]) {
 // crossed a wall is put back a quarter cell inside, where pf_fill_box's outermost samples lie (8
 // a cell): parked on the wall plane, a particle interpolates almost none of the normal velocity
 // or volume correction of the face inside it, so it stays there, and such particles piled up
-// where walls meet (docs/performance.md, issue 18 step 8). "Crossed" means beyond kWallEps, so
+// where walls meet (docs/notes/2026-11-27-wall-return.md). "Crossed" means beyond kWallEps, so
 // that rounding near n cannot make mirrored runs differ. A position within kWallEps of the plane
 // is only kept kWallEps inside: moving it further would lift particles off the floor, a ratchet
 // that adds energy. Positions inside [kWallEps, n - kWallEps] are returned unchanged.

@@ -124,7 +124,7 @@ public:
     };
     // Issues two recordings of independent work (neither reads what the other writes) in
     // lockstep: one barrier before each pair of their passes and none between the two, so the
-    // GPU may overlap them (docs/performance.md, "Independent dispatches overlap"). Each pass is
+    // GPU may overlap them (docs/notes/2026-12-01-overlapping-solves-leapfrog.md). Each pass is
     // counted under its own entry; the whole is timed as one pair under the entry of the first
     // pass of `a` (else of `b`; a timestamp between the two would wait for the first).
     void run_interleaved(const Recorded& a, const Recorded& b);

@@ -266,7 +266,7 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
     p.g2p = apic ? ProgramId::g2p_apic : params.flip_ratio > 0.0f ? ProgramId::g2p_flip : ProgramId::g2p_pic;
     // A scheme that groups particles by tile lets G2P read the grid in that order, which pays
     // from a few MiB of face velocities once the particles' memory order has lost its spatial
-    // order (docs/performance.md, "Ordered particle passes from 4 MiB": on the H200 after 150
+    // order (docs/notes/2026-12-04-ordered-particle-passes.md: on the H200 after 150
     // frames, dam_break_1m 18-31% faster, 1 MiB grids 0-3% slower). APIC's G2P keeps slot order:
     // its 64 bytes a particle of writes scatter in tile order (dam_break_10m 57% slower, "Tried
     // and not kept: APIC's G2P in the tiled P2G's particle order").

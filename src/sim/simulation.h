@@ -171,7 +171,7 @@ public:
     // one invocation a cell (SolverGrid): 65,536, those of 64^3 cells; none on a CPU rasteriser. On
     // the H200 the frame is 3-10% faster up to 96 x 48 x 48 cells; from 128 x 64 x 64, where the
     // orbits fill the GPU, four times more invocations made it slower, and on llvmpipe slower at
-    // every size (docs/performance.md, "Reductions by grid size"). Orbits, not cells: the two
+    // every size (docs/notes/2026-12-04-reductions-by-grid-size.md). Orbits, not cells: the two
     // mappings' sums match bit for bit while the last workgroup adds at most 512 partials
     // (orbit_main.glsl), and 65,536 orbits make 256 whatever the grid's shape (a slab one cell
     // thick has about one orbit for two cells).

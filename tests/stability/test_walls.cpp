@@ -9,7 +9,7 @@
 // Case 14: a wall lets go of a crowd. Particles the wall clamp stops sit where it puts them; at
 // 1e-3 cells from the wall they interpolated a thousandth of the inner face's normal velocity and
 // volume correction and stayed there, and on dam_break_10m thousands gathered in the cells where
-// the near wall meets the floor (docs/performance.md, issue 18 step 8). Now a wall returns what
+// the near wall meets the floor (docs/notes/2026-11-27-wall-return.md). Now a wall returns what
 // crosses it a quarter cell inside.
 #include <algorithm>
 #include <cmath>

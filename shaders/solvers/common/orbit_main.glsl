@@ -10,8 +10,8 @@
 //   invocation m + PF_WORKGROUP_SIZE qq doing one cell of orbit m, placed so that the first two
 //   levels of the workgroup's tree add the orbit as the first mapping does. The GPU then waits on
 //   one cell's loads where it waited on four in turn, which pays where the orbits are few (a 24^3
-//   grid's fill 14 workgroups) and costs where they fill the GPU (docs/performance.md,
-//   "Reductions by grid size").
+//   grid's fill 14 workgroups) and costs where they fill the GPU
+//   (docs/notes/2026-12-04-reductions-by-grid-size.md).
 // With PF_LAST_GROUP defined, the last workgroup to finish (counted with an atomic in the
 // state buffer, reset by that workgroup) then adds up all the partials in a fixed order and
 // calls the kernel's void last_group_step(sums_t total) in invocation 0: a scalar step without a
@@ -57,7 +57,7 @@ void main() {
         // A statement a member, not one expression of four calls: a contribution may write
         // (mg_smooth_zstats.comp's in-place half-sweep), and NVIDIA's GL ran the expression
         // slower, and summed wrongly once a contribution read back its own write
-        // (docs/performance.md, "An orbit's cells in four statements").
+        // (docs/notes/2026-12-05-orbit-four-statements.md).
         sums_t m0 = orbit_member(a, 0);
         sums_t m1 = orbit_member(a, 1);
         sums_t m2 = orbit_member(a, 2);
