@@ -72,9 +72,11 @@ void main() {
         // point rad from the axis is rad sqrt(|v0| / |v|) from it tau later, moving inwards at
         // half the stretch rate d|v|/ds = (v . g) / |v|^2 times that distance: the jet leaves
         // divergence-free, and the projection does not pull the top of each frame's batch into
-        // the stretching stream below it (which left gaps between the frames' batches).
+        // the stretching stream below it (which left gaps between the frames' batches). Only
+        // where gravity has sped the jet up: one it slows is left as it leaves the disc, since its
+        // widening would grow without bound toward the top of its flight.
         float s0 = length(v), s1 = length(v_tau);
-        if (s0 > 0.0 && s1 > 0.0) {
+        if (s0 > 0.0 && s1 > s0 && dot(v_tau, g) > 0.0) {
             p *= sqrt(s0 / s1);
             v_tau -= (0.5 * dot(v_tau, g) / (s1 * s1)) * quat_rotate(q, p);
         }
