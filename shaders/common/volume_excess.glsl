@@ -12,8 +12,8 @@
 // Needs common/sim.glsl and the cell types, counts and pressures as `cell_type[]`,
 // `cell_count[]` and `pressure[]`.
 
-// Surplus a ghost-fluid surface cell keeps, in rest counts (measured: docs/accuracy.md, "The ghost
-// fluid as the default").
+// Surplus a ghost-fluid surface cell keeps, in rest counts (measured:
+// docs/notes/2026-11-26-ghost-fluid-default.md).
 const float kGhostSurfaceDeadBand = 0.25;
 
 float volume_excess(ivec3 ijk) {

@@ -38,11 +38,11 @@ struct ProjectionDemand {
 // the liquid by frame_dt^2 P / k a frame. The strain limit keeps that at most kStrainRate
 // times the frame's length in units of the gravity time sqrt(dx / |g|) over the gravity time of
 // the laboratory columns it was measured on (kStrainGravityTime): 0.83% per 1/60 s there, where
-// the dam-break experiments' bounds held over perturbed fills and 1% missed one (docs/accuracy.md,
-// "The strain count"). In units of the gravity time a liquid and the same liquid built larger take
-// the same projections; in seconds, the columns built four times larger took half as many and
-// two of eight lost liquid volume to compression (docs/accuracy.md, "The strain count at a
-// game's size").
+// the dam-break experiments' bounds held over perturbed fills and 1% missed one
+// (docs/notes/2026-12-05-strain-count-accuracy.md). In units of the gravity time a liquid and the
+// same liquid built larger take the same projections; in seconds, the columns built four times
+// larger took half as many and two of eight lost liquid volume to compression (docs/accuracy.md,
+// "The strain count at a game's size").
 constexpr float kStrainRate = 0.5f;  // 1/s at kStrainGravityTime
 // sqrt(dx / |g|) of the Martin & Moyce columns at 16 cells (3.572 mm), s; without gravity the
 // strain limit takes this unit.

@@ -78,8 +78,8 @@ public:
     // The largest displacement of one run, in cells an axis (shaders/sim/volume_correction_move.comp):
     // half a cell per kInterval of the substep dt, between a quarter and a half. Half a cell in
     // each of several projections a frame clumped the floor's rows of a column; a quarter in a
-    // frame of one projection left a tank's gauge further from the experiment (docs/accuracy.md,
-    // "The strain count").
+    // frame of one projection left a tank's gauge further from the experiment
+    // (docs/notes/2026-12-05-strain-count-accuracy.md).
     static float reach_cells(const pf_sim_params& params, float dt) {
         return every_projection(params) ? std::clamp(0.5f * dt / kInterval, 0.25f, 0.5f) : 0.5f;
     }

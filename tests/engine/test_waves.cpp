@@ -24,7 +24,7 @@
 // period bound (2%), which the marker-cell surface fails. Over 10 periods on the H100 they lose
 // 4.5-9.5% (fast, balanced) and 11-14% (accurate, APIC), every period within 1.3%: the accurate
 // preset's long-mode guard is 20% and 5%. Issue 17's 5% loss bound for balanced and accurate is
-// not met (docs/accuracy.md, "The ghost fluid as the default"). The energy bound is the issue's.
+// not met (docs/notes/2026-11-26-ghost-fluid-default.md). The energy bound is the issue's.
 #include <cmath>
 #include <cstdio>
 #include <functional>

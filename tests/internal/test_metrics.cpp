@@ -147,7 +147,7 @@ TEST_F(Metrics, KineticEnergyOfAFreeFallGrowsWithTimeSquared) {
     // default fixed-point P2G rounds each face's momentum (max_speed / 2^21 over the face's
     // weight, large on the rim's barely reached faces); a converged projection (the default
     // MGPCG) then acts on that rounding: measured 1.3e-4 of the energy too much at frame 3, 2e-7
-    // with the gather (docs/accuracy.md, "Particle-to-grid").
+    // with the gather (docs/notes/2026-11-23-p2g-schemes.md).
     d.params.p2g = PF_P2G_SORTED_GATHER;
     SimPtr sim = create(d);
     ASSERT_TRUE(sim);
