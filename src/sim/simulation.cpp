@@ -592,7 +592,8 @@ ProjectionCount Simulation::substeps_for(float frame_dt) const {
     float v_max = cfl_speed_;
     if (added_at_step_ > cfl_step_) v_max = std::max(v_max, added_speed_);
     const float* g = desc_.params.gravity;
-    float accel = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    const float gravity = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    float accel = gravity;
     for (uint32_t i = 0; i < kEffectCount; ++i) {
         if (desc_.features & (1u << i)) v_max = std::max(v_max, effects_[i]->added_speed());
     }
@@ -619,8 +620,7 @@ ProjectionCount Simulation::substeps_for(float frame_dt) const {
     if (desc_.params.advection == PF_ADVECTION_LEAPFROG) {
         demand.strain = cfl_strain_;
         demand.longest_projection = kLeapfrogLongestProjection;
-        const float* g = desc_.params.gravity;
-        demand.gravity = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        demand.gravity = gravity;
     }
     return projections_for(demand);
 }

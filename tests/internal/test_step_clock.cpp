@@ -21,6 +21,17 @@ ProjectionDemand demand(float speed, float cfl, uint32_t max) {
     return d;
 }
 
+// At rest under Earth's gravity in cells of `cell` metres, a frame of `frame_units` gravity
+// times sqrt(cell / g): the same flow at every cell size (Froude similarity).
+ProjectionDemand at_scale(float cell, float frame_units) {
+    ProjectionDemand d = demand(0.0f, 8.0f, 64);
+    d.acceleration = 0.0f;
+    d.cell_size = cell;
+    d.gravity = 9.81f;
+    d.frame_dt = frame_units * std::sqrt(cell / 9.81f);
+    return d;
+}
+
 TEST(StepClock, ProjectionsFollowTheProjectionCfl) {
     // 2 m/s + 1/60 s of gravity = 2.1635 m/s: 3.6 cells of 1 cm in a frame.
     EXPECT_EQ(projections_for(demand(2.0f, 1.0f, 16)).count, 4u);
@@ -92,11 +103,7 @@ TEST(StepClock, TheStrainLimitScalesWithTheCell) {
         uint32_t counts[3] = {};
         const float cells[3] = {1e-3f, 0.1f, 10.0f};
         for (int i = 0; i < 3; ++i) {
-            ProjectionDemand d = demand(0.0f, 8.0f, 64);
-            d.acceleration = 0.0f;
-            d.cell_size = cells[i];
-            d.gravity = 9.81f;
-            d.frame_dt = 0.4f * std::sqrt(cells[i] / 9.81f);
+            ProjectionDemand d = at_scale(cells[i], 0.4f);
             d.strain = strain_at_1mm * 1e-3f / cells[i];
             counts[i] = projections_for(d).count;
         }
@@ -141,12 +148,8 @@ TEST(StepClock, TheLongestProjectionScalesWithTheCell) {
         uint32_t counts[3] = {};
         const float cells[3] = {1e-3f, 0.1f, 10.0f};
         for (int i = 0; i < 3; ++i) {
-            ProjectionDemand d = demand(0.0f, 8.0f, 64);
-            d.acceleration = 0.0f;
-            d.cell_size = cells[i];
-            d.gravity = 9.81f;
+            ProjectionDemand d = at_scale(cells[i], frame_units);
             d.longest_projection = kLeapfrogLongestProjection;
-            d.frame_dt = frame_units * std::sqrt(cells[i] / 9.81f);
             counts[i] = projections_for(d).count;
         }
         EXPECT_EQ(counts[0], counts[1]) << frame_units;
