@@ -29,7 +29,7 @@ PANELS = [
     ("standing_wave", "energy_gain_max_pct", "energy rise, max, % of the wave's"),
     ("standing_wave_thin", "energy_gain_max_pct", "energy rise, max, % of the wave's"),
     # Mass over density (pf_stats.liquid_volume): the capped count sum (volume_drift_pct) also
-    # reads the spread of particle counts as loss (docs/design.md §4.5).
+    # reads the spread of particle counts as loss (docs/design.md §4.11).
     ("dam_break", "liquid_volume_drift_pct", "|liquid volume drift|, %"),
 ]
 

@@ -8,7 +8,7 @@
 // separation on, so is a cell beside a wall or obstacle whose pressure (the last solve's) is 0:
 // the liquid there may be leaving the wall (a slab falling away from the lid), and pulling it
 // back would hold it up. Where the pressure presses the liquid against the wall, the cell is
-// corrected both ways (making every wall one-sided would inflate the liquid: docs/design.md).
+// corrected both ways (making every wall one-sided would inflate the liquid: docs/notes/2026-11-25-volume-correction.md).
 // Needs common/sim.glsl and the cell types, counts and pressures as `cell_type[]`,
 // `cell_count[]` and `pressure[]`.
 

@@ -8,7 +8,7 @@
 // the wall the face stays 0 (free-slip). Only where AIR touches the cell: a box full of liquid
 // has no pressure gauge (its pressure is known up to a constant) and nothing to let in; and only
 // ceilings: liquid slides down a side wall anyway, and letting every wall go added energy to a
-// capillary wave (docs/design.md §2). Runs before the pressure setup, after every force on the
+// capillary wave (docs/notes/2026-11-27-wall-release.md). Runs before the pressure setup, after every force on the
 // faces; each wall face belongs to one cell and it reads only interior faces, so it races with
 // nothing. A grid one cell thick along an axis keeps its walls.
 #include "common/sim.glsl"

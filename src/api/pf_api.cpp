@@ -53,7 +53,7 @@ pf_sim_params full_default_params() {
     p.pressure_iterations = 40;
     p.jacobi_omega = 1.0f;
     p.cfl = 1.0f;
-    p.max_substeps = 16;  // measured: 8 lost 9% of a dam break at 0.5 s frames, 16 3% (design.md §4.5)
+    p.max_substeps = 16;  // measured: 8 lost 9% of a dam break at 0.5 s frames, 16 3% (docs/notes/2026-11-25-volume-correction.md)
     p.extrapolation_layers = 2;
     // The balanced preset (issue 6: the default must keep a resting tank and a dam break's volume):
     // MGPCG converged to 1e-3 in place of the original's 40 Jacobi sweeps, separation off because
@@ -62,7 +62,7 @@ pf_sim_params full_default_params() {
     p.pressure_solver = PF_PRESSURE_SOLVER_MGPCG;
     p.pressure_tolerance = 1e-3f;
     p.sor_omega = 1.6f;
-    p.volume_correction = 0.5f;  // measured: docs/design.md §4.5
+    p.volume_correction = 0.5f;  // measured: docs/notes/2026-11-25-volume-correction.md
     p.free_surface = PF_FREE_SURFACE_GHOST_FLUID;  // waves keep their amplitude and period (docs/accuracy.md)
     // Fixed point's sums bit for bit, 2.6 times faster at 1.2M particles (docs/performance.md).
     p.p2g = PF_P2G_TILED;

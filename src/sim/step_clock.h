@@ -54,7 +54,7 @@ constexpr float kStrainGravityTime = 0.0190816f;
 // the frame, and a projection much longer than that is too long a step for the pressure and the
 // volume correction of a liquid at rest: a noisy tank's depth changed 6.1% in 10 s at 0.99 of the
 // unit (10 cm cells, 0.1 s frames), 6.2% in 3.2 s at 1 cm cells and 30 frames a second (the same
-// flow, built smaller), 1.9% in 7 s at 0.69 and 0.4% in 5 s at 0.49 (docs/design.md §5). A 1/60 s
+// flow, built smaller), 1.9% in 7 s at 0.69 and 0.4% in 5 s at 0.49 (docs/notes/2026-12-05-leapfrog-longest-projection.md). A 1/60 s
 // frame takes one projection from cells of 10.9 mm up.
 constexpr float kLeapfrogLongestProjection = 0.5f;
 

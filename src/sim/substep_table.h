@@ -2,7 +2,7 @@
 // the pressure solver and the effects that are on each register entries, in order, and a
 // substep runs the table from top to bottom. The simulation rebuilds it whenever what decides
 // its entries changes (parameters, features, a snapshot); a fused pass replaces the entries it
-// fuses instead of lines in a function. docs/design.md §1a lists the entries.
+// fuses instead of lines in a function. docs/design.md §4 lists the entries.
 #pragma once
 #include <functional>
 #include <string>

@@ -69,7 +69,7 @@ public:
     static pf_sim_params solve_params(const pf_sim_params& params);
     // Simulated time between two runs within a step (the first substep of every step runs it):
     // at 60 frames a second once a step; in long frames every substep of 1/60 s or longer
-    // (docs/design.md §4.5: once per 0.5 s frame left the last substeps' counts 5% thin).
+    // (docs/notes/2026-11-25-volume-correction.md: once per 0.5 s frame left the last substeps' counts 5% thin).
     static constexpr float kInterval = 1.0f / 60.0f;
     // Leapfrog's large steps compress the liquid within a frame (a straight move through strain),
     // and a correction once a frame left the short dam break 8.7% compressed at 32 cells; with it

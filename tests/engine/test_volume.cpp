@@ -240,7 +240,7 @@ TEST_F(Volume, DamBreakAtHalfSecondFramesLosesLittleVolume) {
 // the capped count sum of particle_volume also reads the cell-to-cell spread of counts in a
 // disordered liquid as loss (measured at the end of the 10 s 1/60 run: interior cells hold 7.98
 // particles on average, rest 8, with a standard deviation of 0.71, which costs the capped sum
-// 2.6%; docs/design.md §4.5).
+// 2.6%; docs/notes/2026-11-25-volume-correction.md).
 struct DamBreakRun {
     double liquid_end = 0, liquid_worst = 0;  // drift of the liquid volume: at the end, largest |drift| sampled
     double particle_end = 0;                  // drift of the capped count sum at the end (reported)

@@ -1,4 +1,4 @@
-// The substep as a table of stages (src/sim/substep_table.h, docs/design.md §1a): the table's
+// The substep as a table of stages (src/sim/substep_table.h, docs/design.md §4): the table's
 // own rules, and the entries a simulation's parameters and effects give it.
 #include <string>
 #include <vector>
