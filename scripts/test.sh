@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 # ctest runs one test per core, so llvmpipe runs each test's GL work on the test's own thread
 # (0: no worker threads, which would wait for each other at every dispatch) instead of one
-# thread per core each (the README's Tests section says what that saves). GPU drivers ignore it.
+# thread per core each (docs/notes/2026-12-05-llvmpipe-threads-in-ci.md: what that saves). GPU drivers ignore it.
 export LP_NUM_THREADS="${LP_NUM_THREADS:-0}"
 stage() {  # runs one stage and says how long it took (CI time is budgeted per stage)
   local start=$SECONDS
