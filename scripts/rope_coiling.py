@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Does a poured viscous rope coil? (issue 21; docs/effects.md, "Coiling"). A disc emitter pours a
+"""Does a poured viscous rope coil? (docs/effects.md, "Coiling"; the runs: docs/notes/2026-11-28-rope-coiling.md). A disc emitter pours a
 rope of radius a0 at speed U0 from height H onto the floor of a square tank; every sample the
 rope's centre is found just above the heap it lays (the lowest 1-cell layers that hold no more
 than a few rope cross-sections) and in fixed layers, and its direction from the nozzle's axis is

@@ -35,7 +35,7 @@ public:
     // rho_mean the mean of the liquid's and the air's densities, rho / 2 (Brackbill, Kothe &
     // Zemach 1992, eq. 61); the substep is kept at kLimitShare of it. At the whole limit a drop in
     // zero gravity grew unstable, at 0.7 a capillary wave gained energy; at half both hold
-    // (docs/effects.md).
+    // (docs/notes/2026-11-27-surface-tension-choices.md).
     static constexpr float kLimitShare = 0.5f;
     CflBound cfl_bound(float speed) const override;
     // The tension a substep of dt seconds is stable at: settings().tension, or less when
