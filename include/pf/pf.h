@@ -19,8 +19,12 @@
  *
  * GL contract: pflip never creates a GL context. pf_create() loads GL entry points through
  * the engine's get_proc_address and uses the context current at that moment; every later
- * call on the same pf_sim must find that context (or one sharing its objects) current.
+ * call on the same pf_sim must find that same context current (pflip's vertex arrays,
+ * framebuffers and queries belong to it alone: a context that only shares its objects will not do).
  * Each call restores the GL state it touches (program, buffer bindings, query state).
+ *
+ * Frames: "world" positions, velocities and forces below are in the simulation's frame, which is
+ * the world unless PF_FEATURE_DOMAIN_MOTION places the domain in it (pf_domain_motion).
  */
 /**
  * @file pf.h
@@ -549,7 +553,8 @@ typedef struct pf_gl_buffers {
     uint32_t draw_indirect;       /**< GL buffer holding, at offset 0, a DrawArraysIndirectCommand
                                        {live count, 1, 0, 0} (glDrawArraysIndirect of the particles as
                                        points) and, at offset 16, {4, live count, 0, 0} (a 4-vertex strip
-                                       instanced once per particle); kept current on the GPU */
+                                       instanced once per particle); kept current on the GPU, readable by
+                                       glDrawArraysIndirect right after pf_step */
 } pf_gl_buffers;
 
 /** Kinds of whitewater particle (pf_whitewater_buffers.velocities, w). */
@@ -719,7 +724,7 @@ PF_API pf_result pf_get_gpu_budget(const pf_sim* sim, float* milliseconds);
  * library's only global state, guarded by a mutex; each simulation's state is its own.
  *
  * Threading. pflip starts no threads. Calls on one simulation must come from the thread on which
- * its GL context (or one sharing its objects) is current, one at a time: every call taking a
+ * its GL context is current, one at a time: every call taking a
  * pf_sim*, pf_create and pf_destroy included. Calls on different simulations in different
  * contexts may run on different threads at once. A call on a handle must not race with
  * pf_destroy of that handle on another thread. These may be called from any thread at any time:

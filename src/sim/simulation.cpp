@@ -690,9 +690,10 @@ pf_result Simulation::step(float frame_dt) {
     fence_capped_[slot] = iteration_cap_ < desc_.params.pressure_iterations;
     fence_added_[slot] = added_total_;
 
-    // Engines may read the particle buffers as vertex data, SSBOs or by copying.
+    // Engines may read the particle buffers as vertex data, SSBOs or by copying, and draw them
+    // through the draw_indirect records the GPU wrote (emitters, sinks, whitewater).
     gl_.MemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
-                      GL_BUFFER_UPDATE_BARRIER_BIT);
+                      GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     last_substeps_ = substeps;
     last_cpu_ms_ = std::chrono::duration<float, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return PF_OK;
