@@ -116,8 +116,9 @@ TEST_F(RenderSurface, UnfilteredSurfaceFailsTheBound) {
 }
 
 // The dam break's bound, with the default look at both counts and resolutions (measured on
-// llvmpipe: 5.4-8.8 degrees, docs/rendering.md); the look before issue 19 (the bilateral filter,
-// 8 pixels wide at every distance: 11.1-14.1) and no filter (21-24) exceed it.
+// llvmpipe: 5.4-8.8 degrees, docs/rendering.md); the older look (the bilateral filter, 8 pixels
+// wide at every distance: 11.1-14.1) and no filter (21-24) exceed it
+// (docs/notes/2026-11-27-dam-break-roughness.md).
 constexpr double kMaxDamBreakRoughnessDegrees = 10.0;
 
 TEST_F(RenderSurface, DamBreakRoughness) {

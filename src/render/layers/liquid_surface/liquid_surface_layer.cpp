@@ -19,7 +19,7 @@ using gl::ProgramId;
 
 namespace {
 // Diameter on screen (pixels) of a sphere from which the compute splat sums thickness per
-// workgroup (ssf_splat.comp, PF_SPLAT_SHARED). On the H100 (docs/rendering.md) spheres 5.0 px
+// workgroup (ssf_splat.comp, PF_SPLAT_SHARED). On the H100 (docs/notes/2026-11-27-render-cost-steps.md) spheres 5.0 px
 // across gained (dam_break_1m at 720p), 3.7 px lost (dam_break_10m at 1080p).
 constexpr double kSharedThicknessDiameter = 4.5;
 
@@ -103,7 +103,7 @@ std::vector<RenderPass> LiquidSurfaceLayer::passes(const RenderFrame& f) {
 
 // A compute copy (ssf_scene_copy.comp) rather than a blit: it needs no framebuffer around the
 // engine's textures (nothing to attach, complete or detach), and on the H100 a 1080p blit of
-// colour and depth took 0.52 ms (docs/rendering.md).
+// colour and depth took 0.52 ms (docs/notes/2026-11-26-render-cost-steps.md).
 void LiquidSurfaceLayer::scene_copy(RenderContext& c, const RenderFrame& f) {
     const gl::Api& gl = c.gl();
     c.bind_texture(PF_TEX_SCENE_COLOR, GL_TEXTURE_2D, f.target->scene_color, false);
@@ -259,7 +259,7 @@ void LiquidSurfaceLayer::resolve(RenderContext& c, const RenderFrame& f) {
     gl.UseProgram(resolve_);
     if (tiled_resolve_) {
         // Only the tiles the splat resolve found liquid in: on the H100 a full-screen 1080p
-        // resolve was 0.13 ms of fragment work, mostly discarded (docs/rendering.md).
+        // resolve was 0.13 ms of fragment work, mostly discarded (docs/notes/2026-11-27-render-cost-steps.md).
         gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, PF_SSBO_LIQUID_TILES, liquid_tiles_.id());
         c.draw_indirect_without_attributes(liquid_tiles_.id());
     } else {
