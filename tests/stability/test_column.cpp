@@ -3,7 +3,8 @@
 // compression of its level over 10 s. CI's fast mode runs a 4 x 64 x 4 column (the same
 // behaviour, measured: the 40-sweep Jacobi fails it alike), PF_STABILITY_LONG the full one. (Measured on the original scheme at commit e9ca6cd: after
 // 5 s speeds up to 6.7 sqrt(g dx) and the level 0.65 m lower; the hydrostatic start and the
-// volume correction fixed it, docs/stability.md.)
+// volume correction fixed it: docs/notes/2026-11-23-stability-suite-first-figures.md,
+// docs/notes/2026-11-25-stability-volume-correction.md.)
 #include <cmath>
 #include <random>
 
@@ -50,11 +51,11 @@ double rms_speed_of(const ParticleState& p) {
 // The same column filled with uniformly random positions instead of the fill lattice: cell
 // counts scatter around the rest density (8 +- 2.8, a few cells inside even empty), so the start
 // is not an equilibrium and the pressure must even it out across 96 cells of depth. Every preset
-// brings it to rest without losing its level (issue 17). Before, the fast preset's 40 Jacobi
+// brings it to rest without losing its level. Before, the fast preset's 40 Jacobi
 // sweeps could not: measured on llvmpipe at 8 x 128 x 8, the level fell 1.5 m in 3 s without
 // volume correction and with the velocity correction the column boiled up to 31 m/s; the test
 // then only asked that PF_FLAG_ENERGY_GAINED be raised. The fast preset now solves with MGPCG to
-// 1e-2 and the correction moves positions only (docs/stability.md, case 7).
+// 3e-3 and the correction moves positions only (docs/notes/2026-11-25-stability-volume-correction.md).
 TEST_P(Column, RandomlyFilledColumnSettles) {
     const uint32_t w = column_width(), h = 16 * w;
     const pf_sim_desc d = desc(w, h, w, 0.05f);

@@ -1,7 +1,7 @@
 // Case 10 (docs/stability.md): every combination of the accuracy ladder — pressure solver x
 // transfer x advection, with fixed-point P2G; and the other P2G schemes (float atomics, sorted
 // gather) with both transfers on the cheapest and the most accurate solver — on cases 1 (a dam break at 0.5 s frames), 5 (a closed full box) and 6
-// (liquid in two mirrored corners), each small and short. Every run must be sound; the closed
+// (liquid in two mirrored corners), and a 1 x 16 x 1 shaft at rest, each small and short. Every run must be sound; the closed
 // box at rest and the two corners mirror images.
 #include <cmath>
 #include <string>

@@ -4,7 +4,7 @@
 // gradient after advection; moved with its velocity, its solid faces also push the liquid
 // (v + w x r) and the CFL estimate takes its surface speed. Either way every particle must stay
 // sound and outside it after every step (measured with the feature off: particle centres up to
-// 0.13 m inside), and its force readback finite. Emitters and sinks are not built yet (issue 8).
+// 0.13 m inside), and its force readback finite. Emitters and sinks: tests/stability/test_sources.cpp.
 #include <cmath>
 
 #include "stability/stability.h"
