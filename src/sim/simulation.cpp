@@ -657,6 +657,17 @@ pf_result Simulation::step(float frame_dt) {
     // VolumeCorrection::kInterval of simulated time has passed (compression grows with time,
     // not with frames: at 60 frames a second it runs once a step), or in every one
     // (VolumeCorrection::every_projection).
+    const bool correcting = desc_.params.volume_correction > 0.0f;
+    if (correcting) {
+        // What the correction's solves needed lately (as for the projection: a readback of another
+        // solver's step says nothing), so that a pair solve issues that, not the correction's cap.
+        const uint32_t needed = status_words_[PF_STATUS_CORRECTION_ITERATIONS];
+        const bool known = recent_solver_ == desc_.params.pressure_solver && needed > 0;
+        float residual = -1.0f;
+        if (known) std::memcpy(&residual, &status_words_[PF_STATUS_CORRECTION_RESIDUAL], sizeof residual);
+        volume_correction_.set_recent(known ? needed : kUnknownIterations, residual);
+        volume_correction_.begin_step();
+    }
     const bool correct_always = VolumeCorrection::every_projection(desc_.params);
     const float substep_dt = frame_dt / float(substeps);
     float since_correction = 0.0f;
@@ -670,6 +681,7 @@ pf_result Simulation::step(float frame_dt) {
         run_substep(correct, leapfrog && s + 1 == substeps);
         since_correction += substep_dt;
     }
+    if (correcting) volume_correction_.report(*runner_, status_);
     run_count_stage(EffectStage::after_substeps);
     run_metrics();
     runner_->end_step();

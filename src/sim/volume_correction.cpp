@@ -52,13 +52,35 @@ void VolumeCorrection::setup(PassRunner& runner, const Inputs& in) {
 
 void VolumeCorrection::solve(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params, const Inputs& in) {
     const PassRunner::StatScope as_correction(runner, solve_stat_);
-    solver.solve(runner, PressureProblem{in.cell_type, rhs_, potential_, report_, solve_params(params)});
+    const pf_sim_params p = solve_params(params);
+    solver.solve(runner, PressureProblem{in.cell_type, rhs_, potential_, report_, p, recent_iterations_, kUnknownIterations,
+                                         recent_converged(p), recent_residual_});
 }
 
 void VolumeCorrection::solve_paired(PassRunner& runner, PressureSolver& solver, const pf_sim_params& params,
                                     const Inputs& in, const PressureProblem& projection) {
     // Counted with the projection's solve: its passes are the projection's passes.
-    solver.solve_pair(runner, projection, PressureProblem{in.cell_type, rhs_, potential_, report_, solve_params(params)});
+    const pf_sim_params p = solve_params(params);
+    solver.solve_pair(runner, projection,
+                      PressureProblem{in.cell_type, rhs_, potential_, report_, p, recent_iterations_, kUnknownIterations,
+                                      recent_converged(p), recent_residual_});
+}
+
+bool VolumeCorrection::recent_converged(const pf_sim_params& solve) const {
+    return recent_residual_ >= 0.0f && recent_residual_ <= solve.pressure_tolerance;
+}
+
+void VolumeCorrection::begin_step() {
+    const uint32_t zeros[4] = {};
+    static_assert(PF_STATUS_SOLVER_LATER_ROUNDS == PF_STATUS_SOLVER_ITERATIONS + 3, "contiguous words");
+    report_.upload(PF_STATUS_SOLVER_ITERATIONS * 4, sizeof zeros, zeros);
+}
+
+void VolumeCorrection::report(PassRunner& runner, const gl::Buffer& status) {
+    static_assert(PF_STATUS_SOLVER_FIRST_ROUND == PF_STATUS_SOLVER_RESIDUAL + 1 &&
+                      PF_STATUS_CORRECTION_ITERATIONS == PF_STATUS_CORRECTION_RESIDUAL + 1,
+                  "the residual and the first round's iterations are contiguous in both");
+    runner.copy(report_, PF_STATUS_SOLVER_RESIDUAL * 4, status, PF_STATUS_CORRECTION_RESIDUAL * 4, 8);
 }
 
 void VolumeCorrection::move(PassRunner& runner, const Inputs& in) {

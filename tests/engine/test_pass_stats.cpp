@@ -132,6 +132,42 @@ TEST_F(PassStats, IssuedIterationsFollowTheReadBackNeed) {
     RecordProperty("dispatches_later", std::to_string(later));
 }
 
+// The volume correction's solve, paired with the projection's (MGPCG without separation), issues
+// what it needed a few steps ago too: both problems' needs read back, the pair issues the larger
+// plus a margin. Before its need was read back the pair issued the correction's whole cap, 10
+// iterations (src/sim/volume_correction.h, kMaxKrylovIterations), in every projection the
+// correction ran: leapfrog's, here, where it runs in each. An MGPCG solve's "mgpcg" entry is two
+// passes an iteration (A p, the update) and five a solve besides (begin, right-hand side, start,
+// final residual, report).
+TEST_F(PassStats, TheVolumeCorrectionsSolveIssuesWhatItNeeded) {
+    pf_sim_desc d = test_desc(16, 16, 16, 0.05f);
+    d.params.advection = PF_ADVECTION_LEAPFROG;
+    d.params.cfl = 8.0f;
+    SimPtr sim = create(d);
+    ASSERT_TRUE(sim);
+    const float lo[3] = {0, 0, 0}, hi[3] = {0.4f, 0.6f, 0.8f};
+    ASSERT_EQ(pf_fill_box(sim.get(), lo, hi, nullptr), PF_OK);
+    constexpr double kPassesPerIteration = 2.0, kPassesPerSolve = 5.0, kCorrectionCap = 10.0;
+    auto per_projection = [&] {
+        pf_stats st{};
+        EXPECT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+        return double(pass_map(sim.get()).at("mgpcg").dispatches) / st.substeps;
+    };
+    for (int i = 0; i < 12; ++i) {
+        glFinish();  // lets the status readback of the previous step arrive
+        ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+    }
+    const double later = per_projection();
+    glFinish();
+    pf_stats st{};
+    ASSERT_EQ(pf_get_stats(sim.get(), &st), PF_OK);
+    // The projection's own issue (its need plus 2) stays below the correction's cap.
+    ASSERT_LE(st.solver_iterations, 7u) << "a projection that needs this many would issue the cap by itself";
+    EXPECT_LT(later, kPassesPerIteration * kCorrectionCap + kPassesPerSolve) << st.solver_iterations << " iterations";
+    EXPECT_LE(st.solver_residual, d.params.pressure_tolerance);
+    RecordProperty("mgpcg_dispatches_per_projection", std::to_string(later));
+}
+
 // A stationary solver far from its tolerance skips its intermediate convergence checks: once a
 // residual more than ten times the tolerance has been read back, 12 Jacobi sweeps cost 12 +
 // start (2) + final check and report (4) dispatches per substep instead of 12 + 2 + 2 + 4.
