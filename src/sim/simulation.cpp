@@ -653,10 +653,6 @@ pf_result Simulation::step(float frame_dt) {
     step_substeps_ = substeps;
     begin_effects_step(frame_dt);
     run_count_stage(EffectStage::before_substeps);
-    // The volume correction: in the first substep, then again whenever another
-    // VolumeCorrection::kInterval of simulated time has passed (compression grows with time,
-    // not with frames: at 60 frames a second it runs once a step), or in every one
-    // (VolumeCorrection::every_projection).
     const bool correcting = desc_.params.volume_correction > 0.0f;
     if (correcting) {
         // What the correction's solves needed lately (as for the projection: a readback of another
@@ -668,6 +664,10 @@ pf_result Simulation::step(float frame_dt) {
         volume_correction_.set_recent(known ? needed : kUnknownIterations, residual);
         volume_correction_.begin_step();
     }
+    // The volume correction: in the first substep, then again whenever another
+    // VolumeCorrection::kInterval of simulated time has passed (compression grows with time,
+    // not with frames: at 60 frames a second it runs once a step), or in every one
+    // (VolumeCorrection::every_projection).
     const bool correct_always = VolumeCorrection::every_projection(desc_.params);
     const float substep_dt = frame_dt / float(substeps);
     float since_correction = 0.0f;

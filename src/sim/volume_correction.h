@@ -88,7 +88,7 @@ public:
     // What its solves needed lately, from the status words read back a few steps late
     // (PF_STATUS_CORRECTION_*; kUnknownIterations and a residual below 0: not known): its solves
     // issue that need plus a margin (issued_iterations in sim/solvers/pressure_solver.h), not the
-    // whole of kMaxKrylovIterations, which a pair solve's projection would issue with it.
+    // whole of kMaxKrylovIterations (a pair solve issues the larger of its two problems' counts).
     void set_recent(uint32_t iterations, float residual) {
         recent_iterations_ = iterations;
         recent_residual_ = residual;
