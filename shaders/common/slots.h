@@ -260,8 +260,9 @@
 #define PF_STATUS_VISCOSITY_PROJECTION_ITERATIONS 18 /* and most iterations of its solves' first round */
 #define PF_STATUS_STRAIN 19 /* sum of the strain P over interior FLUID cells / FLUID cells, 1/s^2 */
 #define PF_STATUS_CORRECTION_RESIDUAL 20 /* the volume correction's solves: largest final residual */
-#define PF_STATUS_CORRECTION_ITERATIONS 21 /* and most iterations of their first round (0: none ran) */
-#define PF_STATUS_WORDS 22
+#define PF_STATUS_CORRECTION_ITERATIONS 21 /* and most iterations of their first round */
+#define PF_STATUS_CORRECTION_RAN 22 /* 1 where the step ran the correction (the two above are its) */
+#define PF_STATUS_WORDS 23
 
 /* status flag bits; equal to PF_FLAG_* in pf.h (checked by static_assert) */
 #define PF_GPU_FLAG_P2G_OVERFLOW 1u

@@ -654,14 +654,16 @@ pf_result Simulation::step(float frame_dt) {
     begin_effects_step(frame_dt);
     run_count_stage(EffectStage::before_substeps);
     const bool correcting = desc_.params.volume_correction > 0.0f;
+    const uint32_t ran = correcting ? 1u : 0u;
+    status_.upload(PF_STATUS_CORRECTION_RAN * 4, sizeof ran, &ran);
     if (correcting) {
         // What the correction's solves needed lately (as for the projection: a readback of another
-        // solver's step says nothing), so that a pair solve issues that, not the correction's cap.
-        const uint32_t needed = status_words_[PF_STATUS_CORRECTION_ITERATIONS];
-        const bool known = recent_solver_ == desc_.params.pressure_solver && needed > 0;
+        // solver's step, or of a step without the correction, says nothing), so that a pair solve
+        // issues that, not the correction's cap. A need of 0 is known: no cell was over-full.
+        const bool known = recent_solver_ == desc_.params.pressure_solver && status_words_[PF_STATUS_CORRECTION_RAN] == 1u;
         float residual = -1.0f;
         if (known) std::memcpy(&residual, &status_words_[PF_STATUS_CORRECTION_RESIDUAL], sizeof residual);
-        volume_correction_.set_recent(known ? needed : kUnknownIterations, residual);
+        volume_correction_.set_recent(known ? status_words_[PF_STATUS_CORRECTION_ITERATIONS] : kUnknownIterations, residual);
         volume_correction_.begin_step();
     }
     // The volume correction: in the first substep, then again whenever another

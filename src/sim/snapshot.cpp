@@ -30,7 +30,8 @@ constexpr char kMagic[8] = {'p', 'f', 'l', 'i', 'p', 's', 'n', 'p'};
 // 6: the effects' state holds the surface tension's settings (2026-11-27).
 // 7: the viscosity settings gained coupling_rounds (2026-11-28).
 // 8: the readbacks and the CFL state gained the strain (PF_STATUS_STRAIN, 2026-12-05).
-// 9: the status words gained the volume correction's residual and iterations (22 words, 2026-12-06).
+// 9: the status words gained the volume correction's residual, iterations and whether it ran
+// (23 words, 2026-12-06).
 constexpr uint32_t kFormat = 9;
 
 struct Header {

@@ -85,7 +85,7 @@ public:
     static float reach_cells(const pf_sim_params& params, float dt) {
         return every_projection(params) ? std::clamp(0.5f * dt / kInterval, 0.25f, 0.5f) : 0.5f;
     }
-    // What its solves needed lately, from the status words read back a few steps late
+    // What its solves needed lately, from the status words of the newest step read back
     // (PF_STATUS_CORRECTION_*; kUnknownIterations and a residual below 0: not known): its solves
     // issue that need plus a margin (issued_iterations in sim/solvers/pressure_solver.h), not the
     // whole of kMaxKrylovIterations (a pair solve issues the larger of its two problems' counts).

@@ -152,7 +152,7 @@ TEST_F(VolumeCorrectionPass, OffMovesNothing) {
 // Measured on llvmpipe: the largest difference in position is 2.1e-6 m after 10 frames; it
 // grows with the flow (against the two solves on separate instances: 6e-8 m after one frame,
 // 1.5e-3 m after 20, where one run's rounding had sent a particle into another cell), so the
-// comparison stops at 10. The last step's solver passes: 93 against 69 + 93.
+// comparison stops at 10. The last step's solver passes: 69 against 69 + 69.
 TEST_F(VolumeCorrectionPass, PairedWithTheProjectionMatchesItsOwnSolve) {
     std::vector<float> pos[2];
     uint64_t solve_dispatches[2] = {0, 0}, correction_dispatches[2] = {0, 0};

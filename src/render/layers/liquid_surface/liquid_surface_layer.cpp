@@ -19,8 +19,8 @@ using gl::ProgramId;
 
 namespace {
 // Diameter on screen (pixels) of a sphere from which the compute splat sums thickness per
-// workgroup (ssf_splat.comp, PF_SPLAT_SHARED). On the H100 (docs/notes/2026-11-27-render-cost-steps.md) spheres 5.0 px
-// across gained (dam_break_1m at 720p), 3.7 px lost (dam_break_10m at 1080p).
+// workgroup (ssf_splat.comp, PF_SPLAT_SHARED; docs/notes/2026-11-27-render-cost-steps.md). Measured on
+// the H100: spheres 5.0 px across gained (dam_break_1m at 720p), 3.7 px lost (dam_break_10m at 1080p).
 constexpr double kSharedThicknessDiameter = 4.5;
 
 // Diameter in pixels of a liquid sphere at the simulation grid's centre.
