@@ -656,19 +656,9 @@ pf_result Simulation::step(float frame_dt) {
     const bool correcting = desc_.params.volume_correction > 0.0f;
     const uint32_t ran = correcting ? 1u : 0u;
     status_.upload(PF_STATUS_CORRECTION_RAN * 4, sizeof ran, &ran);
-    if (correcting) {
-        // What the correction's solves needed lately (as for the projection: a readback of another
-        // solver's step, or of a step without the correction, says nothing), so that a pair solve
-        // issues that, not the correction's cap. Nor does a need of 0 (no cell was over-full):
-        // issued 2 on it, the next solve was cut short where cells filled up, and the particles
-        // changed (SurfaceTension.CubeRelaxesTowardASphere's volume 2.02% high, bound 2%).
-        const bool known = recent_solver_ == desc_.params.pressure_solver && status_words_[PF_STATUS_CORRECTION_RAN] == 1u &&
-                           status_words_[PF_STATUS_CORRECTION_ITERATIONS] > 0;
-        float residual = -1.0f;
-        if (known) std::memcpy(&residual, &status_words_[PF_STATUS_CORRECTION_RESIDUAL], sizeof residual);
-        volume_correction_.set_recent(known ? status_words_[PF_STATUS_CORRECTION_ITERATIONS] : kUnknownIterations, residual);
-        volume_correction_.begin_step();
-    }
+    // What the correction's solves needed lately (as for the projection: a readback of another
+    // solver's step says nothing).
+    if (correcting) volume_correction_.begin_step(status_words_.data(), recent_solver_ == desc_.params.pressure_solver);
     // The volume correction: in the first substep, then again whenever another
     // VolumeCorrection::kInterval of simulated time has passed (compression grows with time,
     // not with frames: at 60 frames a second it runs once a step), or in every one

@@ -67,8 +67,6 @@ public:
     static constexpr float kTolerance = 1e-3f;
     static constexpr uint32_t kMaxKrylovIterations = 10;
     static pf_sim_params solve_params(const pf_sim_params& params);
-    // Whether its recent solves met the tolerance `solve` (solve_params) asks for.
-    bool recent_converged(const pf_sim_params& solve) const;
     // Simulated time between two runs within a step (the first substep of every step runs it):
     // at 60 frames a second once a step; in long frames every substep of 1/60 s or longer
     // (docs/notes/2026-11-25-volume-correction.md: once per 0.5 s frame left the last substeps' counts 5% thin).
@@ -85,16 +83,12 @@ public:
     static float reach_cells(const pf_sim_params& params, float dt) {
         return every_projection(params) ? std::clamp(0.5f * dt / kInterval, 0.25f, 0.5f) : 0.5f;
     }
-    // What its solves needed lately, from the status words of the newest step read back
-    // (PF_STATUS_CORRECTION_*; kUnknownIterations and a residual below 0: not known): its solves
-    // issue that need plus a margin (issued_iterations in sim/solvers/pressure_solver.h), not the
-    // whole of kMaxKrylovIterations (a pair solve issues the larger of its two problems' counts).
-    void set_recent(uint32_t iterations, float residual) {
-        recent_iterations_ = iterations;
-        recent_residual_ = residual;
-    }
-    // Before a step's first correction: its figures restart, as the projection's do.
-    void begin_step();
+    // Before a step that corrects: learns what its solves needed lately from `status_words`, the
+    // newest step read back (PF_STATUS_CORRECTION_*), so that they issue that need plus a margin
+    // (issued_iterations in sim/solvers/pressure_solver.h), not the whole of kMaxKrylovIterations
+    // (a pair solve issues the larger of its two problems' counts); and restarts its figures, as
+    // the projection's do. `same_solver`: that step solved with the simulation's solver.
+    void begin_step(const uint32_t* status_words, bool same_solver);
     // After a step's last correction: copies its most iterations and largest residual into the
     // status words that are read back (PF_STATUS_CORRECTION_RESIDUAL, _ITERATIONS).
     void report(PassRunner& runner, const gl::Buffer& status);
@@ -103,8 +97,11 @@ public:
     const gl::Buffer& potential() const { return potential_; }
 
 private:
+    // Its problem for the parameters `solve` (solve_params), with what recent solves needed.
+    PressureProblem problem(const Inputs& in, const pf_sim_params& solve) const;
+
     gl::Buffer rhs_, potential_, report_;
-    uint32_t recent_iterations_ = kUnknownIterations;
+    uint32_t recent_iterations_ = kUnknownIterations;  // not known, as a residual below 0
     float recent_residual_ = -1.0f;
     StatId setup_stat_ = 0, solve_stat_ = 0, move_stat_ = 0;
 };
