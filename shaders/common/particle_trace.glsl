@@ -33,7 +33,7 @@ vec3 trace_wall_clamp(vec3 x, inout WallsCrossed walls) {
 
 // Whether x lies in a SOLID cell (positions beyond a wall count in the cell inside it).
 bool in_solid_cell(vec3 x) {
-    ivec3 c = clamp(ivec3(floor(grid_coord(x))), ivec3(0), sim.grid.xyz - 1);
+    ivec3 c = cell_of(grid_coord(x));
     return PF_CELL_KIND(cell_type[cell_index(c)]) == PF_CELL_SOLID;
 }
 

@@ -10,13 +10,16 @@ layout(std140, binding = PF_UBO_SIM) uniform SimUniforms {
 #undef PF_UNIFORM
 } sim;
 
-int cell_index(ivec3 c) { return c.x + sim.grid.x * (c.y + sim.grid.y * c.z); }
-ivec3 cell_coord(int c) { return unflatten(c, sim.grid.xyz); }
+int cell_index(ivec3 c) { return lattice_index(sim.grid.xyz, c); }
+ivec3 cell_coord(int c) { return lattice_coord(sim.grid.xyz, c); }
 
 // Half cells (2 x 2 x 2 per cell, h = floor(2 g)), x fastest: the sorted-gather P2G's buckets.
-int half_cell_index(ivec3 h) { return h.x + 2 * sim.grid.x * (h.y + 2 * sim.grid.y * h.z); }
+int half_cell_index(ivec3 h) { return lattice_index(2 * sim.grid.xyz, h); }
 
-bool cell_inside(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, sim.grid.xyz)); }
+bool cell_inside(ivec3 c) { return lattice_inside(sim.grid.xyz, c); }
+// The id spaces a cell kernel and a face kernel run over: [0, cell_total()), [0, face_total()).
+int cell_total() { return sim.grid.w; }
+int face_total() { return sim.face_count.w; }
 
 // Sample counts of the lattice of face component `axis`.
 ivec3 face_dims(int axis) {
@@ -29,22 +32,28 @@ int face_offset(int axis) {
     return axis == 0 ? 0 : (axis == 1 ? sim.face_count.x : sim.face_count.x + sim.face_count.y);
 }
 
-int face_index(int axis, ivec3 f) {
-    ivec3 d = face_dims(axis);
-    return face_offset(axis) + f.x + d.x * (f.y + d.y * f.z);
-}
+int face_index(int axis, ivec3 f) { return face_offset(axis) + lattice_index(face_dims(axis), f); }
 
 // Inverse of face_index over the concatenated lattices.
 void decode_face(int id, out int axis, out ivec3 f) {
     axis = id < sim.face_count.x ? 0 : (id < sim.face_count.x + sim.face_count.y ? 1 : 2);
     int local = id - face_offset(axis);
-    f = unflatten(local, face_dims(axis));
+    f = lattice_coord(face_dims(axis), local);
 }
+
+bool face_inside(int axis, ivec3 f) { return lattice_inside(face_dims(axis), f); }
+
+// The words of face `face` in the P2G accumulator: 2 face (momentum), 2 face + 1 (weight).
+int accum_word(int face, int k) { return 2 * face + k; }
 
 // Domain walls are the boundary faces of each lattice (free-slip: normal velocity 0).
 bool face_is_wall(int axis, ivec3 f) { return f[axis] == 0 || f[axis] == sim.grid[axis]; }
 
 vec3 grid_coord(vec3 world) { return (world - sim.origin.xyz) / sim.dx; }
+
+// The cell holding grid coordinate g, clamped into the grid; the half cell (2 x 2 x 2 a cell).
+ivec3 cell_of(vec3 g) { return clamp(ivec3(floor(g)), ivec3(0), sim.grid.xyz - 1); }
+ivec3 half_cell_of(vec3 g) { return clamp(ivec3(floor(2.0 * g)), ivec3(0), 2 * sim.grid.xyz - 1); }
 
 // Clamped trilinear stencil of lattice `axis` at grid coordinate g.
 struct Stencil {

@@ -19,7 +19,7 @@ bool solid_cell(ivec3 c) { return PF_CELL_KIND(cell_type[cell_index(c)]) == PF_C
 Stencil sampling_stencil(int axis, vec3 g, inout vec3 slope) {
     Stencil st = face_stencil(axis, g);
 #if PF_SOLID_WALLS
-    ivec3 c = clamp(ivec3(floor(g)), ivec3(0), sim.grid.xyz - 1);
+    ivec3 c = cell_of(g);
     if (solid_cell(c)) return st;
     for (int a = 0; a < 3; ++a) {
         if (a == axis) continue;  // the normal lattice's two faces are the own cell's

@@ -6,12 +6,12 @@
 // count). The counts are used only while they describe the particles (rnd.spray.z = 1: a step
 // has run since particles were last added); until then every particle is drawn whole.
 // Needs common/render.glsl.
+#include "common/grid_layout.glsl"
 layout(std430, binding = PF_SSBO_CELL_COUNT) readonly buffer SprayCellCount { uint spray_cell_count[]; };
 
 uint spray_count(ivec3 c) {
-    ivec3 n = rnd.grid_dims.xyz;
-    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, n))) return 0u;
-    return spray_cell_count[c.x + n.x * (c.y + n.y * c.z)];
+    if (!lattice_inside(rnd.grid_dims.xyz, c)) return 0u;
+    return spray_cell_count[lattice_index(rnd.grid_dims.xyz, c)];
 }
 
 // Radius of the sphere drawn for a particle at `position` (simulation coordinates).

@@ -6,6 +6,6 @@ layout(std430, binding = PF_SLOT_CELL_TYPE) writeonly buffer Type { uint cell_ty
 
 void main() {
     int c = int(flat_id());
-    if (c >= sim.grid.w) return;
+    if (c >= cell_total()) return;
     cell_type[c] = cell_count[c] > 0u ? PF_CELL_FLUID : PF_CELL_AIR;
 }

@@ -10,7 +10,7 @@ layout(std430, binding = PF_SLOT_FACE_VALID_OUT) writeonly buffer ValidOut { uin
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.face_count.w) return;
+    if (id >= face_total()) return;
     if (valid_in[id] != 0u) {
         valid_out[id] = 1u;
         return;
@@ -18,12 +18,11 @@ void main() {
     int axis;
     ivec3 f;
     decode_face(id, axis, f);
-    ivec3 dims = face_dims(axis);
     vec3 pair_sum = vec3(0.0);  // per axis pair first: mirror-exact (see mirror_sum)
     float count = 0.0;
     for (int n = 0; n < 6; ++n) {
         ivec3 nb = f + kNeighbours[n];
-        if (any(lessThan(nb, ivec3(0))) || any(greaterThanEqual(nb, dims))) continue;
+        if (!face_inside(axis, nb)) continue;
         int nid = face_index(axis, nb);
         if (valid_in[nid] != 0u) {
             pair_sum[n / 2] += face_vel[nid];

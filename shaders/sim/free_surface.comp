@@ -11,7 +11,7 @@ layout(std430, binding = PF_SLOT_FACE_FRACTION) readonly buffer Fraction { float
 
 void main() {
     int c = int(flat_id());
-    if (c >= sim.grid.w || PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) return;
+    if (c >= cell_total() || PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) return;
     ivec3 ijk = cell_coord(c);
     float term[6];
     for (int n = 0; n < 6; ++n) {

@@ -17,19 +17,19 @@ layout(std430, binding = PF_SLOT_FACE_FRACTION) writeonly buffer Fraction { floa
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.face_count.w) return;
+    if (id >= face_total()) return;
     int axis;
     ivec3 f;
     decode_face(id, axis, f);
 
 #if PF_P2G_FLOAT
-    float momentum = accum[2 * id], weight = accum[2 * id + 1];
+    float momentum = accum[accum_word(id, 0)], weight = accum[accum_word(id, 1)];
     bool received = weight > 0.0;
     float u_old = received ? momentum / weight : 0.0;
     float weight_sum = weight;
 #else
-    int momentum = accum[2 * id];
-    int weight = accum[2 * id + 1];
+    int momentum = accum[accum_word(id, 0)];
+    int weight = accum[accum_word(id, 1)];
     bool received = weight > 0;
     float u_old = received ? (float(momentum) * sim.inv_momentum_scale) / (float(weight) * sim.inv_weight_scale) : 0.0;
     float weight_sum = float(weight) * sim.inv_weight_scale;

@@ -72,7 +72,7 @@ void main() {
     vec4 grid = vec4(0.0);  // (div^2, |div|, fluid, volume fraction)
     vec4 particles = vec4(0.0);  // (|v|^2, -g . (x - origin), count / rest if interior, interior)
     float strain = 0.0;
-    if (id < uint(sim.grid.w) && PF_CELL_KIND(cell_type[id]) == PF_CELL_FLUID) {
+    if (id < uint(cell_total()) && PF_CELL_KIND(cell_type[id]) == PF_CELL_FLUID) {
         int c = int(id);
         ivec3 ijk = cell_coord(c);
         float div = 0.0;

@@ -12,7 +12,7 @@ layout(std430, binding = PF_SLOT_PRESSURE) buffer Pressure { float pressure[]; }
 
 void main() {
     int c = int(flat_id());
-    if (c >= sim.grid.w) return;
+    if (c >= cell_total()) return;
     if (PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) {
         rhs[c] = 0.0;
         pressure[c] = 0.0;

@@ -16,7 +16,7 @@ layout(std430, binding = PF_SLOT_FACE_FRACTION) readonly buffer Fraction { float
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.face_count.w) return;
+    if (id >= face_total()) return;
     int axis;
     ivec3 f;
     decode_face(id, axis, f);

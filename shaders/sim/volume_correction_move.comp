@@ -19,7 +19,7 @@ layout(std430, binding = PF_SLOT_FACE_FRACTION) readonly buffer Fraction { float
 
 float face_displacement(int axis, ivec3 f) {
     // A grid one cell thick gives the clamped stencil a zero-weight face outside the grid.
-    if (any(lessThan(f, ivec3(0))) || any(greaterThanEqual(f, face_dims(axis))) || face_is_wall(axis, f)) return 0.0;
+    if (!face_inside(axis, f) || face_is_wall(axis, f)) return 0.0;
     ivec3 lo = f;
     lo[axis] -= 1;
     int a = cell_index(lo), b = cell_index(f);

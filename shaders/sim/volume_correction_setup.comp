@@ -16,7 +16,7 @@ layout(std430, binding = PF_SLOT_VOLUME_POTENTIAL_OUT) writeonly buffer Potentia
 
 void main() {
     int c = int(flat_id());
-    if (c >= sim.grid.w) return;
+    if (c >= cell_total()) return;
     potential[c] = 0.0;
     if (PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) {
         rhs[c] = 0.0;

@@ -16,11 +16,11 @@ layout(location = PF_LOC_EFFECT_COUNT) uniform uint u_count;  // live force fiel
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.face_count.w) return;
+    if (id >= face_total()) return;
     int axis;
     ivec3 f;
     decode_face(id, axis, f);
-    if (face_is_wall(axis, f) || accum[2 * id + 1] <= 0) return;
+    if (face_is_wall(axis, f) || accum[accum_word(id, 1)] <= 0) return;
     vec3 g = vec3(f) + 0.5;
     g[axis] = float(f[axis]);
     vec3 x = sim.origin.xyz + g * sim.dx;

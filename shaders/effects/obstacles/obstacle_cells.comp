@@ -8,7 +8,7 @@ layout(std430, binding = PF_SLOT_CELL_TYPE) buffer Type { uint cell_type[]; };
 
 void main() {
     int c = int(flat_id());
-    if (c >= sim.grid.w) return;
+    if (c >= cell_total()) return;
     ivec3 ijk = cell_coord(c);
     int nearest;
     if (scene_distance(cell_centre(ijk), nearest) < 0.0) cell_type[c] = PF_CELL_SOLID;

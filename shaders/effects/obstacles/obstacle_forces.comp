@@ -46,7 +46,7 @@ void main() {
     for (uint w = lid; w < uint(PF_OBSTACLE_MAX * 6); w += uint(PF_WORKGROUP_SIZE)) s_sum[w] = 0u;
     barrier();
     int id = int(flat_id());
-    if (id < sim.face_count.w) {
+    if (id < face_total()) {
         int axis;
         ivec3 f;
         decode_face(id, axis, f);

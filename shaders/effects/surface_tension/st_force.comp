@@ -56,7 +56,7 @@ float curvature(ivec3 c) {
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.grid.w || PF_CELL_KIND(cell_type[id]) != PF_CELL_FLUID) return;
+    if (id >= cell_total() || PF_CELL_KIND(cell_type[id]) != PF_CELL_FLUID) return;
     ivec3 c = cell_coord(id);
     bool air[6];
     float kappa = 0.0, faces = 0.0;

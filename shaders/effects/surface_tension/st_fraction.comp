@@ -7,16 +7,16 @@
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
 #if PF_P2G_FLOAT
 layout(std430, binding = PF_SLOT_FACE_ACCUM) readonly buffer Accum { float accum[]; };
-float weight_sum(int face) { return accum[2 * face + 1]; }
+float weight_sum(int face) { return accum[accum_word(face, 1)]; }
 #else
 layout(std430, binding = PF_SLOT_FACE_ACCUM) readonly buffer Accum { int accum[]; };
-float weight_sum(int face) { return float(accum[2 * face + 1]) * sim.inv_weight_scale; }
+float weight_sum(int face) { return float(accum[accum_word(face, 1)]) * sim.inv_weight_scale; }
 #endif
 layout(std430, binding = PF_SLOT_ST_FRACTION) writeonly buffer Fraction { float fraction[]; };
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.grid.w) return;
+    if (id >= cell_total()) return;
     ivec3 c = cell_coord(id);
     float sum = 0.0;
     for (int axis = 0; axis < 3; ++axis) {

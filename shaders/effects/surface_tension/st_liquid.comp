@@ -14,7 +14,7 @@ bool open_cell(ivec3 c) { return cell_inside(c) && PF_CELL_KIND(cell_type[cell_i
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.grid.w) return;
+    if (id >= cell_total()) return;
     ivec3 c = cell_coord(id);
     if (!open_cell(c)) {
         float sum = 0.0, n = 0.0;

@@ -21,10 +21,7 @@ layout(std430, binding = PF_SLOT_VISC_PARTIALS) coherent buffer Partials { vec4 
 #include "effects/viscosity/viscosity_state.h"
 #include "effects/viscosity/visc_reduce.glsl"
 
-int node_index(ivec3 n) {
-    ivec3 d = sim.grid.xyz + 1;
-    return n.x + d.x * (n.y + d.y * n.z);
-}
+int node_index(ivec3 n) { return lattice_index(sim.grid.xyz + 1, n); }
 
 // (D^T sigma) on face (axis, f), a face with cells on both sides.
 float stress_divergence(int axis, ivec3 f) {
@@ -44,7 +41,7 @@ float stress_divergence(int axis, ivec3 f) {
 void main() {
     int id = int(flat_id());
     vec4 v = vec4(0.0);
-    if (id < sim.face_count.w) {
+    if (id < face_total()) {
         vec2 k = coef[id];
         int axis;
         ivec3 f;

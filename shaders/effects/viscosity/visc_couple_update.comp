@@ -14,7 +14,7 @@ layout(std430, binding = PF_SLOT_CELL_TYPE) readonly buffer CellType { uint cell
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.face_count.w) return;
+    if (id >= face_total()) return;
     int axis;
     ivec3 f;
     decode_face(id, axis, f);

@@ -30,7 +30,7 @@ void main() {
         state[PF_VISC_NODE_RECORD + 1] = uint(u_records.w);
         state[PF_VISC_NODE_RECORD + 2] = 1u;
     }
-    if (id >= sim.face_count.w) return;
+    if (id >= face_total()) return;
     int axis;
     ivec3 f;
     decode_face(id, axis, f);

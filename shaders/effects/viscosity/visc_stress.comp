@@ -47,7 +47,7 @@ void main() {
 #endif
     ivec3 n = unflatten(id, d);
     float c = visc_coupling();
-    if (all(lessThan(n, sim.grid.xyz))) {
+    if (cell_inside(n)) {  // n >= 0
         vec4 s = vec4(0.0);
         if (visc_kind(n) == PF_CELL_FLUID) {
             for (int a = 0; a < 3; ++a) s[a] = c * (value(a, n + visc_unit(a)) - value(a, n));

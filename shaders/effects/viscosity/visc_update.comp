@@ -19,7 +19,7 @@ layout(location = PF_LOC_VISC_TOLERANCE) uniform float u_tolerance;
 void main() {
     int id = int(flat_id());
     vec4 v = vec4(0.0);
-    if (id < sim.face_count.w) {
+    if (id < face_total()) {
         float inv_diag = coef[id].y;
         if (inv_diag > 0.0) {
             float alpha = visc_state_float(PF_VISC_ALPHA);

@@ -60,12 +60,9 @@ float visc_edge_weight(int a, int b, ivec3 n) {
 
 // Cell corners (nodes) per axis, and the flat index of node n.
 ivec3 visc_node_dims() { return sim.grid.xyz + 1; }
-int visc_node_index(ivec3 n) {
-    ivec3 d = visc_node_dims();
-    return n.x + d.x * (n.y + d.y * n.z);
-}
+int visc_node_index(ivec3 n) { return lattice_index(visc_node_dims(), n); }
 
-bool visc_face_inside(int axis, ivec3 f) { return all(greaterThanEqual(f, ivec3(0))) && all(lessThan(f, face_dims(axis))); }
+bool visc_face_inside(int axis, ivec3 f) { return face_inside(axis, f); }
 
 // Index of the stress of edge pair (a, b) in a node's vec4: xy 0, xz 1, yz 2.
 int visc_pair(int a, int b) { return a + b - 1; }

@@ -16,7 +16,7 @@ bool fluid(ivec3 c) { return cell_inside(c) && PF_CELL_KIND(cell_type[cell_index
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.grid.w) return;
+    if (id >= cell_total()) return;
     ivec3 c = cell_coord(id);
     bool interior = fluid(c);
     vec3 u_lo[3], u_hi[3];

@@ -48,7 +48,7 @@ float potential(float value, vec2 range) { return clamp((value - range.x) / (ran
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.grid.w) return;
+    if (id >= cell_total()) return;
     ivec3 c = cell_coord(id);
     if (PF_CELL_KIND(cell_type[id]) != PF_CELL_FLUID) return;
     vec3 u = centre_velocity(c);

@@ -9,7 +9,7 @@ layout(std430, binding = PF_SLOT_WW_FRACTION) writeonly buffer Fraction { float 
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.grid.w) return;
+    if (id >= cell_total()) return;
     ivec3 c = cell_coord(id);
     float liquid = 0.0, counted = 0.0;
     for (int z = -1; z <= 1; ++z)

@@ -14,9 +14,9 @@ layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // nx, ny, nz, cell
 
 #include "solvers/common/poisson_neighbours.glsl"
 
-ivec3 level_coord(int c) { return unflatten(c, u_dims.xyz); }
-int level_index(ivec3 ijk) { return ijk.x + u_dims.x * (ijk.y + u_dims.y * ijk.z); }
-bool level_inside(ivec3 ijk) { return all(greaterThanEqual(ijk, ivec3(0))) && all(lessThan(ijk, u_dims.xyz)); }
+ivec3 level_coord(int c) { return lattice_coord(u_dims.xyz, c); }
+int level_index(ivec3 ijk) { return lattice_index(u_dims.xyz, ijk); }
+bool level_inside(ivec3 ijk) { return lattice_inside(u_dims.xyz, ijk); }
 
 // The stencil of FLUID cell c: neighbour indices (-1 where the neighbour is not FLUID) and diag.
 struct PoissonStencil {
@@ -49,8 +49,6 @@ float pair_total(vec3 pair_sum) { return (pair_sum.x + pair_sum.y) + pair_sum.z;
 // The same for a pair's values (solver_value.glsl): a column per axis pair.
 vec2 pair_total(mat3x2 pair_sum) { return (pair_sum[0] + pair_sum[1]) + pair_sum[2]; }
 
-// Red-black colour of a cell: 0 when i + j + k is even.
-uint cell_color_at(ivec3 ijk) { return uint(ijk.x + ijk.y + ijk.z) & 1u; }
 
 // Index of a workgroup in a (possibly 2D) dispatch: one partial sum each.
 uint workgroup_index() { return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x; }

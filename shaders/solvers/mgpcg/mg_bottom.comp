@@ -48,7 +48,7 @@ Owned own(int c) {
     o.red = 0.0;
     if (c >= u_dims.w) return o;
     ivec3 ijk = level_coord(c);
-    if (((ijk.x + ijk.y + ijk.z) & 1) == 0) o.flags |= kRed;
+    if (cell_color_at(ijk) == 0u) o.flags |= kRed;
     if (PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) return o;
     o.flags |= kFluid;
     for (int n = 0; n < 6; ++n) {
@@ -84,7 +84,7 @@ float relaxed(Owned o, int c, int step[6]) {
 void main() {
     if (solve_converged()) return;  // uniform across the workgroup
     int lid = int(gl_LocalInvocationIndex);
-    const int step[6] = int[6](-1, 1, -u_dims.x, u_dims.x, -u_dims.x * u_dims.y, u_dims.x * u_dims.y);
+    const int step[6] = lattice_steps(u_dims.xyz);
     // Owned cells lid + k * PF_MG_BOTTOM_INVOCATIONS (coalesced loads).
     Owned cell[kOwned];
     for (int k = 0; k < kOwned; ++k) {
@@ -123,8 +123,7 @@ void main() {
     bool coarse_live = false;
     uint coarse_mask = 0u;
     float coarse_diag_value = 0.0;
-    ivec3 cc = ivec3(cc_index % u_coarse_dims.x, (cc_index / u_coarse_dims.x) % u_coarse_dims.y,
-                     cc_index / (u_coarse_dims.x * u_coarse_dims.y));
+    ivec3 cc = lattice_coord(u_coarse_dims.xyz, cc_index);
     float rc = 0.0;
     bool coarse_fluid = cc_index < u_coarse_dims.w && PF_CELL_KIND(coarse_type[cc_index]) == PF_CELL_FLUID;
     if (coarse_fluid) {
@@ -149,7 +148,7 @@ void main() {
         rc = restrict_scale() * sum;
         for (int n = 0; n < 6; ++n) {
             ivec3 q = cc + kPoissonNeighbours[n];
-            if (any(lessThan(q, ivec3(0))) || any(greaterThanEqual(q, u_coarse_dims.xyz))) continue;
+            if (!coarse_inside(q)) continue;
             uint kind = PF_CELL_KIND(coarse_type[coarse_index(q)]);
             if (kind == PF_CELL_SOLID) continue;
             coarse_diag_value += 1.0;
@@ -162,9 +161,8 @@ void main() {
     barrier();
 
     // The coarsest level: red, then (black, red) x PF_MG_COARSE_SWEEPS, from zero.
-    const int coarse_step[6] = int[6](-1, 1, -u_coarse_dims.x, u_coarse_dims.x, -u_coarse_dims.x * u_coarse_dims.y,
-                                      u_coarse_dims.x * u_coarse_dims.y);
-    uint coarse_color = uint(cc.x + cc.y + cc.z) & 1u;
+    const int coarse_step[6] = lattice_steps(u_coarse_dims.xyz);
+    uint coarse_color = cell_color_at(cc);
     for (int sweep = 0; sweep < 2 * PF_MG_COARSE_SWEEPS + 1; ++sweep) {
         uint color = uint(sweep & 1);
         if (coarse_live && coarse_color == color) {

@@ -54,7 +54,7 @@ OwnedCell own(int c) {
 
 void relax(OwnedCell o, uint color) {
     if (!o.live || o.color != color) return;
-    const int step[6] = int[6](-1, 1, -u_dims.x, u_dims.x, -u_dims.x * u_dims.y, u_dims.x * u_dims.y);
+    const int step[6] = lattice_steps(u_dims.xyz);
     pairs_t pair_sum = pairs_t(0.0);
     for (int n = 0; n < 6; ++n) {
         if ((o.mask & (1u << n)) != 0u) pair_sum[n / 2] += s_e[o.c + step[n]];

@@ -12,7 +12,7 @@ layout(std430, binding = PF_SLOT_MG_COARSE_TYPE) writeonly buffer CoarseType { u
 void main() {
     int c = int(flat_id());
     if (c >= u_coarse_dims.w) return;
-    ivec3 cc = unflatten(c, u_coarse_dims.xyz);
+    ivec3 cc = lattice_coord(u_coarse_dims.xyz, c);
     bool air = false, fluid = false;
     for (int n = 0; n < 8; ++n) {
         ivec3 f = 2 * cc + ivec3(n & 1, (n >> 1) & 1, (n >> 2) & 1);

@@ -55,7 +55,7 @@ void main() {
         if (level_inside(f)) {
             int c = level_index(f);
             word = cell_type[c];
-            if (PF_CELL_KIND(word) == PF_CELL_FLUID && ((f.x + f.y + f.z) & 1) == 0) value = e[c];
+            if (PF_CELL_KIND(word) == PF_CELL_FLUID && cell_color_at(f) == 0u) value = e[c];
         }
         stage_type(i, word);
         s_e[i] = value;
@@ -69,7 +69,7 @@ void main() {
         ivec3 local = tile_local(i, kStaged - 2) + 1;
         ivec3 f = origin + local;
         int s = tile_index(local, kStaged);
-        if (((f.x + f.y + f.z) & 1) == 0 || PF_CELL_KIND(staged_type(s)) != PF_CELL_FLUID) continue;
+        if (cell_color_at(f) == 0u || PF_CELL_KIND(staged_type(s)) != PF_CELL_FLUID) continue;
         float diag;
         pairs_t pair_sum;
         staged_stencil(s, steps, diag, pair_sum);
@@ -94,7 +94,7 @@ void main() {
 
     if (lid >= kTile * kTile * kTile) return;
     ivec3 cc = c0 + tile_local(lid, kTile);
-    if (any(greaterThanEqual(cc, u_coarse_dims.xyz))) return;
+    if (!coarse_inside(cc)) return;  // cc >= 0
     int c = coarse_index(cc);
     bool fluid = PF_CELL_KIND(coarse_type[c]) == PF_CELL_FLUID;
     value_t rc = value_t(0.0);
@@ -121,7 +121,7 @@ void main() {
     }
     coarse_r[c] = rc;
 #if PF_MG_START
-    bool red = ((cc.x + cc.y + cc.z) & 1) == 0;
+    bool red = cell_color_at(cc) == 0u;
     float diag = fluid && red ? coarse_diag(cc) : 0.0;
     coarse_e[c] = diag > 0.0 ? rc / diag : value_t(0.0);
 #endif

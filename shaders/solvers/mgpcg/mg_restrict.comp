@@ -30,7 +30,7 @@ layout(location = PF_LOC_SOLVER_DIMS) uniform ivec4 u_dims;  // the fine level
 void main() {
     int c = int(flat_id());
     if (c >= u_coarse_dims.w) return;
-    ivec3 cc = unflatten(c, u_coarse_dims.xyz);
+    ivec3 cc = lattice_coord(u_coarse_dims.xyz, c);
     value_t r = value_t(0.0);
     bool fluid = PF_CELL_KIND(coarse_type[c]) == PF_CELL_FLUID;
     if (fluid) {
@@ -59,7 +59,7 @@ void main() {
     }
     coarse_r[c] = r;
 #if PF_MG_START
-    bool red = ((cc.x + cc.y + cc.z) & 1) == 0;
+    bool red = cell_color_at(cc) == 0u;
     float diag = fluid && red ? coarse_diag(cc) : 0.0;
     coarse_e[c] = diag > 0.0 ? r / diag : value_t(0.0);
 #endif

@@ -43,7 +43,7 @@ void main() {
 
     for (int i = lid; i < kCoarse * kCoarse * kCoarse; i += PF_MG_TILE_INVOCATIONS) {
         ivec3 c = coarse_origin + tile_local(i, kCoarse);
-        bool inside = all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, u_coarse_dims.xyz));
+        bool inside = coarse_inside(c);
         s_coarse[i] = inside ? coarse_e[coarse_index(c)] : value_t(0.0);
     }
     for (int i = lid; i < kStaged * kStaged * kStaged; i += PF_MG_TILE_INVOCATIONS) {
@@ -56,7 +56,7 @@ void main() {
     for (int i = lid; i < kStaged * kStaged * kStaged; i += PF_MG_TILE_INVOCATIONS) {
         ivec3 f = origin + tile_local(i, kStaged);
         value_t v = value_t(0.0);
-        if (((f.x + f.y + f.z) & 1) == 0 && PF_CELL_KIND(staged_type(i)) == PF_CELL_FLUID) {
+        if (cell_color_at(f) == 0u && PF_CELL_KIND(staged_type(i)) == PF_CELL_FLUID) {
             ivec3 parent = f >> 1;
             ivec3 other = clamp(parent + 2 * (f & 1) - 1, ivec3(0), u_coarse_dims.xyz - 1);
             value_t sum = value_t(0.0);
@@ -79,7 +79,7 @@ void main() {
         ivec3 local = tile_local(i, kTile + 2) + 1;
         ivec3 f = origin + local;
         int s = tile_index(local, kStaged);
-        if (((f.x + f.y + f.z) & 1) == 0 || PF_CELL_KIND(staged_type(s)) != PF_CELL_FLUID) continue;
+        if (cell_color_at(f) == 0u || PF_CELL_KIND(staged_type(s)) != PF_CELL_FLUID) continue;
         float diag;
         pairs_t pair_sum;
         staged_stencil(s, steps, diag, pair_sum);
@@ -95,7 +95,7 @@ void main() {
         int s = tile_index(local, kStaged);
         value_t v = value_t(0.0);
         if (PF_CELL_KIND(staged_type(s)) == PF_CELL_FLUID) {
-            if (((f.x + f.y + f.z) & 1) == 0) {
+            if (cell_color_at(f) == 0u) {
                 float diag;
                 pairs_t pair_sum;
                 staged_stencil(s, steps, diag, pair_sum);

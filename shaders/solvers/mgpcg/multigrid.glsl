@@ -18,4 +18,5 @@ float prolong_weight_1d(int f, int c, int nc) {
     return (parent == c ? 0.75 : 0.0) + (other == c ? 0.25 : 0.0);
 }
 
-int coarse_index(ivec3 c) { return c.x + u_coarse_dims.x * (c.y + u_coarse_dims.y * c.z); }
+int coarse_index(ivec3 c) { return lattice_index(u_coarse_dims.xyz, c); }
+bool coarse_inside(ivec3 c) { return lattice_inside(u_coarse_dims.xyz, c); }

@@ -25,12 +25,12 @@ void clear_staged_types() {
 #endif
 }
 
-ivec3 tile_coord(int g, ivec3 tiles) { return unflatten(g, tiles); }
+ivec3 tile_coord(int g, ivec3 tiles) { return lattice_coord(tiles, g); }
 // Coordinates of entry i of a staged cube of edge n, and back.
-ivec3 tile_local(int i, int n) { return unflatten(i, ivec3(n)); }
-int tile_index(ivec3 local, int n) { return local.x + n * (local.y + n * local.z); }
+ivec3 tile_local(int i, int n) { return lattice_coord(ivec3(n), i); }
+int tile_index(ivec3 local, int n) { return lattice_index(ivec3(n), local); }
 // Index offsets of the six neighbours in a staged cube of edge n, in kPoissonNeighbours' order.
-int[6] tile_steps(int n) { return int[6](-1, 1, -n, n, -n * n, n * n); }
+int[6] tile_steps(int n) { return lattice_steps(ivec3(n)); }
 
 // The stencil of the FLUID cell at staged index s (not on the cube's boundary): diag and the
 // FLUID neighbours' values summed per axis pair.

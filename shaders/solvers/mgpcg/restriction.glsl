@@ -14,7 +14,7 @@ float coarse_diag(ivec3 cc) {
     float diag = 0.0;
     for (int n = 0; n < 6; ++n) {
         ivec3 q = cc + kPoissonNeighbours[n];
-        if (any(lessThan(q, ivec3(0))) || any(greaterThanEqual(q, u_coarse_dims.xyz))) continue;
+        if (!coarse_inside(q)) continue;
         if (PF_CELL_KIND(coarse_type[coarse_index(q)]) != PF_CELL_SOLID) diag += 1.0;
     }
     return diag;

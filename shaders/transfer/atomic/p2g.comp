@@ -65,7 +65,7 @@ void main() {
     vec3 g = grid_coord(pos[i].xyz);
     vec3 v = vel[i].xyz;
 
-    ivec3 cell = clamp(ivec3(floor(g)), ivec3(0), sim.grid.xyz - 1);
+    ivec3 cell = cell_of(g);
     atomicAdd(cell_count[cell_index(cell)], 1u);
 
     for (int axis = 0; axis < 3; ++axis) {
@@ -74,11 +74,11 @@ void main() {
             float w = term_weight(t, n), va = term_velocity(t, n);
             int face = face_index(axis, term_node(t, n));
 #if PF_P2G_FLOAT
-            accumulate_float(2 * face, w * va);
-            accumulate_float(2 * face + 1, w);
+            accumulate_float(accum_word(face, 0), w * va);
+            accumulate_float(accum_word(face, 1), w);
 #else
-            accumulate(2 * face, fixed_momentum(w, va));
-            accumulate(2 * face + 1, fixed_weight(w));
+            accumulate(accum_word(face, 0), fixed_momentum(w, va));
+            accumulate(accum_word(face, 1), fixed_weight(w));
 #endif
         }
     }

@@ -32,7 +32,7 @@ layout(std430, binding = PF_SLOT_PARTICLE_AFFINE) readonly buffer Affine { vec4 
 
 void main() {
     int id = int(flat_id());
-    if (id >= sim.face_count.w) return;
+    if (id >= face_total()) return;
     int axis;
     ivec3 f;
     decode_face(id, axis, f);
@@ -66,6 +66,6 @@ void main() {
             }
         }
     }
-    accum[2 * id] = momentum;
-    accum[2 * id + 1] = weight;
+    accum[accum_word(id, 0)] = momentum;
+    accum[accum_word(id, 1)] = weight;
 }

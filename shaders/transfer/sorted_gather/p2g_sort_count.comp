@@ -17,7 +17,7 @@ void main() {
     uint i = flat_id();
     if (i >= sim.particle_count) return;
     // 2 g is exact in float, so floor(h / 2) is the cell p2g.comp computes from floor(g).
-    ivec3 h = clamp(ivec3(floor(2.0 * grid_coord(pos[i].xyz))), ivec3(0), 2 * sim.grid.xyz - 1);
+    ivec3 h = half_cell_of(grid_coord(pos[i].xyz));
     atomicAdd(cell_count[cell_index(h >> 1)], 1u);
     uint half_cell = uint(half_cell_index(h));
     cell_slot[i] = uvec2(half_cell, atomicAdd(half_count[half_cell], 1u));

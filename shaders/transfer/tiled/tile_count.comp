@@ -28,7 +28,7 @@ void main() {
     bool live = i < sim.particle_count;  // no early return: every invocation reaches the barriers
     uint tile = 0u, entry = 0u, rank = 0u;
     if (live) {
-        ivec3 cell = clamp(ivec3(floor(grid_coord(pos[i].xyz))), ivec3(0), sim.grid.xyz - 1);
+        ivec3 cell = cell_of(grid_coord(pos[i].xyz));
         ivec3 tiles = (sim.grid.xyz + PF_P2G_TILE - 1) / PF_P2G_TILE;
         ivec3 t = cell / PF_P2G_TILE;
         tile = uint(t.x + tiles.x * (t.y + tiles.y * t.z));

@@ -49,7 +49,7 @@ void add_shared(int slot, int value) {
 void write_counts(ivec3 first_cell, int lane, bool counted) {
     for (int k = lane; k < kTileCells; k += PF_WORKGROUP_SIZE) {
         ivec3 cell = first_cell + unflatten(k, ivec3(PF_P2G_TILE));
-        if (all(lessThan(cell, sim.grid.xyz))) cell_count[cell_index(cell)] = counted ? s_count[k] : 0u;
+        if (cell_inside(cell)) cell_count[cell_index(cell)] = counted ? s_count[k] : 0u;
     }
 }
 
@@ -76,7 +76,7 @@ void main() {
         uint i = order[k];
         vec3 g = grid_coord(pos[i].xyz);
         vec3 v = vel[i].xyz;
-        ivec3 cell = clamp(ivec3(floor(g)), ivec3(0), sim.grid.xyz - 1);
+        ivec3 cell = cell_of(g);
         ivec3 c = clamp(cell - first_cell, ivec3(0), ivec3(PF_P2G_TILE - 1));  // the same cell tile_count gave this tile
         atomicAdd(s_count[c.x + PF_P2G_TILE * (c.y + PF_P2G_TILE * c.z)], 1u);
         for (int axis = 0; axis < 3; ++axis) {
@@ -92,8 +92,8 @@ void main() {
                     add_shared(slot + 1, weight);
                 } else {  // not expected (the window holds every node); correct either way
                     int face = face_index(axis, node);
-                    add_global(2 * face, momentum);
-                    add_global(2 * face + 1, weight);
+                    add_global(accum_word(face, 0), momentum);
+                    add_global(accum_word(face, 1), weight);
                 }
             }
         }
@@ -105,7 +105,7 @@ void main() {
         if (value == 0) continue;  // also every window sample outside its lattice
         int window_index = k / 2, axis = window_index / kWindowSamples, w = window_index % kWindowSamples;
         ivec3 node = origin + unflatten(w, ivec3(PF_P2G_TILE_WINDOW));
-        add_global(2 * face_index(axis, node) + (k & 1), value);
+        add_global(accum_word(face_index(axis, node), k & 1), value);
     }
     write_counts(first_cell, lane, true);
     if (lane == 0 && s_overflow != 0u) atomicOr(status[PF_STATUS_FLAGS], PF_GPU_FLAG_P2G_OVERFLOW);
