@@ -81,11 +81,7 @@ pf_result Simulation::init() {
         log_.warning("pf_create: a GL error (" + hex(pending) + ") was pending before the call; it was consumed");
     }
 
-    const auto& n = desc_.grid_size;
-    cells_ = static_cast<int32_t>(n[0] * n[1] * n[2]);
-    face_counts_ = {static_cast<int32_t>((n[0] + 1) * n[1] * n[2]), static_cast<int32_t>(n[0] * (n[1] + 1) * n[2]),
-                    static_cast<int32_t>(n[0] * n[1] * (n[2] + 1))};
-    faces_ = face_counts_[0] + face_counts_[1] + face_counts_[2];
+    layout_ = GridLayout::of(desc_.grid_size);
 
     GLint max_blocks = 0;
     gl_.GetIntegerv(GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS, &max_blocks);
@@ -93,7 +89,7 @@ pf_result Simulation::init() {
         return log_.error(PF_ERROR_GL_UNSUPPORTED, "pf_create: the GL offers " + std::to_string(max_blocks) +
                                                        " compute storage blocks, 8 are needed");
     }
-    const uint64_t largest = std::max<uint64_t>(uint64_t(desc_.max_particles) * 16u, uint64_t(faces_) * 8u);
+    const uint64_t largest = std::max<uint64_t>(uint64_t(desc_.max_particles) * 16u, layout_.faces() * 8u);
     if (pf_result r = gl::check_storage_block(gl_, log_, largest, "pf_create: the simulation needs",
                                               "(16 per particle, 8 per face)", "lower max_particles or the grid size");
         r != PF_OK)
@@ -103,15 +99,15 @@ pf_result Simulation::init() {
     const size_t np = desc_.max_particles;
     pos_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW, "particle_pos", gl::Sizing::particles);
     vel_ = gl::Buffer(gl_, np * 16, GL_DYNAMIC_DRAW, "particle_vel", gl::Sizing::particles);
-    face_accum_ = gl::Buffer(gl_, size_t(faces_) * 8, GL_DYNAMIC_COPY, "face_accum");
-    face_vel_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_vel");
-    face_vel_old_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_vel_old");
-    face_fraction_ = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_fraction");
-    for (auto& b : face_valid_) b = gl::Buffer(gl_, size_t(faces_) * 4, GL_DYNAMIC_COPY, "face_valid");
-    cell_count_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY, "cell_count");
-    cell_type_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY, "cell_type");
-    pressure_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY, "pressure");
-    rhs_ = gl::Buffer(gl_, size_t(cells_) * 4, GL_DYNAMIC_COPY, "rhs");
+    face_accum_ = gl::Buffer(gl_, size_t(layout_.accum_words()) * 4, GL_DYNAMIC_COPY, "face_accum");
+    face_vel_ = gl::Buffer(gl_, size_t(layout_.faces()) * 4, GL_DYNAMIC_COPY, "face_vel");
+    face_vel_old_ = gl::Buffer(gl_, size_t(layout_.faces()) * 4, GL_DYNAMIC_COPY, "face_vel_old");
+    face_fraction_ = gl::Buffer(gl_, size_t(layout_.faces()) * 4, GL_DYNAMIC_COPY, "face_fraction");
+    for (auto& b : face_valid_) b = gl::Buffer(gl_, size_t(layout_.faces()) * 4, GL_DYNAMIC_COPY, "face_valid");
+    cell_count_ = gl::Buffer(gl_, size_t(layout_.cells()) * 4, GL_DYNAMIC_COPY, "cell_count");
+    cell_type_ = gl::Buffer(gl_, size_t(layout_.cells()) * 4, GL_DYNAMIC_COPY, "cell_type");
+    pressure_ = gl::Buffer(gl_, size_t(layout_.cells()) * 4, GL_DYNAMIC_COPY, "pressure");
+    rhs_ = gl::Buffer(gl_, size_t(layout_.cells()) * 4, GL_DYNAMIC_COPY, "rhs");
     uniforms_ = gl::Buffer(gl_, sizeof(SimUniforms), GL_DYNAMIC_DRAW, "sim_uniforms");
     count_record_ = gl::Buffer(gl_, PF_COUNT_WORDS * 4, GL_DYNAMIC_COPY, "count_record");
     status_ = gl::Buffer(gl_, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY, "status");
@@ -119,10 +115,10 @@ pf_result Simulation::init() {
     binaries_ = std::make_unique<gl::ProgramBinaryCache>(gl_, desc_.program_cache, log_);
     runner_ = std::make_unique<PassRunner>(gl_, log_, uniforms_, PF_UBO_SIM, binaries_.get());
     requests_ = std::make_unique<ParticleReadback>(gl_);
-    const uint64_t metric_items = std::max<uint64_t>(uint64_t(cells_), desc_.max_particles);
+    const uint64_t metric_items = std::max<uint64_t>(layout_.cells(), desc_.max_particles);
     metrics_partials_ = gl::Buffer(gl_, size_t(runner_->workgroups(metric_items).total()) * 48, GL_DYNAMIC_COPY,
                                    "metrics_partials",
-                                   desc_.max_particles >= uint64_t(cells_) ? gl::Sizing::particles : gl::Sizing::other);
+                                   desc_.max_particles >= layout_.cells() ? gl::Sizing::particles : gl::Sizing::other);
     if (pf_result r = gl::check_allocated(gl_, log_, "pf_create: allocating " + std::to_string(memory_.bytes >> 20) +
                                                          " MiB of GPU buffers");
         r != PF_OK)
@@ -130,8 +126,7 @@ pf_result Simulation::init() {
 
     PassRunner& r = *runner_;
     const StatId clear = r.add_stat("clear", PF_PASS_CLEAR);
-    p2g_.init(r, P2gGrid{glm::ivec3(desc_.grid_size[0], desc_.grid_size[1], desc_.grid_size[2]), uint64_t(cells_),
-                          uint64_t(faces_), desc_.max_particles});  // "p2g", after "clear"
+    p2g_.init(r, P2gGrid{layout_, desc_.max_particles});  // "p2g", after "clear"
     stat_ = CoreStats{clear,
                       r.add_stat("grid_forces", PF_PASS_GRID_FORCES),
                       r.add_stat("classify", PF_PASS_CLASSIFY),
@@ -154,7 +149,7 @@ pf_result Simulation::init() {
     if (pf_result res = prepare_particle_passes(desc_.params, requested_features_, "pf_create"); res != PF_OK) return res;
     if (pf_result res = solvers_for(desc_.params, "pf_create", &solvers_in_use_); res != PF_OK) return res;
     warn_about_free_surface(desc_.params, "pf_create");
-    if (std::string error = volume_correction_.init(gl_, r, uint32_t(cells_)); !error.empty())
+    if (std::string error = volume_correction_.init(gl_, r, uint32_t(layout_.cells())); !error.empty())
         return log_.error(PF_ERROR_SHADER_COMPILE, "pf_create: " + error);
     if (pf_result res = set_features(requested_features_, "pf_create"); res != PF_OK) return res;
     if (pf_result res = prepare_features(desc_.prepared_features, "pf_create"); res != PF_OK) return res;
@@ -166,8 +161,8 @@ pf_result Simulation::init() {
     }
     // Pressure starts at zero (warm start of the first solve); everything else is written
     // before it is read.
-    runner_->fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
-    runner_->fill(face_fraction_, uint32_t(faces_), 0x3f800000u, stat_.clear);  // 1.0f: the marker-cell surface
+    runner_->fill(pressure_, uint32_t(layout_.cells()), 0u, stat_.clear);
+    runner_->fill(face_fraction_, uint32_t(layout_.faces()), 0x3f800000u, stat_.clear);  // 1.0f: the marker-cell surface
     runner_->fill(status_, PF_STATUS_WORDS, 0u, stat_.clear);
     const uint32_t record[PF_COUNT_WORDS] = {0, 1, 0, 0, 4, 0, 0, 0};
     count_record_.upload(0, sizeof(record), record);
@@ -228,8 +223,7 @@ pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, Pr
     if (!slot) {
         std::unique_ptr<PressureSolver> made = make_pressure_solver(params.pressure_solver, role == SolverRole::pair);
         if (!made) return log_.error(PF_ERROR_INVALID_ARGUMENT, std::string(fn) + ": unknown pressure solver");
-        const SolverGrid grid{glm::ivec3(desc_.grid_size[0], desc_.grid_size[1], desc_.grid_size[2]),
-                              uint32_t(cells_), one_cell_reductions()};
+        const SolverGrid grid{layout_, one_cell_reductions()};
         if (pf_result r = made->init(gl_, *runner_, grid, log_, fn); r != PF_OK) return r;
         if (pf_result r = gl::check_allocated(gl_, log_, std::string(fn) + ": allocating the pressure solver"); r != PF_OK)
             return r;
@@ -271,7 +265,7 @@ Simulation::ParticlePrograms Simulation::particle_programs(const pf_sim_params& 
     // its 64 bytes a particle of writes scatter in tile order (dam_break_10m 57% slower, "Tried
     // and not kept: APIC's G2P in the tiled P2G's particle order").
     const bool flip = params.flip_ratio > 0.0f;
-    const uint64_t face_bytes = uint64_t(faces_) * sizeof(float) * (flip ? 2u : 1u);
+    const uint64_t face_bytes = layout_.faces() * sizeof(float) * (flip ? 2u : 1u);
     const bool ordered = !apic && face_bytes >= ordered_g2p_face_bytes_ && p2g_.has_particle_order(params);
     p.g2p_ordered = !ordered ? p.g2p : flip ? ProgramId::g2p_flip_ordered : ProgramId::g2p_pic_ordered;
     p.advect = params.advection == PF_ADVECTION_RK2          ? ProgramId::advect_rk2
@@ -332,8 +326,9 @@ void Simulation::zero_affine(uint32_t first, uint32_t count) {
 
 void Simulation::upload_uniforms(float dt) {
     SimUniforms& u = uniform_data_;
-    u.grid = glm::ivec4(desc_.grid_size[0], desc_.grid_size[1], desc_.grid_size[2], cells_);
-    u.face_count = glm::ivec4(face_counts_[0], face_counts_[1], face_counts_[2], faces_);
+    u.grid = glm::ivec4(layout_.dims, int32_t(layout_.cells()));
+    u.face_count = glm::ivec4(int32_t(layout_.face_count(0)), int32_t(layout_.face_count(1)), int32_t(layout_.face_count(2)),
+                              int32_t(layout_.faces()));
     u.origin = glm::vec4(desc_.origin[0], desc_.origin[1], desc_.origin[2], 0.0f);
     u.gravity = glm::vec4(desc_.params.gravity[0], desc_.params.gravity[1], desc_.params.gravity[2], 0.0f);
     u.dx = desc_.cell_size;
@@ -362,7 +357,7 @@ VolumeCorrection::Inputs Simulation::correction_inputs() const {
     // The move reads in the P2G's order where G2P does (the particles have not moved since).
     const ParticlePrograms programs = particle_programs(desc_.params);
     const gl::Buffer* order = programs.g2p_ordered != programs.g2p ? g2p_order_ : nullptr;
-    return {pos_, cell_type_, cell_count_, pressure_, face_fraction_, uint64_t(cells_), particle_count_, order};
+    return {pos_, cell_type_, cell_count_, pressure_, face_fraction_, layout_.cells(), particle_count_, order};
 }
 
 void Simulation::set_drift(float seconds) {
@@ -374,7 +369,7 @@ void Simulation::run_half_move() {
     update_substep_table();
     // The move stops before SOLID cells (common/particle_trace.glsl): the obstacles as they stand
     // now, on cells otherwise AIR (nothing else is known before P2G; classify rewrites them all).
-    runner_->fill(cell_type_, uint32_t(cells_), PF_CELL_AIR, stat_.classify);
+    runner_->fill(cell_type_, uint32_t(layout_.cells()), PF_CELL_AIR, stat_.classify);
     run_effects(EffectStage::before_first_move);
     set_drift(0.5f * uniform_data_.dt);
     substep_.run(SubstepContext{}, "advect");
@@ -404,7 +399,7 @@ std::vector<std::string> Simulation::substep_stage_names() {
 void Simulation::build_substep_table() {
     SubstepTable& t = substep_;
     t.clear();
-    const uint64_t cells = uint64_t(cells_), faces = uint64_t(faces_);
+    const uint64_t cells = layout_.cells(), faces = layout_.faces();
     t.add("p2g", [this](const SubstepContext&) {
         p2g_.run(*runner_, desc_.params,
                  P2gBuffers{pos_, vel_, affine_, face_accum_, cell_count_, status_, particle_count_,
@@ -446,8 +441,7 @@ void Simulation::build_substep_table() {
         });
     }
     // After every force on the faces and the obstacles' SOLID cells: which walls let go.
-    const uint32_t* n = desc_.grid_size;
-    const uint64_t wall_cells = uint64_t(n[1]) * n[2] + uint64_t(n[0]) * n[2] + uint64_t(n[0]) * n[1];
+    const uint64_t wall_cells = layout_.wall_cells();
     t.add("wall_release", [this, wall_cells](const SubstepContext&) {
         runner_->run({ProgramId::wall_release, stat_.wall_release, wall_cells,
                       {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_}}});
@@ -459,7 +453,7 @@ void Simulation::build_substep_table() {
         const float* g = desc_.params.gravity;
         const float ax = std::abs(g[0]), ay = std::abs(g[1]), az = std::abs(g[2]);
         const int axis = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
-        runner_->run({ProgramId::hydrostatic_start, stat_.hydrostatic_start, cells / desc_.grid_size[axis],
+        runner_->run({ProgramId::hydrostatic_start, stat_.hydrostatic_start, layout_.columns(axis),
                       {{PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure_}}});
         hydrostatic_start_pending_ = false;
     });
@@ -536,7 +530,7 @@ void Simulation::run_metrics() {
     PassRunner& r = *runner_;
     // One fused pass over cells and particles (invocation i: cell i and particle i), then one
     // workgroup adds the partial sums in a fixed order and writes the status words.
-    const uint64_t n = std::max<uint64_t>(uint64_t(cells_), particle_count_);
+    const uint64_t n = std::max<uint64_t>(layout_.cells(), particle_count_);
     const Bind partials{PF_SLOT_METRICS_PARTIALS, &metrics_partials_};
     r.run({ProgramId::metrics, stat_.metrics, n,
            {{PF_SLOT_PARTICLE_POS, &pos_}, {PF_SLOT_PARTICLE_VEL, &vel_}, {PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_COUNT, &cell_count_},
@@ -753,14 +747,14 @@ pf_result Simulation::run_metrics_for_test() {
 
 std::vector<float> Simulation::read_volume_potential() const {
     gl::StateGuard guard(gl_, gl_state_);
-    std::vector<float> q(static_cast<size_t>(cells_), 0.0f);
+    std::vector<float> q(static_cast<size_t>(layout_.cells()), 0.0f);
     volume_correction_.potential().download(0, q.size() * 4, q.data());
     return q;
 }
 
 pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, const std::vector<float>& rhs,
                                      std::vector<float>& pressure) {
-    if (cell_type.size() != size_t(cells_) || rhs.size() != size_t(cells_) || pressure.size() != size_t(cells_))
+    if (cell_type.size() != size_t(layout_.cells()) || rhs.size() != size_t(layout_.cells()) || pressure.size() != size_t(layout_.cells()))
         return PF_ERROR_INVALID_ARGUMENT;
     gl::StateGuard guard(gl_, gl_state_);
     cell_type_.upload(0, cell_type.size() * 4, cell_type.data());
@@ -777,7 +771,7 @@ pf_result Simulation::solve_for_test(const std::vector<uint32_t>& cell_type, con
 
 pf_result Simulation::solve_two_for_test(const std::vector<uint32_t>& cell_type, const std::vector<float> (&rhs)[2],
                                          std::vector<float> (&pressure)[2], bool paired, uint32_t (&iterations)[2]) {
-    const size_t n = size_t(cells_);
+    const size_t n = size_t(layout_.cells());
     if (!solvers_in_use_.correction || cell_type.size() != n) return PF_ERROR_INVALID_ARGUMENT;
     for (int k = 0; k < 2; ++k) {
         if (rhs[k].size() != n || pressure[k].size() != n) return PF_ERROR_INVALID_ARGUMENT;
@@ -1082,7 +1076,7 @@ pf_result Simulation::clear_particles() {
     restart_volume_reference();
     particle_count_ = 0;  // freed slots' APIC affine vectors are zeroed when add_particles reuses them
     write_count_record(0);
-    runner_->fill(pressure_, uint32_t(cells_), 0u, stat_.clear);
+    runner_->fill(pressure_, uint32_t(layout_.cells()), 0u, stat_.clear);
     added_speed_ = 0.0f;
     gpu_max_speed_ = 0.0f;
     return PF_OK;
@@ -1210,7 +1204,7 @@ EffectBuffers Simulation::effect_buffers() const {
     const bool apic = desc_.params.transfer == PF_TRANSFER_APIC;
     return EffectBuffers{pos_,       vel_,          face_accum_, p2g_float_sums(), face_vel_, face_vel_old_,
                          face_fraction_, cell_type_, count_record_, status_,     apic ? &affine_ : nullptr,
-                         pressure_,  particle_count_, uint64_t(cells_), uint64_t(faces_), step_substeps_, this};
+                         pressure_,  particle_count_, layout_, step_substeps_, this};
 }
 
 void Simulation::project(PassRunner& runner, const gl::Buffer& potential, const gl::Buffer& report, StatId stat,
@@ -1227,13 +1221,13 @@ void Simulation::project(PassRunner& runner, const gl::Buffer& potential, const 
 }
 
 void Simulation::run_pressure_setup(PassRunner& runner, StatId stat, const gl::Buffer& pressure) const {
-    runner.run({ProgramId::pressure_setup, stat, uint64_t(cells_),
+    runner.run({ProgramId::pressure_setup, stat, layout_.cells(),
                 {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_RHS, &rhs_},
                  {PF_SLOT_PRESSURE, &pressure}}});
 }
 
 void Simulation::run_velocity_update(PassRunner& runner, StatId stat, const gl::Buffer& pressure) const {
-    runner.run({ProgramId::velocity_update, stat, uint64_t(faces_),
+    runner.run({ProgramId::velocity_update, stat, layout_.faces(),
                 {{PF_SLOT_FACE_VEL, &face_vel_}, {PF_SLOT_CELL_TYPE, &cell_type_}, {PF_SLOT_PRESSURE, &pressure},
                  {PF_SLOT_FACE_VALID_OUT, &face_valid_[0]}, {PF_SLOT_FACE_FRACTION, &face_fraction_}}});
 }

@@ -18,6 +18,7 @@
 #include "gl/state_guard.h"
 #include "pf/pf.h"
 #include "sim/effects/registry.h"
+#include "sim/grid_layout.h"
 #include "sim/particle_readback.h"
 #include "sim/pass_runner.h"
 #include "sim/sim_uniforms.h"
@@ -376,9 +377,7 @@ private:
     mutable uint32_t viscosity_iterations_ = 0;  // the newest readback's viscosity solve figures
     mutable float viscosity_residual_ = 0.0f;
     // grid
-    int32_t cells_ = 0;
-    std::array<int32_t, 3> face_counts_{};
-    int32_t faces_ = 0;
+    GridLayout layout_{};  // the grid's cells and faces in storage
     gl::Buffer face_accum_, face_vel_, face_vel_old_, face_valid_[2], face_fraction_;
     gl::Buffer cell_count_, cell_type_, pressure_, rhs_;
     int valid_current_ = 0;     // which valid mask is the latest

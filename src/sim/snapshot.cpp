@@ -142,7 +142,7 @@ bool Simulation::snapshot_has_affine() const {
 }
 
 size_t Simulation::snapshot_gpu_bytes(uint32_t particles, bool affine) const {
-    return size_t(PF_STATUS_WORDS) * 4 + size_t(particles) * (32 + (affine ? 48 : 0)) + size_t(cells_) * 4;
+    return size_t(PF_STATUS_WORDS) * 4 + size_t(particles) * (32 + (affine ? 48 : 0)) + size_t(layout_.cells()) * 4;
 }
 
 size_t Simulation::snapshot_size() const {
@@ -185,7 +185,7 @@ pf_result Simulation::save_snapshot(void* buffer, size_t size) {
     vec4s(pos_, n * 16);
     vec4s(vel_, n * 16);
     if (affine) vec4s(affine_, n * 48);
-    vec4s(pressure_, size_t(cells_) * 4);
+    vec4s(pressure_, size_t(layout_.cells()) * 4);
     Header h{};
     std::memcpy(h.magic, kMagic, sizeof kMagic);
     h.format = kFormat;
@@ -261,7 +261,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
     const uint8_t* pos = r.take(size_t(count) * 16);
     const uint8_t* vel = r.take(size_t(count) * 16);
     const uint8_t* affine = has_affine ? r.take(size_t(count) * 48) : nullptr;
-    const uint8_t* pressure = r.take(size_t(cells_) * 4);
+    const uint8_t* pressure = r.take(size_t(layout_.cells()) * 4);
     // Particles finite and inside the domain, speeds at most max_speed (what every step keeps;
     // the GPU's clamp rounds in float, hence the small margin). The checksum already caught
     // accidental damage: this refuses a well-formed snapshot of impossible particles.
@@ -355,7 +355,7 @@ pf_result Simulation::restore_snapshot(const void* buffer, size_t size) {
         vel_.upload(0, size_t(count) * 16, vel);
         if (affine) affine_.upload(0, size_t(count) * 48, affine);
     }
-    pressure_.upload(0, size_t(cells_) * 4, pressure);
+    pressure_.upload(0, size_t(layout_.cells()) * 4, pressure);
     restart_volume_reference();  // the drifts and the energy reference start again
     gl_.MemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     if (GLenum err = gl_.GetError(); err != GL_NO_ERROR)

@@ -22,6 +22,7 @@
 #include "gl/buffer.h"
 #include "gl/gl.h"
 #include "pf/pf.h"
+#include "sim/grid_layout.h"
 #include "sim/pass_runner.h"
 #include "sim/snapshot_io.h"
 #include "sim/solvers/pressure_solver.h"
@@ -59,7 +60,7 @@ struct EffectBuffers {
     const gl::Buffer& pressure;    // the substep's solved pressure (Pa) per cell
     uint32_t particles = 0;        // particle slots passes cover (an upper bound of the live count
                                    // while the GPU keeps it: kernels compare with sim.particle_count)
-    uint64_t cells = 0, faces = 0;
+    GridLayout layout{};           // the grid's cells and faces (sim/grid_layout.h)
     uint32_t substeps = 1;         // substeps of the current step
     const Projector* projector = nullptr;  // the simulation's pressure projection
 };

@@ -14,14 +14,14 @@
 #include "gl/buffer.h"
 #include "gl/gl.h"
 #include "pf/pf.h"
+#include "sim/grid_layout.h"
 #include "sim/pass_runner.h"
 
 namespace pf {
 
 // The grid a solver works on (fixed for the simulation's lifetime).
 struct SolverGrid {
-    glm::ivec3 size{0};     // cells per axis
-    uint32_t cells = 0;     // size.x * size.y * size.z
+    GridLayout layout{};
     // The reduction kernels run one invocation a cell instead of one a mirror orbit, the same sums
     // bit for bit (shaders/solvers/common/orbit_main.glsl; Simulation::kOneCellReductionOrbits).
     bool one_cell_an_invocation = false;

@@ -15,14 +15,14 @@
 #include "gl/buffer.h"
 #include "gl/gl.h"
 #include "pf/pf.h"
+#include "sim/grid_layout.h"
 #include "sim/pass_runner.h"
 
 namespace pf {
 
 // The grid and capacity a scheme serves (fixed for the simulation's lifetime).
 struct P2gGrid {
-    glm::ivec3 dims{0};  // cells per axis
-    uint64_t cells = 0, faces = 0;
+    GridLayout layout{};
     uint32_t max_particles = 0;
 };
 

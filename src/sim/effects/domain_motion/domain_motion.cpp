@@ -64,7 +64,7 @@ void DomainMotionEffect::begin_frame(const FrameInfo& frame) {
 
 void DomainMotionEffect::run(EffectStage stage, PassRunner& runner, const EffectBuffers& b) {
     if (stage != EffectStage::after_grid_forces || !moving_) return;
-    runner.run({gl::ProgramId::domain_forces, stat_, b.faces,
+    runner.run({gl::ProgramId::domain_forces, stat_, b.layout.faces(),
                 {{PF_SLOT_FACE_ACCUM, &b.face_accum}, {PF_SLOT_FACE_VEL, &b.face_vel}, {PF_SLOT_FACE_VEL_OLD, &b.face_vel_old}},
                 {},
                 {Uniform::vec4(PF_LOC_DOMAIN_LINEAR, linear_.x, linear_.y, linear_.z, 0.0f),

@@ -70,7 +70,7 @@ float ForceFieldsEffect::max_wind_speed() const {
 
 void ForceFieldsEffect::run(EffectStage stage, PassRunner& runner, const EffectBuffers& b) {
     if (stage != EffectStage::after_grid_forces || uploaded_ == 0) return;
-    runner.run({gl::ProgramId::force_fields, stat_, b.faces,
+    runner.run({gl::ProgramId::force_fields, stat_, b.layout.faces(),
                 {{PF_SLOT_FACE_ACCUM, &b.face_accum}, {PF_SLOT_FACE_VEL, &b.face_vel}, {PF_SLOT_FORCE_FIELDS, &records_}},
                 {},
                 {Uniform::uint1(PF_LOC_EFFECT_COUNT, uploaded_)}});

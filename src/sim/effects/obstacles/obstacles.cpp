@@ -143,16 +143,16 @@ void ObstaclesEffect::run(EffectStage stage, PassRunner& runner, const EffectBuf
     const Uniforms count{Uniform::uint1(PF_LOC_EFFECT_COUNT, uploaded_)};
     if (stage == EffectStage::before_first_move) {
         // Only the cells: a leapfrog's first half move stops before them as every move does.
-        runner.run({gl::ProgramId::obstacle_cells, grid_stat_, b.cells, {{PF_SLOT_CELL_TYPE, &b.cell_type}, records}, {}, count, sdf_textures_});
+        runner.run({gl::ProgramId::obstacle_cells, grid_stat_, b.layout.cells(), {{PF_SLOT_CELL_TYPE, &b.cell_type}, records}, {}, count, sdf_textures_});
     } else if (stage == EffectStage::after_classify) {
-        runner.run({gl::ProgramId::obstacle_cells, grid_stat_, b.cells, {{PF_SLOT_CELL_TYPE, &b.cell_type}, records}, {}, count, sdf_textures_});
-        runner.run({gl::ProgramId::obstacle_faces, grid_stat_, b.faces,
+        runner.run({gl::ProgramId::obstacle_cells, grid_stat_, b.layout.cells(), {{PF_SLOT_CELL_TYPE, &b.cell_type}, records}, {}, count, sdf_textures_});
+        runner.run({gl::ProgramId::obstacle_faces, grid_stat_, b.layout.faces(),
                     {{PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_FACE_VEL, &b.face_vel}, records},
                     {},
                     count,
                     sdf_textures_});
     } else if (stage == EffectStage::after_velocity_update) {
-        runner.run({gl::ProgramId::obstacle_forces, force_stat_, b.faces,
+        runner.run({gl::ProgramId::obstacle_forces, force_stat_, b.layout.faces(),
                     {{PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_PRESSURE, &b.pressure}, {PF_SLOT_OBSTACLE_FORCES, &forces_}, records},
                     {},
                     {Uniform::uint1(PF_LOC_EFFECT_COUNT, uploaded_),

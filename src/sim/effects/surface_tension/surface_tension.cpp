@@ -12,7 +12,7 @@
 namespace pf {
 
 SurfaceTensionEffect::SurfaceTensionEffect(const pf_sim_desc& desc)
-    : cells_(uint64_t(desc.grid_size[0]) * desc.grid_size[1] * desc.grid_size[2]),
+    : cells_(GridLayout::of(desc.grid_size).cells()),
       density_(desc.density > 0.0f ? desc.density : 1000.0f),
       dx_(desc.cell_size),
       settings_(pf_default_surface_tension()) {}
@@ -56,11 +56,11 @@ float SurfaceTensionEffect::stable_tension(float dt) const {
 
 void SurfaceTensionEffect::run(EffectStage stage, PassRunner& runner, const EffectBuffers& b) {
     if (stage != EffectStage::after_classify || settings_.tension <= 0.0f) return;
-    runner.run({b.p2g_float ? gl::ProgramId::st_fraction_float : gl::ProgramId::st_fraction, stat_, b.cells,
+    runner.run({b.p2g_float ? gl::ProgramId::st_fraction_float : gl::ProgramId::st_fraction, stat_, b.layout.cells(),
                 {{PF_SLOT_FACE_ACCUM, &b.face_accum}, {PF_SLOT_ST_FRACTION, &fraction_}}});
-    runner.run({gl::ProgramId::st_liquid, stat_, b.cells,
+    runner.run({gl::ProgramId::st_liquid, stat_, b.layout.cells(),
                 {{PF_SLOT_ST_FRACTION, &fraction_}, {PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_ST_LIQUID, &liquid_}}});
-    runner.run({gl::ProgramId::st_force, stat_, b.faces,
+    runner.run({gl::ProgramId::st_force, stat_, b.layout.faces(),
                 {{PF_SLOT_FACE_VEL, &b.face_vel}, {PF_SLOT_FACE_FRACTION, &b.face_fraction},
                  {PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_ST_LIQUID, &liquid_}},
                 {},

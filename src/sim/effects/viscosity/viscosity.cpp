@@ -20,8 +20,8 @@ static_assert(PF_STATUS_SOLVER_FIRST_ROUND == PF_STATUS_SOLVER_RESIDUAL + 1 &&
 
 ViscosityEffect::ViscosityEffect(const pf_sim_desc& desc)
     : density_(desc.density > 0.0f ? desc.density : 1000.0f),
-      cells_(uint64_t(desc.grid_size[0]) * desc.grid_size[1] * desc.grid_size[2]),
-      nodes_(uint64_t(desc.grid_size[0] + 1) * (desc.grid_size[1] + 1) * (desc.grid_size[2] + 1)),
+      cells_(GridLayout::of(desc.grid_size).cells()),
+      nodes_(GridLayout::of(desc.grid_size).nodes()),
       settings_(pf_default_viscosity()) {}
 
 std::vector<gl::ProgramId> ViscosityEffect::programs() const {
@@ -109,11 +109,11 @@ void ViscosityEffect::run(EffectStage stage, PassRunner& runner, const EffectBuf
             report_.upload(PF_STATUS_SOLVER_ITERATIONS * 4, sizeof zeros, zeros);
             static_assert(PF_STATUS_SOLVER_LATER_ROUNDS == PF_STATUS_SOLVER_ITERATIONS + 3, "contiguous words");
         }
-        runner.copy(b.face_vel, solid_vel_, size_t(b.faces) * 4);
+        runner.copy(b.face_vel, solid_vel_, size_t(b.layout.faces()) * 4);
     } else if (stage == EffectStage::after_velocity_update) {
         // Coupling rounds need a projector; without one (never in a simulation) one round.
         const uint32_t rounds = b.projector ? settings_.coupling_rounds : 1u;
-        if (rounds > 1) runner.copy(b.face_vel, round_input_, size_t(b.faces) * 4);
+        if (rounds > 1) runner.copy(b.face_vel, round_input_, size_t(b.layout.faces()) * 4);
         for (uint32_t round = 0; round < rounds; ++round) {
             solve(runner, b);
             first_substep_ = false;
@@ -124,9 +124,9 @@ void ViscosityEffect::run(EffectStage stage, PassRunner& runner, const EffectBuf
             }
             // Uzawa's round: what the projection does to this round's viscous velocities (its
             // pressure, as a velocity change) is added to the input of the next round's solve.
-            runner.copy(b.face_vel, round_before_, size_t(b.faces) * 4);
+            runner.copy(b.face_vel, round_before_, size_t(b.layout.faces()) * 4);
             project(runner, b);
-            runner.run({gl::ProgramId::visc_couple_update, stat_, b.faces,
+            runner.run({gl::ProgramId::visc_couple_update, stat_, b.layout.faces(),
                         {{PF_SLOT_VISC_X, &b.face_vel}, {PF_SLOT_VISC_TARGET, &round_input_},
                          {PF_SLOT_VISC_BEFORE, &round_before_}, {PF_SLOT_CELL_TYPE, &b.cell_type}}});
         }
@@ -148,7 +148,7 @@ void ViscosityEffect::project(PassRunner& runner, const EffectBuffers& b) {
 }
 
 void ViscosityEffect::solve(PassRunner& runner, const EffectBuffers& b) {
-    const Workgroups face_groups = runner.workgroups(b.faces), node_groups = runner.workgroups(nodes_);
+    const Workgroups face_groups = runner.workgroups(b.layout.faces()), node_groups = runner.workgroups(nodes_);
     const Bind cell_type{PF_SLOT_CELL_TYPE, &b.cell_type}, coef{PF_SLOT_VISC_COEF, &coef_},
         state{PF_SLOT_VISC_STATE, &state_}, sigma_cell{PF_SLOT_VISC_SIGMA_CELL, &sigma_cell_},
         sigma_node{PF_SLOT_VISC_SIGMA_NODE, &sigma_node_}, r{PF_SLOT_VISC_R, &r_}, p{PF_SLOT_VISC_P, &p_},
@@ -157,7 +157,7 @@ void ViscosityEffect::solve(PassRunner& runner, const EffectBuffers& b) {
                   slip = Uniform::uint1(PF_LOC_VISC_FREE_SLIP, settings_.free_slip);
     const Indirect over_faces{&state_, PF_VISC_FACE_RECORD * 4}, over_nodes{&state_, PF_VISC_NODE_RECORD * 4};
 
-    runner.run({gl::ProgramId::visc_setup, stat_, b.faces, {cell_type, coef, state}, {},
+    runner.run({gl::ProgramId::visc_setup, stat_, b.layout.faces(), {cell_type, coef, state}, {},
                 {nu, slip,
                  Uniform::ivec4(PF_LOC_VISC_RECORDS, int32_t(face_groups.x), int32_t(face_groups.y),
                                 int32_t(node_groups.x), int32_t(node_groups.y)),
@@ -167,7 +167,7 @@ void ViscosityEffect::solve(PassRunner& runner, const EffectBuffers& b) {
                 {cell_type, {PF_SLOT_VISC_P, &b.face_vel}, {PF_SLOT_VISC_SOLID_VEL, &solid_vel_}, sigma_cell, sigma_node},
                 {},
                 {nu, slip}});
-    runner.run({gl::ProgramId::visc_apply_start, stat_, b.faces, {sigma_cell, sigma_node, coef, r, p, state, partials}});
+    runner.run({gl::ProgramId::visc_apply_start, stat_, b.layout.faces(), {sigma_cell, sigma_node, coef, r, p, state, partials}});
     const Uniform tolerance = Uniform::float1(PF_LOC_VISC_TOLERANCE, settings_.tolerance);
     const uint32_t issued = issued_iterations();
     for (uint32_t k = 0; k < issued; ++k) {

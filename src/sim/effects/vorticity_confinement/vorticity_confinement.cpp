@@ -8,7 +8,7 @@
 namespace pf {
 
 VorticityConfinementEffect::VorticityConfinementEffect(const pf_sim_desc& desc)
-    : cells_(uint64_t(desc.grid_size[0]) * desc.grid_size[1] * desc.grid_size[2]),
+    : cells_(GridLayout::of(desc.grid_size).cells()),
       settings_(pf_default_vorticity_confinement()) {}
 
 std::vector<gl::ProgramId> VorticityConfinementEffect::programs() const {
@@ -33,9 +33,9 @@ pf_result VorticityConfinementEffect::init(const gl::Api& gl, PassRunner& runner
 
 void VorticityConfinementEffect::run(EffectStage stage, PassRunner& runner, const EffectBuffers& b) {
     if (stage != EffectStage::after_classify || settings_.strength <= 0.0f) return;
-    runner.run({gl::ProgramId::vorticity, stat_, uint32_t(b.cells),
+    runner.run({gl::ProgramId::vorticity, stat_, uint32_t(b.layout.cells()),
                 {{PF_SLOT_FACE_VEL, &b.face_vel}, {PF_SLOT_CELL_TYPE, &b.cell_type}, {PF_SLOT_VORTICITY, &vorticity_}}});
-    runner.run({gl::ProgramId::confinement_force, stat_, uint32_t(b.faces),
+    runner.run({gl::ProgramId::confinement_force, stat_, uint32_t(b.layout.faces()),
                 {{PF_SLOT_FACE_VEL, &b.face_vel}, {PF_SLOT_VORTICITY, &vorticity_}},
                 {},
                 {Uniform::float1(PF_LOC_VORTICITY_STRENGTH, settings_.strength)}});

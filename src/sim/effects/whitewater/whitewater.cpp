@@ -10,7 +10,7 @@ namespace pf {
 static_assert(PF_GPU_FLAG_WHITEWATER_FULL == PF_FLAG_WHITEWATER_FULL, "flag bits shared with GLSL");
 
 WhitewaterEffect::WhitewaterEffect(const pf_sim_desc& desc)
-    : cells_(uint64_t(desc.grid_size[0]) * desc.grid_size[1] * desc.grid_size[2]),
+    : cells_(GridLayout::of(desc.grid_size).cells()),
       seed_(desc.seed),
       settings_(pf_default_whitewater()) {}
 
@@ -71,7 +71,7 @@ void WhitewaterEffect::run(EffectStage stage, PassRunner& runner, const EffectBu
     const Uniform capacity = Uniform::uint1(PF_LOC_WW_CAPACITY, allocated_);
     // The per-particle passes: one invocation per live particle (the last commit's record).
     const Indirect live{&state_, PF_WW_GROUPS * 4};
-    runner.run({gl::ProgramId::ww_fraction, stat_, b.cells, {cell_type, fraction}});
+    runner.run({gl::ProgramId::ww_fraction, stat_, b.layout.cells(), {cell_type, fraction}});
     runner.run({gl::ProgramId::ww_advect,
                 stat_,
                 0,
@@ -80,7 +80,7 @@ void WhitewaterEffect::run(EffectStage stage, PassRunner& runner, const EffectBu
                 {Uniform::vec4(PF_LOC_WW_MOTION, frame_dt_, w.bubble_buoyancy, w.bubble_drag, w.spray_drag)}});
     runner.run({gl::ProgramId::ww_emit,
                 stat_,
-                b.cells,
+                b.layout.cells(),
                 {face_vel, cell_type, fraction, out_pos, out_vel, state, status},
                 {},
                 {capacity,

@@ -40,12 +40,12 @@ ProgramId ConjugateGradientSolver::matvec_program(bool pair) const {
 pf_result ConjugateGradientSolver::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid,
                                         const Log& log, const char* fn) {
     grid_ = grid;
-    const size_t bytes = size_t(grid.cells) * (pairs_ ? 8 : 4);  // a pair solve's vectors hold two values a cell
+    const size_t bytes = size_t(grid.layout.cells()) * (pairs_ ? 8 : 4);  // a pair solve's vectors hold two values a cell
     r_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_r");
     p_[0] = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_p");
     p_[1] = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_p");
     q_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_q");
-    working_type_ = gl::Buffer(gl, size_t(grid.cells) * 4, GL_DYNAMIC_COPY, "cg_working_type");
+    working_type_ = gl::Buffer(gl, size_t(grid.layout.cells()) * 4, GL_DYNAMIC_COPY, "cg_working_type");
     if (kind_ != Preconditioner::none) z_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "cg_z");
     std::string error = control_.init(gl, runner, grid, pairs_);
     const ProgramId programs[] = {init_program(), update_program(), matvec_program(), ProgramId::separation_active_set,
@@ -75,14 +75,14 @@ void ConjugateGradientSolver::solve(PassRunner& runner, const PressureProblem& p
     }
     // Active-set rounds on a working copy of the cell types; the report measures the
     // complementarity residual with the real ones.
-    runner.copy(problem.cell_type, working_type_, size_t(grid_.cells) * 4);
+    runner.copy(problem.cell_type, working_type_, size_t(grid_.layout.cells()) * 4);
     const PressureProblem working{working_type_,  problem.rhs,    problem.pressure,
                                   problem.status, problem.params, problem.recent_iterations,
                                   problem.recent_later_iterations, problem.recent_converged,
                                   problem.recent_residual};
     const Pass clamp{ProgramId::separation_clamp,
                      stat_,
-                     grid_.cells,
+                     grid_.layout.cells(),
                      {{PF_SLOT_CELL_TYPE, &problem.cell_type},
                       {PF_SLOT_SOLVER_X, &problem.pressure},
                       {PF_SLOT_SOLVER_STATE, &control_.state()}},
@@ -92,7 +92,7 @@ void ConjugateGradientSolver::solve(PassRunner& runner, const PressureProblem& p
     for (uint32_t round = 0; round < kActiveSetRounds; ++round) {
         runner.run({ProgramId::separation_active_set,
                     stat_,
-                    grid_.cells,
+                    grid_.layout.cells(),
                     {{PF_SLOT_CELL_TYPE, &problem.cell_type},
                      {PF_SLOT_RHS, &problem.rhs},
                      {PF_SLOT_SOLVER_X, &problem.pressure},
@@ -149,7 +149,7 @@ void ConjugateGradientSolver::krylov(PassRunner& runner, const PressureProblem& 
             binds.add({PF_SLOT_SOLVER_RHS_SECOND, &second->rhs});
             binds.add({PF_SLOT_SOLVER_X_SECOND, &second->pressure});
         }
-        runner.run({init_program(pair), stat_, grid_.cells, binds, {}, {dims}});
+        runner.run({init_program(pair), stat_, grid_.layout.cells(), binds, {}, {dims}});
         precondition(false, PF_CG_STEP_START);
     } else {
         // r, z and their sums per orbit; the last workgroup runs the start step.

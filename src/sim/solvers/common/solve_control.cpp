@@ -14,11 +14,11 @@ std::string SolveControl::init(const gl::Api& gl, PassRunner& runner, const Solv
     std::vector<uint32_t> zeros(PF_SOLVER_PAIR_WORDS, 0u);
     state_ = gl::Buffer(gl, zeros.size() * 4, GL_DYNAMIC_COPY, "solver_state");
     state_.upload(0, zeros.size() * 4, zeros.data());
-    orbits_ = uint32_t(orbits(grid.size));
+    orbits_ = uint32_t(orbits(grid.layout.dims));
     // One workgroup per PF_WORKGROUP_SIZE orbits in either mapping (orbit_main.glsl).
     partials_ = runner.workgroups(orbits_).total();  // a 2D dispatch may add idle workgroups
     partials_buffer_ = gl::Buffer(gl, size_t(partials_) * (pairs ? 32 : 16), GL_DYNAMIC_COPY, "solver_partials");
-    add_record(grid.cells);
+    add_record(grid.layout.cells());
     orbit_record_ = add_record(orbits_);
     for (gl::ProgramId id : {reduction(gl::ProgramId::solver_rhs_stats), gl::ProgramId::solver_begin,
                              reduction(gl::ProgramId::solver_residual), gl::ProgramId::solver_check,

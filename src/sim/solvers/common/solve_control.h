@@ -69,8 +69,8 @@ public:
     const gl::Buffer& partials() const { return partials_buffer_; }
     // The level-size uniform of the solver kernels that work on cells.
     static Uniform dims_uniform(glm::ivec3 dims);
-    Uniform dims_uniform() const { return dims_uniform(grid_.size); }
-    glm::ivec3 dims() const { return grid_.size; }
+    Uniform dims_uniform() const { return dims_uniform(grid_.layout.dims); }
+    glm::ivec3 dims() const { return grid_.layout.dims; }
 
 private:
     // residual.comp over one problem, or both of a pair (second non-null).

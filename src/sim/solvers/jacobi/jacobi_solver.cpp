@@ -9,7 +9,7 @@ namespace pf {
 pf_result JacobiSolver::init(const gl::Api& gl, PassRunner& runner, const SolverGrid& grid, const Log& log,
                              const char* fn) {
     grid_ = grid;
-    scratch_ = gl::Buffer(gl, size_t(grid.cells) * 4, GL_DYNAMIC_COPY, "jacobi_scratch");
+    scratch_ = gl::Buffer(gl, size_t(grid.layout.cells()) * 4, GL_DYNAMIC_COPY, "jacobi_scratch");
     std::string error = control_.init(gl, runner, grid);
     if (error.empty()) error = runner.prepare(gl::ProgramId::jacobi);
     if (!error.empty()) return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
@@ -26,7 +26,7 @@ void JacobiSolver::solve(PassRunner& runner, const PressureProblem& problem) {
     const gl::Buffer* src = &problem.pressure;
     const gl::Buffer* dst = &scratch_;
     if (sweeps % 2 == 1) {
-        runner.copy(problem.pressure, scratch_, size_t(grid_.cells) * 4);
+        runner.copy(problem.pressure, scratch_, size_t(grid_.layout.cells()) * 4);
         std::swap(src, dst);
     }
     uint32_t checked = 0;

@@ -16,9 +16,9 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
     for (;;) {
         Level level;
         level.dims = dims;
-        level.cells = uint32_t(dims.x * dims.y * dims.z);
+        level.cells = uint32_t(GridLayout{dims}.cells());
         const bool fine = levels_.empty();
-        const glm::ivec3 next = (dims + 1) / 2;
+        const glm::ivec3 next = GridLayout{dims}.coarsened().dims;
         // Axes of two or three cells coarsen to one and two like any other (the prolongation clamps
         // onto the level); only an axis of one cell stays as it is.
         const bool last = level.cells <= PF_MG_COARSE_CELLS || levels_.size() + 1 == PF_MG_MAX_LEVELS;
@@ -38,7 +38,7 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         // wherever it holds most of the work (a large grid; a CPU rasteriser, which has no launch
         // cost to save).
         level.fused = !fine && level.cells <= PF_MG_FUSED_CELLS;
-        const uint64_t next_cells = uint64_t(next.x) * uint64_t(next.y) * uint64_t(next.z);
+        const uint64_t next_cells = GridLayout{next}.cells();
         // The bottom of the V-cycle in one workgroup (mg_bottom.comp): the level above the coarsest.
         level.bottom = !fine && !last && level.cells <= PF_MG_BOTTOM_CELLS && next_cells <= PF_MG_COARSE_CELLS;
         const bool finer_unfused = !fine && !levels_.back().fused;
@@ -93,10 +93,7 @@ void Multigrid::half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::
                  Uniform::float1(PF_LOC_SOLVER_OMEGA, 1.0f)}});
 }
 
-uint64_t Multigrid::tiles(glm::ivec3 dims, int edge) {
-    const glm::ivec3 n = (dims + edge - 1) / edge;
-    return uint64_t(n.x) * uint64_t(n.y) * uint64_t(n.z);
-}
+uint64_t Multigrid::tiles(glm::ivec3 dims, int edge) { return GridLayout{dims}.tiles(edge); }
 
 Uniform Multigrid::coarse_dims(const Level& coarse) {
     return Uniform::ivec4(PF_LOC_SOLVER_COARSE_DIMS, coarse.dims.x, coarse.dims.y, coarse.dims.z, int(coarse.cells));

@@ -23,8 +23,8 @@ pf_result AtomicP2g::prepare(const gl::Api&, PassRunner& runner, const P2gGrid& 
 
 void AtomicP2g::run(PassRunner& runner, const P2gBuffers& in) {
     // The atomics add into both words of every face sample and into every cell's count.
-    runner.fill(in.face_accum, uint32_t(grid_.faces) * 2, 0u, in.clear);
-    runner.fill(in.cell_count, uint32_t(grid_.cells), 0u, in.clear);
+    runner.fill(in.face_accum, uint32_t(grid_.layout.accum_words()), 0u, in.clear);
+    runner.fill(in.cell_count, uint32_t(grid_.layout.cells()), 0u, in.clear);
     const Bind pos{PF_SLOT_PARTICLE_POS, &in.positions}, vel{PF_SLOT_PARTICLE_VEL, &in.velocities},
         accum{PF_SLOT_FACE_ACCUM, &in.face_accum}, count{PF_SLOT_CELL_COUNT, &in.cell_count},
         status{PF_SLOT_STATUS, &in.status}, affine{PF_SLOT_PARTICLE_AFFINE, &in.affine};

@@ -21,7 +21,7 @@ pf_result SortedGatherP2g::prepare(const gl::Api& gl, PassRunner& runner, const 
     if (cell_slot_.bytes() != 0) return PF_OK;
     // Particles are sorted by half cell (2 x 2 x 2 per cell).
     PrefixSum halves;
-    halves.plan(grid.cells * 8u);
+    halves.plan(grid.layout.half_cells());
     const uint64_t words = halves.scan_words(), np = grid.max_particles;
     const uint64_t largest = std::max<uint64_t>(np * 16u, words * 4u);  // the sorted copies or the starts
     if (pf_result r = gl::check_storage_block(gl, log, largest, std::string(fn) + ": PF_P2G_SORTED_GATHER needs",
@@ -59,7 +59,7 @@ void SortedGatherP2g::run(PassRunner& r, const P2gBuffers& in) {
         affine{PF_SLOT_PARTICLE_AFFINE, &in.affine};
     // 1. Count per cell and per half cell (both cleared), keeping each particle's half cell and
     // slot. The gather writes every accumulator: they need no clearing.
-    r.fill(in.cell_count, uint32_t(grid_.cells), 0u, in.clear);
+    r.fill(in.cell_count, uint32_t(grid_.layout.cells()), 0u, in.clear);
     halves_.clear_counts(r, in.clear);
     r.run({ProgramId::p2g_sort_count, stat_sort_, np,
            {pos, count, {PF_SLOT_SORT_HALF_COUNT, &halves_.counts()}, cell_slot}});
@@ -73,7 +73,7 @@ void SortedGatherP2g::run(PassRunner& r, const P2gBuffers& in) {
                    : Bindings{pos, vel, cell_slot, start, unsorted, grid, particles}});
     // 5. One invocation per face sample sums its particles (both words of every sample).
     const Bind accum{PF_SLOT_FACE_ACCUM, &in.face_accum};
-    r.run({in.apic ? ProgramId::p2g_gather_apic : ProgramId::p2g_gather, stat_gather_, grid_.faces,
+    r.run({in.apic ? ProgramId::p2g_gather_apic : ProgramId::p2g_gather, stat_gather_, grid_.layout.faces(),
            in.apic ? Bindings{start, grid, particles, accum, affine} : Bindings{start, grid, particles, accum}});
 }
 

@@ -17,7 +17,7 @@ pf_result TiledP2g::prepare(const gl::Api& gl, PassRunner& runner, const P2gGrid
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
     if (tile_slot_.bytes() != 0) return PF_OK;
-    const glm::ivec3 tiles = (grid.dims + PF_P2G_TILE - 1) / PF_P2G_TILE;
+    const glm::ivec3 tiles = grid.layout.tile_dims(PF_P2G_TILE);
     const uint64_t tile_count = uint64_t(tiles.x) * uint64_t(tiles.y) * uint64_t(tiles.z);
     PrefixSum per_tile;
     per_tile.plan(tile_count);
@@ -50,7 +50,7 @@ void TiledP2g::run(PassRunner& r, const P2gBuffers& in) {
     const Bind pos{PF_SLOT_PARTICLE_POS, &in.positions}, tile_slot{PF_SLOT_SORT_CELL_SLOT, &tile_slot_};
     // 1. Count per tile, keeping each particle's tile and slot. The splat adds into the
     // accumulators (cleared) and writes every cell's count (no clear).
-    r.fill(in.face_accum, uint32_t(grid_.faces) * 2, 0u, in.clear);
+    r.fill(in.face_accum, uint32_t(grid_.layout.accum_words()), 0u, in.clear);
     per_tile_.clear_counts(r, in.clear);
     r.run({ProgramId::p2g_tile_count, stat_sort_, np, {pos, {PF_SLOT_SORT_HALF_COUNT, &per_tile_.counts()}, tile_slot}});
     // 2. Tile starts; 3. particle indices grouped by tile.
