@@ -7,9 +7,7 @@
 vec3 centre_velocity(ivec3 c) {
     vec3 u;
     for (int a = 0; a < 3; ++a) {
-        ivec3 upper = c;
-        upper[a] += 1;
-        u[a] = 0.5 * (face_vel[face_index(a, c)] + face_vel[face_index(a, upper)]);
+        u[a] = 0.5 * (face_vel[cell_face(a, c, 0)] + face_vel[cell_face(a, c, 1)]);
     }
     return u;
 }

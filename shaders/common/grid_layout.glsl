@@ -17,10 +17,17 @@ ivec3 unflatten(int i, ivec3 d) {
 }
 ivec3 lattice_coord(ivec3 d, int i) { return unflatten(i, d); }
 
+int lattice_total(ivec3 d) { return d.x * d.y * d.z; }
 bool lattice_inside(ivec3 d, ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, d)); }
 
 // Index offsets of the six face neighbours in a box of d: -x, +x, -y, +y, -z, +z.
 int[6] lattice_steps(ivec3 d) { return int[6](-1, 1, -d.x, d.x, -d.x * d.y, d.x * d.y); }
+
+// Tiles of `edge` cells a side over a box of d (the last ones partly outside it): their count
+// per axis, the tile holding cell c, and a tile's first cell.
+ivec3 tile_dims(ivec3 d, int edge) { return (d + edge - 1) / edge; }
+ivec3 tile_of(ivec3 c, int edge) { return c / edge; }
+ivec3 tile_first_cell(ivec3 t, int edge) { return t * edge; }
 
 // Red-black colour of a cell: 0 when i + j + k is even.
 uint cell_color_at(ivec3 ijk) { return uint(ijk.x + ijk.y + ijk.z) & 1u; }

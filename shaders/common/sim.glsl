@@ -43,6 +43,19 @@ void decode_face(int id, out int axis, out ivec3 f) {
 
 bool face_inside(int axis, ivec3 f) { return lattice_inside(face_dims(axis), f); }
 
+// The cell below face f of lattice `axis` (f - e_axis; the cell above is f itself).
+ivec3 face_cell_below(int axis, ivec3 f) {
+    f[axis] -= 1;
+    return f;
+}
+// Cell c's face of lattice `axis` on its - side (side 0) or its + side (side 1: the + neighbour's).
+int cell_face(int axis, ivec3 c, int side) {
+    c[axis] += side;
+    return face_index(axis, c);
+}
+// The face between cell c and its neighbour n (kNeighbours' order: -x, +x, -y, +y, -z, +z).
+int neighbour_face(ivec3 c, int n) { return cell_face(n / 2, c, n & 1); }
+
 // The words of face `face` in the P2G accumulator: 2 face (momentum), 2 face + 1 (weight).
 int accum_word(int face, int k) { return 2 * face + k; }
 
@@ -50,6 +63,16 @@ int accum_word(int face, int k) { return 2 * face + k; }
 bool face_is_wall(int axis, ivec3 f) { return f[axis] == 0 || f[axis] == sim.grid[axis]; }
 
 vec3 grid_coord(vec3 world) { return (world - sim.origin.xyz) / sim.dx; }
+
+// World positions of cell c's lowest corner, of its centre, and of the centre of face f of
+// lattice `axis` (decode_face).
+vec3 cell_corner(ivec3 c) { return sim.origin.xyz + vec3(c) * sim.dx; }
+vec3 cell_centre(ivec3 c) { return sim.origin.xyz + (vec3(c) + 0.5) * sim.dx; }
+vec3 face_centre(int axis, ivec3 f) {
+    vec3 offset = vec3(0.5);
+    offset[axis] = 0.0;
+    return sim.origin.xyz + (vec3(f) + offset) * sim.dx;
+}
 
 // The cell holding grid coordinate g, clamped into the grid; the half cell (2 x 2 x 2 a cell).
 ivec3 cell_of(vec3 g) { return clamp(ivec3(floor(g)), ivec3(0), sim.grid.xyz - 1); }

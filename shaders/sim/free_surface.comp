@@ -19,10 +19,7 @@ void main() {
         ivec3 q = ijk + kNeighbours[n];
         // Neighbours' words change only above their kind bits here, so reading them races with nothing.
         if (!cell_inside(q) || PF_CELL_KIND(cell_type[cell_index(q)]) != PF_CELL_AIR) continue;
-        int axis = n / 2;
-        ivec3 f = ijk;
-        f[axis] += n & 1;  // the face between the cell and its + neighbour is the neighbour's
-        term[n] = 1.0 / face_fraction[face_index(axis, f)] - 1.0;
+        term[n] = 1.0 / face_fraction[neighbour_face(ijk, n)] - 1.0;
     }
     // Pairs per axis first, as common/sim.glsl's mirror_sum: mirrored cells get equal words.
     cell_type[c] = fluid_word(((term[0] + term[1]) + (term[2] + term[3])) + (term[4] + term[5]));

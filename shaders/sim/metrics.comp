@@ -31,9 +31,7 @@ shared float s_strain[PF_WORKGROUP_SIZE];
 
 // Cell-centred velocity component `a` of a FLUID cell: the mean of its two faces.
 float centred(int a, ivec3 ijk) {
-    ivec3 hi = ijk;
-    hi[a] += 1;
-    return 0.5 * (face_vel[face_index(a, ijk)] + face_vel[face_index(a, hi)]);
+    return 0.5 * (face_vel[cell_face(a, ijk, 0)] + face_vel[cell_face(a, ijk, 1)]);
 }
 
 // The strain invariant P of an interior FLUID cell. G[a][a] from the cell's own faces; across
@@ -42,12 +40,10 @@ float centred(int a, ivec3 ijk) {
 float strain_invariant(ivec3 ijk) {
     mat3 G;  // G[d][a] = d u_a / d x_d (the transpose does not change P)
     for (int a = 0; a < 3; ++a) {
-        ivec3 hi = ijk;
-        hi[a] += 1;
         float own = centred(a, ijk);
         for (int d = 0; d < 3; ++d) {
             if (d == a) {
-                G[d][a] = (face_vel[face_index(a, hi)] - face_vel[face_index(a, ijk)]) / sim.dx;
+                G[d][a] = (face_vel[cell_face(a, ijk, 1)] - face_vel[cell_face(a, ijk, 0)]) / sim.dx;
                 continue;
             }
             ivec3 p = ijk, m = ijk;
@@ -77,9 +73,7 @@ void main() {
         ivec3 ijk = cell_coord(c);
         float div = 0.0;
         for (int axis = 0; axis < 3; ++axis) {
-            ivec3 hi = ijk;
-            hi[axis] += 1;
-            div += face_vel[face_index(axis, hi)] - face_vel[face_index(axis, ijk)];
+            div += face_vel[cell_face(axis, ijk, 1)] - face_vel[cell_face(axis, ijk, 0)];
         }
         div /= sim.dx;
         float density = float(cell_count[c]) / sim.rest_particles;

@@ -21,9 +21,7 @@ void main() {
     ivec3 ijk = cell_coord(c);
     float div = 0.0;
     for (int axis = 0; axis < 3; ++axis) {
-        ivec3 hi = ijk;
-        hi[axis] += 1;
-        div += face_vel[face_index(axis, hi)] - face_vel[face_index(axis, ijk)];
+        div += face_vel[cell_face(axis, ijk, 1)] - face_vel[cell_face(axis, ijk, 0)];
     }
     rhs[c] = -div * sim.density * sim.dx / sim.dt;
 }

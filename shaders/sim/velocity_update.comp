@@ -24,8 +24,7 @@ void main() {
         valid[id] = 1u;
         return;
     }
-    ivec3 lo = f;
-    lo[axis] -= 1;
+    ivec3 lo = face_cell_below(axis, f);
     int a = cell_index(lo);
     int b = cell_index(f);
     uint ta = PF_CELL_KIND(cell_type[a]);

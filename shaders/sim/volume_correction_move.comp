@@ -20,8 +20,7 @@ layout(std430, binding = PF_SLOT_FACE_FRACTION) readonly buffer Fraction { float
 float face_displacement(int axis, ivec3 f) {
     // A grid one cell thick gives the clamped stencil a zero-weight face outside the grid.
     if (!face_inside(axis, f) || face_is_wall(axis, f)) return 0.0;
-    ivec3 lo = f;
-    lo[axis] -= 1;
+    ivec3 lo = face_cell_below(axis, f);
     int a = cell_index(lo), b = cell_index(f);
     uint ta = PF_CELL_KIND(cell_type[a]), tb = PF_CELL_KIND(cell_type[b]);
     if (ta == PF_CELL_SOLID || tb == PF_CELL_SOLID) return 0.0;

@@ -48,11 +48,9 @@ void main() {
         air = air || (cell_inside(nb) && PF_CELL_KIND(cell_type[cell_index(nb)]) == PF_CELL_AIR);
     }
     if (!air) return;
-    ivec3 hi = ijk;
-    hi[axis] += 1;
     if (g > 0.0) {  // the low wall: leaving is +
-        face_vel[face_index(axis, ijk)] = max(face_vel[face_index(axis, hi)], 0.0);
+        face_vel[cell_face(axis, ijk, 0)] = max(face_vel[cell_face(axis, ijk, 1)], 0.0);
     } else {  // the high wall: leaving is -
-        face_vel[face_index(axis, hi)] = min(face_vel[face_index(axis, ijk)], 0.0);
+        face_vel[cell_face(axis, ijk, 1)] = min(face_vel[cell_face(axis, ijk, 0)], 0.0);
     }
 }

@@ -20,8 +20,7 @@ layout(location = PF_LOC_DOMAIN_ALPHA) uniform vec4 u_alpha;
 // Component b of the old velocity at face f of lattice `axis` (b != axis): the mean of the
 // four b-faces of the two cells the face separates.
 float transverse(int axis, ivec3 f, int b) {
-    ivec3 lo = f;
-    lo[axis] -= 1;
+    ivec3 lo = face_cell_below(axis, f);
     ivec3 eb = ivec3(0);
     eb[b] = 1;
     return 0.25 * (face_vel_old[face_index(b, lo)] + face_vel_old[face_index(b, lo + eb)] +
@@ -35,9 +34,7 @@ void main() {
     ivec3 f;
     decode_face(id, axis, f);
     if (face_is_wall(axis, f) || accum[accum_word(id, 1)] <= 0) return;
-    vec3 g = vec3(f) + 0.5;
-    g[axis] = float(f[axis]);
-    vec3 x = sim.origin.xyz + g * sim.dx;
+    vec3 x = face_centre(axis, f);
     vec3 u;
     u[axis] = face_vel_old[id];
     for (int b = 0; b < 3; ++b)

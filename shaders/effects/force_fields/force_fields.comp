@@ -21,9 +21,7 @@ void main() {
     ivec3 f;
     decode_face(id, axis, f);
     if (face_is_wall(axis, f) || accum[accum_word(id, 1)] <= 0) return;
-    vec3 g = vec3(f) + 0.5;
-    g[axis] = float(f[axis]);
-    vec3 x = sim.origin.xyz + g * sim.dx;
+    vec3 x = face_centre(axis, f);
 
     vec3 a = vec3(0.0);
     for (uint k = 0u; k < u_count; ++k) {

@@ -15,8 +15,7 @@ void main() {
     ivec3 f;
     decode_face(id, axis, f);
     if (face_is_wall(axis, f)) return;
-    ivec3 lo = f;
-    lo[axis] -= 1;
+    ivec3 lo = face_cell_below(axis, f);
     bool solid_lo = PF_CELL_KIND(cell_type[cell_index(lo)]) == PF_CELL_SOLID;
     if (!solid_lo && PF_CELL_KIND(cell_type[cell_index(f)]) != PF_CELL_SOLID) return;
     int nearest;

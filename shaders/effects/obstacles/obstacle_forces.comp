@@ -51,8 +51,7 @@ void main() {
         ivec3 f;
         decode_face(id, axis, f);
         if (!face_is_wall(axis, f)) {
-            ivec3 lo = f;
-            lo[axis] -= 1;
+            ivec3 lo = face_cell_below(axis, f);
             uint ta = PF_CELL_KIND(cell_type[cell_index(lo)]);
             uint tb = PF_CELL_KIND(cell_type[cell_index(f)]);
             bool solid_lo = ta == PF_CELL_SOLID && tb == PF_CELL_FLUID;

@@ -79,12 +79,3 @@ float scene_distance(vec3 x, out int nearest) {
     return best;
 }
 
-// World position of the centre of cell c.
-vec3 cell_centre(ivec3 c) { return sim.origin.xyz + (vec3(c) + 0.5) * sim.dx; }
-
-// World position of the centre of face f of lattice `axis` (decode_face).
-vec3 face_centre(int axis, ivec3 f) {
-    vec3 offset = vec3(0.5);
-    offset[axis] = 0.0;
-    return sim.origin.xyz + (vec3(f) + offset) * sim.dx;
-}

@@ -75,10 +75,7 @@ void main() {
     kappa = clamp(kappa, -kMaxCurvature / sim.dx, kMaxCurvature / sim.dx);
     for (int n = 0; n < 6; ++n) {
         if (!air[n]) continue;
-        int axis = n / 2;
-        ivec3 f = c;
-        f[axis] += n & 1;  // the face between the cell and its + neighbour is the neighbour's
-        int face = face_index(axis, f);
+        int face = neighbour_face(c, n);
         float jump = sim.dt * u_tension * kappa / (sim.density * sim.dx * face_fraction[face]);
         // AIR on the + side: the surface's pressure is p_hi; on the - side, p_lo.
         face_vel[face] += (n & 1) != 0 ? -jump : jump;

@@ -20,9 +20,7 @@ void main() {
     ivec3 c = cell_coord(id);
     float sum = 0.0;
     for (int axis = 0; axis < 3; ++axis) {
-        ivec3 hi = c;
-        hi[axis] += 1;
-        sum += weight_sum(face_index(axis, c)) + weight_sum(face_index(axis, hi));
+        sum += weight_sum(cell_face(axis, c, 0)) + weight_sum(cell_face(axis, c, 1));
     }
     fraction[id] = min(sum / (6.0 * sim.rest_particles), 1.0);
 }

@@ -40,12 +40,11 @@ float value(int axis, ivec3 f) {
 
 void main() {
     int id = int(flat_id());
-    ivec3 d = visc_node_dims();
-    if (id >= d.x * d.y * d.z) return;
+    if (id >= visc_node_total()) return;
 #if !PF_VISC_START
     g_beta = uintBitsToFloat(state[PF_VISC_BETA]);
 #endif
-    ivec3 n = unflatten(id, d);
+    ivec3 n = visc_node_coord(id);
     float c = visc_coupling();
     if (cell_inside(n)) {  // n >= 0
         vec4 s = vec4(0.0);

@@ -35,8 +35,7 @@ void main() {
     ivec3 f;
     decode_face(id, axis, f);
     if (face_is_wall(axis, f)) return;
-    ivec3 lo = f;
-    lo[axis] -= 1;
+    ivec3 lo = face_cell_below(axis, f);
     if (vorticity[cell_index(lo)].w <= 0.0 || vorticity[cell_index(f)].w <= 0.0) return;
     face_vel[id] += sim.dt * 0.5 * (confinement(lo)[axis] + confinement(f)[axis]);
 }

@@ -89,7 +89,7 @@ void main() {
         atomicOr(status[PF_STATUS_FLAGS], PF_GPU_FLAG_WHITEWATER_FULL);
         count = int(u_capacity - min(first, u_capacity));
     }
-    vec3 corner = sim.origin.xyz + vec3(c) * sim.dx;
+    vec3 corner = cell_corner(c);
     float kind = kind_for(fraction[id]);
     for (int k = 0; k < count; ++k) {
         vec3 x = corner + sim.dx * vec3(next_random(random), next_random(random), next_random(random));

@@ -38,10 +38,10 @@ shared value_t s_res[kResidual * kResidual * kResidual];
 #include "solvers/mgpcg/restriction.glsl"
 
 void main() {
-    ivec3 tiles = (u_coarse_dims.xyz + kTile - 1) / kTile;
+    ivec3 tiles = tile_dims(u_coarse_dims.xyz, kTile);
     int g = int(workgroup_index());
-    if (g >= tiles.x * tiles.y * tiles.z) return;  // uniform across the workgroup
-    ivec3 c0 = tile_coord(g, tiles) * kTile;
+    if (g >= lattice_total(tiles)) return;  // uniform across the workgroup
+    ivec3 c0 = tile_first_cell(tile_coord(g, tiles), kTile);
     ivec3 origin = 2 * c0 - 3;  // fine coordinates of staged cell 0
     int lid = int(gl_LocalInvocationIndex);
     clear_staged_types();

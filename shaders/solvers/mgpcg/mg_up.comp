@@ -32,10 +32,10 @@ shared value_t s_coarse[kCoarse * kCoarse * kCoarse];
 #include "solvers/mgpcg/multigrid_tile.glsl"
 
 void main() {
-    ivec3 tiles = (u_dims.xyz + kTile - 1) / kTile;
+    ivec3 tiles = tile_dims(u_dims.xyz, kTile);
     int g = int(workgroup_index());
-    if (g >= tiles.x * tiles.y * tiles.z) return;  // uniform across the workgroup
-    ivec3 t0 = tile_coord(g, tiles) * kTile;
+    if (g >= lattice_total(tiles)) return;  // uniform across the workgroup
+    ivec3 t0 = tile_first_cell(tile_coord(g, tiles), kTile);
     ivec3 origin = t0 - 2;                  // fine coordinates of staged cell 0
     ivec3 coarse_origin = (t0 >> 1) - 2;    // coarse coordinates of s_coarse[0]
     int lid = int(gl_LocalInvocationIndex);

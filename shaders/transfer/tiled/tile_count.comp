@@ -29,9 +29,7 @@ void main() {
     uint tile = 0u, entry = 0u, rank = 0u;
     if (live) {
         ivec3 cell = cell_of(grid_coord(pos[i].xyz));
-        ivec3 tiles = (sim.grid.xyz + PF_P2G_TILE - 1) / PF_P2G_TILE;
-        ivec3 t = cell / PF_P2G_TILE;
-        tile = uint(t.x + tiles.x * (t.y + tiles.y * t.z));
+        tile = uint(lattice_index(tile_dims(sim.grid.xyz, PF_P2G_TILE), tile_of(cell, PF_P2G_TILE)));
         entry = tile % uint(PF_WORKGROUP_SIZE);
         for (;;) {
             uint held = atomicCompSwap(s_key[entry], 0u, tile + 1u);

@@ -48,18 +48,17 @@ void add_shared(int slot, int value) {
 // The tile's cell counts (those inside the grid): the shared counts, or 0 for an empty tile.
 void write_counts(ivec3 first_cell, int lane, bool counted) {
     for (int k = lane; k < kTileCells; k += PF_WORKGROUP_SIZE) {
-        ivec3 cell = first_cell + unflatten(k, ivec3(PF_P2G_TILE));
+        ivec3 cell = first_cell + lattice_coord(ivec3(PF_P2G_TILE), k);
         if (cell_inside(cell)) cell_count[cell_index(cell)] = counted ? s_count[k] : 0u;
     }
 }
 
 void main() {
-    ivec3 tiles = (sim.grid.xyz + PF_P2G_TILE - 1) / PF_P2G_TILE;
+    ivec3 tiles = tile_dims(sim.grid.xyz, PF_P2G_TILE);
     uint tile = flat_id() / uint(PF_WORKGROUP_SIZE);
-    if (tile >= uint(tiles.x * tiles.y * tiles.z)) return;  // the whole workgroup
+    if (tile >= uint(lattice_total(tiles))) return;  // the whole workgroup
     int lane = int(gl_LocalInvocationID.x);
-    ivec3 t = unflatten(int(tile), tiles);
-    ivec3 first_cell = t * PF_P2G_TILE;
+    ivec3 first_cell = tile_first_cell(lattice_coord(tiles, int(tile)), PF_P2G_TILE);
     ivec3 origin = first_cell - 1;  // the window's first face sample, on every lattice
     uint begin = tile_start[tile], end = tile_start[tile + 1u];
     if (begin == end) {
@@ -78,7 +77,7 @@ void main() {
         vec3 v = vel[i].xyz;
         ivec3 cell = cell_of(g);
         ivec3 c = clamp(cell - first_cell, ivec3(0), ivec3(PF_P2G_TILE - 1));  // the same cell tile_count gave this tile
-        atomicAdd(s_count[c.x + PF_P2G_TILE * (c.y + PF_P2G_TILE * c.z)], 1u);
+        atomicAdd(s_count[lattice_index(ivec3(PF_P2G_TILE), c)], 1u);
         for (int axis = 0; axis < 3; ++axis) {
             LatticeTerms t = lattice_terms(i, axis, g, v);
             for (int n = 0; n < 8; ++n) {
@@ -86,8 +85,8 @@ void main() {
                 int momentum = fixed_momentum(w, term_velocity(t, n)), weight = fixed_weight(w);
                 ivec3 node = term_node(t, n);
                 ivec3 s = node - origin;
-                if (all(greaterThanEqual(s, ivec3(0))) && all(lessThan(s, ivec3(PF_P2G_TILE_WINDOW)))) {
-                    int slot = 2 * (axis * kWindowSamples + s.x + PF_P2G_TILE_WINDOW * (s.y + PF_P2G_TILE_WINDOW * s.z));
+                if (lattice_inside(ivec3(PF_P2G_TILE_WINDOW), s)) {
+                    int slot = 2 * (axis * kWindowSamples + lattice_index(ivec3(PF_P2G_TILE_WINDOW), s));
                     add_shared(slot, momentum);
                     add_shared(slot + 1, weight);
                 } else {  // not expected (the window holds every node); correct either way
@@ -104,7 +103,7 @@ void main() {
         int value = s_accum[k];
         if (value == 0) continue;  // also every window sample outside its lattice
         int window_index = k / 2, axis = window_index / kWindowSamples, w = window_index % kWindowSamples;
-        ivec3 node = origin + unflatten(w, ivec3(PF_P2G_TILE_WINDOW));
+        ivec3 node = origin + lattice_coord(ivec3(PF_P2G_TILE_WINDOW), w);
         add_global(accum_word(face_index(axis, node), k & 1), value);
     }
     write_counts(first_cell, lane, true);
