@@ -1,8 +1,10 @@
 // Where a grid's cells live in storage: every lattice (the cells, each face lattice, the
 // multigrid levels, viscosity's nodes, tiles and staged blocks) is a dense box of dims d, x
 // fastest. Pure functions of d, with no uniform block, so that render shaders can include it.
-// Kernels reach cells through these and the wrappers built on them (common/sim.glsl's cell_*
-// and face_*, solvers/common/poisson.glsl's level_*): the one place a sparse layout would change.
+// Kernels reach cells through these and the wrappers built on them (common/sim.glsl's cell_*,
+// face_* and node_*, solvers/common/poisson.glsl's level_*, solvers/mgpcg/multigrid.glsl's
+// coarse_*, multigrid_tile.glsl's staged cubes, common/ssf_spray.glsl's reads of the cell
+// counts): the one place a sparse layout would change.
 
 // The flat index of c in a box of d.
 int lattice_index(ivec3 d, ivec3 c) { return c.x + d.x * (c.y + d.y * c.z); }
@@ -10,12 +12,11 @@ int lattice_index(ivec3 d, ivec3 c) { return c.x + d.x * (c.y + d.y * c.z); }
 // The coordinates of flat index i in a box of d, with two integer divisions (each a long
 // instruction sequence on GPUs); i % d.x, (i / d.x) % d.y, i / (d.x d.y) takes three divisions
 // and two modulos (docs/notes/2026-11-27-kernel-profile-and-gaps.md).
-ivec3 unflatten(int i, ivec3 d) {
+ivec3 lattice_coord(ivec3 d, int i) {
     int row = i / d.x;
     int k = row / d.y;
     return ivec3(i - row * d.x, row - k * d.y, k);
 }
-ivec3 lattice_coord(ivec3 d, int i) { return unflatten(i, d); }
 
 int lattice_total(ivec3 d) { return d.x * d.y * d.z; }
 bool lattice_inside(ivec3 d, ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, d)); }

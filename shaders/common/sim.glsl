@@ -21,6 +21,13 @@ bool cell_inside(ivec3 c) { return lattice_inside(sim.grid.xyz, c); }
 int cell_total() { return sim.grid.w; }
 int face_total() { return sim.face_count.w; }
 
+// Cell corners (nodes; viscosity's edge stresses live on them): per axis, a node's flat index and
+// back, and their count.
+ivec3 node_dims() { return sim.grid.xyz + 1; }
+int node_index(ivec3 n) { return lattice_index(node_dims(), n); }
+ivec3 node_coord(int id) { return lattice_coord(node_dims(), id); }
+int node_total() { return lattice_total(node_dims()); }
+
 // Sample counts of the lattice of face component `axis`.
 ivec3 face_dims(int axis) {
     ivec3 d = sim.grid.xyz;

@@ -22,10 +22,12 @@ void main() {
     int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
     ivec3 n = sim.grid.xyz;
     int column = int(flat_id());
-    if (column >= n[a1] * n[a2]) return;
+    ivec3 columns = ivec3(n[a1], n[a2], 1);  // the columns' box, a1 fastest
+    if (column >= lattice_total(columns)) return;
     ivec3 c;
-    c[a1] = column % n[a1];
-    c[a2] = column / n[a1];
+    ivec3 base = lattice_coord(columns, column);
+    c[a1] = base.x;
+    c[a2] = base.y;
     bool down_is_low = sim.gravity[axis] < 0.0;  // the floor is cell 0 along the axis, else n - 1
     int floor_cell = down_is_low ? 0 : n[axis] - 1;
     int up = down_is_low ? 1 : -1;

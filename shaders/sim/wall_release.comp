@@ -36,8 +36,9 @@ void main() {
     int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
     ivec3 ijk;
     ijk[axis] = g < 0.0 ? n[axis] - 1 : 0;
-    ijk[min(a1, a2)] = k % n[min(a1, a2)];
-    ijk[max(a1, a2)] = k / n[min(a1, a2)];
+    ivec3 wall = lattice_coord(ivec3(n[min(a1, a2)], n[max(a1, a2)], 1), k);  // the lower axis fastest
+    ijk[min(a1, a2)] = wall.x;
+    ijk[max(a1, a2)] = wall.y;
     int c = cell_index(ijk);
     if (PF_CELL_KIND(cell_type[c]) != PF_CELL_FLUID) return;
     float holding = kHoldingShare * sim.density * length(sim.gravity.xyz) * sim.dx;

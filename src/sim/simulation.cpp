@@ -89,7 +89,7 @@ pf_result Simulation::init() {
         return log_.error(PF_ERROR_GL_UNSUPPORTED, "pf_create: the GL offers " + std::to_string(max_blocks) +
                                                        " compute storage blocks, 8 are needed");
     }
-    const uint64_t largest = std::max<uint64_t>(uint64_t(desc_.max_particles) * 16u, layout_.faces() * 8u);
+    const uint64_t largest = std::max<uint64_t>(uint64_t(desc_.max_particles) * 16u, layout_.accum_words() * 4u);
     if (pf_result r = gl::check_storage_block(gl_, log_, largest, "pf_create: the simulation needs",
                                               "(16 per particle, 8 per face)", "lower max_particles or the grid size");
         r != PF_OK)
@@ -813,8 +813,7 @@ pf_result Simulation::set_ordered_g2p_face_bytes_for_test(uint64_t bytes) {
 }
 
 bool Simulation::one_cell_reductions() const {
-    const uint32_t* n = desc_.grid_size;
-    return SolveControl::orbits(glm::ivec3(n[0], n[1], n[2])) <= one_cell_reduction_orbits_;
+    return SolveControl::orbits(layout_.dims) <= one_cell_reduction_orbits_;
 }
 
 pf_result Simulation::set_one_cell_reduction_orbits_for_test(uint64_t orbits) {

@@ -21,10 +21,8 @@ layout(location = PF_LOC_DOMAIN_ALPHA) uniform vec4 u_alpha;
 // four b-faces of the two cells the face separates.
 float transverse(int axis, ivec3 f, int b) {
     ivec3 lo = face_cell_below(axis, f);
-    ivec3 eb = ivec3(0);
-    eb[b] = 1;
-    return 0.25 * (face_vel_old[face_index(b, lo)] + face_vel_old[face_index(b, lo + eb)] +
-                   face_vel_old[face_index(b, f)] + face_vel_old[face_index(b, f + eb)]);
+    return 0.25 * (face_vel_old[cell_face(b, lo, 0)] + face_vel_old[cell_face(b, lo, 1)] +
+                   face_vel_old[cell_face(b, f, 0)] + face_vel_old[cell_face(b, f, 1)]);
 }
 
 void main() {

@@ -28,7 +28,7 @@ float g_beta;
 
 // The field on face (axis, f); 0 outside the lattice (the ghost faces beyond the walls).
 float value(int axis, ivec3 f) {
-    if (!visc_face_inside(axis, f)) return 0.0;
+    if (!face_inside(axis, f)) return 0.0;
     int i = face_index(axis, f);
 #if PF_VISC_START
     return visc_face_role(axis, f) == VISC_FIXED ? solid_vel[i] : field[i];
@@ -40,11 +40,11 @@ float value(int axis, ivec3 f) {
 
 void main() {
     int id = int(flat_id());
-    if (id >= visc_node_total()) return;
+    if (id >= node_total()) return;
 #if !PF_VISC_START
     g_beta = uintBitsToFloat(state[PF_VISC_BETA]);
 #endif
-    ivec3 n = visc_node_coord(id);
+    ivec3 n = node_coord(id);
     float c = visc_coupling();
     if (cell_inside(n)) {  // n >= 0
         vec4 s = vec4(0.0);

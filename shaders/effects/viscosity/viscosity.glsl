@@ -58,13 +58,6 @@ float visc_edge_weight(int a, int b, ivec3 n) {
     return 0.25 * float(fluid + solid);
 }
 
-// Cell corners (nodes) per axis, and the flat index of node n.
-ivec3 visc_node_dims() { return sim.grid.xyz + 1; }
-int visc_node_index(ivec3 n) { return lattice_index(visc_node_dims(), n); }
-ivec3 visc_node_coord(int id) { return lattice_coord(visc_node_dims(), id); }
-int visc_node_total() { return visc_node_dims().x * visc_node_dims().y * visc_node_dims().z; }
-
-bool visc_face_inside(int axis, ivec3 f) { return face_inside(axis, f); }
 
 // Index of the stress of edge pair (a, b) in a node's vec4: xy 0, xz 1, yz 2.
 int visc_pair(int a, int b) { return a + b - 1; }

@@ -49,20 +49,18 @@ float pair_total(vec3 pair_sum) { return (pair_sum.x + pair_sum.y) + pair_sum.z;
 // The same for a pair's values (solver_value.glsl): a column per axis pair.
 vec2 pair_total(mat3x2 pair_sum) { return (pair_sum[0] + pair_sum[1]) + pair_sum[2]; }
 
-
 // Index of a workgroup in a (possibly 2D) dispatch: one partial sum each.
 uint workgroup_index() { return gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x; }
-
 
 // Mirror orbits: the cell (i, j, k) and its images under the x and z mirrors (the scheme is
 // mirror symmetric across both; gravity breaks y). A reduction that adds each orbit's 4 cells
 // as ((a + b) + (c + d)) — pairs that swap under one mirror, and pair sums that swap under the
 // other — and then the orbit sums in a fixed order gives bit-identical totals for mirrored
 // inputs (orbit_main.glsl): the solvers' convergence decisions and Krylov scalars stay mirror-exact.
-int orbit_count() { return ((u_dims.x + 1) / 2) * u_dims.y * ((u_dims.z + 1) / 2); }
+int orbit_count() { return lattice_total(ivec3((u_dims.x + 1) / 2, u_dims.y, (u_dims.z + 1) / 2)); }
 
 // The orbit's first cell (i, j, k) with i and k in the lower halves of their axes.
-ivec3 orbit_origin(int o) { return unflatten(o, ivec3((u_dims.x + 1) / 2, u_dims.y, u_dims.z)); }
+ivec3 orbit_origin(int o) { return lattice_coord(ivec3((u_dims.x + 1) / 2, u_dims.y, u_dims.z), o); }
 // The coordinates of the orbit's cells: a, its x-mirror, its z-mirror, both.
 ivec3 orbit_coord(ivec3 a, int q) {
     return ivec3((q & 1) != 0 ? u_dims.x - 1 - a.x : a.x, a.y, (q & 2) != 0 ? u_dims.z - 1 - a.z : a.z);

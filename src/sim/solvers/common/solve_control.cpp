@@ -97,7 +97,7 @@ uint32_t SolveControl::add_record(uint64_t invocations) {
 Indirect SolveControl::record(uint32_t k) const { return Indirect{&state_, (PF_SOLVER_SCALARS + 4 * k) * 4}; }
 
 Uniform SolveControl::dims_uniform(glm::ivec3 dims) {
-    return Uniform::ivec4(PF_LOC_SOLVER_DIMS, dims.x, dims.y, dims.z, dims.x * dims.y * dims.z);
+    return Uniform::ivec4(PF_LOC_SOLVER_DIMS, dims.x, dims.y, dims.z, int(GridLayout{dims}.cells()));
 }
 
 void SolveControl::rhs_stats(PassRunner& runner, StatId stat, const PressureProblem& problem,

@@ -39,7 +39,7 @@ public:
     // Mirror orbits of a grid of `size` cells: the cells (i, j, k) with i and k in the lower halves
     // of their axes (shaders/solvers/common/poisson.glsl's orbit_count).
     static uint64_t orbits(glm::ivec3 size) {
-        return uint64_t((size.x + 1) / 2) * uint64_t(size.y) * uint64_t((size.z + 1) / 2);
+        return GridLayout::volume(glm::ivec3((size.x + 1) / 2, size.y, (size.z + 1) / 2));
     }
     // The permutation of reduction kernel `id` (orbit_main.glsl) for this grid's mapping; any
     // other kernel is returned as it is.

@@ -17,8 +17,7 @@ pf_result TiledP2g::prepare(const gl::Api& gl, PassRunner& runner, const P2gGrid
             return log.error(PF_ERROR_SHADER_COMPILE, std::string(fn) + ": " + error);
     }
     if (tile_slot_.bytes() != 0) return PF_OK;
-    const glm::ivec3 tiles = grid.layout.tile_dims(PF_P2G_TILE);
-    const uint64_t tile_count = uint64_t(tiles.x) * uint64_t(tiles.y) * uint64_t(tiles.z);
+    const uint64_t tile_count = grid.layout.tiles(PF_P2G_TILE);
     PrefixSum per_tile;
     per_tile.plan(tile_count);
     const uint64_t np = grid.max_particles;
