@@ -8,7 +8,7 @@
 #define PF_MG_FUSED_CELLS 131072 /* coarse levels up to this size take the fused passes (the fine level never) */
 #define PF_MG_DOWN_TILE 4  /* mg_down.comp: coarse cells per tile edge (a fine block of 8^3 and its halo) */
 #define PF_MG_UP_TILE 8    /* mg_up.comp: cells per tile edge */
-#define PF_MG_TILE_INVOCATIONS 1024 /* the workgroup of mg_down.comp and mg_up.comp, one per tile (512: 2% slower) */
+#define PF_MG_TILE_INVOCATIONS 1024 /* the workgroup of mg_down.comp and mg_up.comp, one per tile: its loops over the staged cells are what a pass waits on (docs/notes/2026-12-06-mg-tile-invocations.md) */
 #define PF_MG_BOTTOM_INVOCATIONS 1024 /* mg_bottom.comp's one workgroup (GL 4.3's least maximum); >= PF_MG_COARSE_CELLS */
 #define PF_MG_BOTTOM_CELLS 4096 /* the level above the coarsest that mg_bottom.comp takes (24 KiB of shared memory) */
 #endif
