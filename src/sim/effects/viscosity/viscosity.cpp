@@ -20,8 +20,7 @@ static_assert(PF_STATUS_SOLVER_FIRST_ROUND == PF_STATUS_SOLVER_RESIDUAL + 1 &&
 
 ViscosityEffect::ViscosityEffect(const pf_sim_desc& desc)
     : density_(desc.density > 0.0f ? desc.density : 1000.0f),
-      cells_(GridLayout::of(desc.grid_size).cells()),
-      nodes_(GridLayout::of(desc.grid_size).nodes()),
+      layout_(GridLayout::of(desc.grid_size)),
       settings_(pf_default_viscosity()) {}
 
 std::vector<gl::ProgramId> ViscosityEffect::programs() const {
@@ -43,16 +42,16 @@ pf_result ViscosityEffect::init(const gl::Api& gl, PassRunner& runner, const Log
     p_ = gl::Buffer(gl, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_direction");
     q_ = gl::Buffer(gl, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_product");
     solid_vel_ = gl::Buffer(gl, size_t(faces * 4), GL_DYNAMIC_COPY, "viscosity_solid_velocities");
-    potential_ = gl::Buffer(gl, size_t(cells_ * 4), GL_DYNAMIC_COPY, "viscosity_potential");
+    potential_ = gl::Buffer(gl, size_t(layout_.cells() * 4), GL_DYNAMIC_COPY, "viscosity_potential");
     report_ = gl::Buffer(gl, PF_STATUS_WORDS * 4, GL_DYNAMIC_COPY, "viscosity_projection_report");
-    sigma_cell_ = gl::Buffer(gl, size_t(cells_ * 16), GL_DYNAMIC_COPY, "viscosity_cell_stress");
-    sigma_node_ = gl::Buffer(gl, size_t(nodes_ * 16), GL_DYNAMIC_COPY, "viscosity_edge_stress");
+    sigma_cell_ = gl::Buffer(gl, size_t(layout_.cells() * 16), GL_DYNAMIC_COPY, "viscosity_cell_stress");
+    sigma_node_ = gl::Buffer(gl, size_t(layout_.nodes() * 16), GL_DYNAMIC_COPY, "viscosity_edge_stress");
     partials_ = gl::Buffer(gl, size_t(groups * 16), GL_DYNAMIC_COPY, "viscosity_partials");
     state_ = gl::Buffer(gl, PF_VISC_WORDS * 4, GL_DYNAMIC_COPY, "viscosity_state");
     const uint32_t zeros[PF_STATUS_WORDS > PF_VISC_WORDS ? PF_STATUS_WORDS : PF_VISC_WORDS] = {};
     state_.upload(0, PF_VISC_WORDS * 4, zeros);
     report_.upload(0, PF_STATUS_WORDS * 4, zeros);
-    const uint64_t bytes = faces * 24 + cells_ * 20 + nodes_ * 16 + groups * 16;
+    const uint64_t bytes = faces * 24 + layout_.cells() * 20 + layout_.nodes() * 16 + groups * 16;
     if (pf_result r = gl::check_allocated(gl, log, std::string(fn) + ": allocating the viscosity solve (" +
                                                        std::to_string(bytes >> 20) + " MiB)");
         r != PF_OK)
@@ -143,12 +142,12 @@ void ViscosityEffect::project(PassRunner& runner, const EffectBuffers& b) {
     if (!b.projector) return;
     // From zero, not from the last substep's potential: the continuation of a snapshot (which
     // does not hold it) stays bit-identical.
-    runner.fill(potential_, uint32_t(cells_), 0u, projection_stat_);
+    runner.fill(potential_, uint32_t(layout_.cells()), 0u, projection_stat_);
     b.projector->project(runner, potential_, report_, projection_stat_, projection_recent_, projection_residual_);
 }
 
 void ViscosityEffect::solve(PassRunner& runner, const EffectBuffers& b) {
-    const Workgroups face_groups = runner.workgroups(b.layout.faces()), node_groups = runner.workgroups(nodes_);
+    const Workgroups face_groups = runner.workgroups(b.layout.faces()), node_groups = runner.workgroups(layout_.nodes());
     const Bind cell_type{PF_SLOT_CELL_TYPE, &b.cell_type}, coef{PF_SLOT_VISC_COEF, &coef_},
         state{PF_SLOT_VISC_STATE, &state_}, sigma_cell{PF_SLOT_VISC_SIGMA_CELL, &sigma_cell_},
         sigma_node{PF_SLOT_VISC_SIGMA_NODE, &sigma_node_}, r{PF_SLOT_VISC_R, &r_}, p{PF_SLOT_VISC_P, &p_},
@@ -163,7 +162,7 @@ void ViscosityEffect::solve(PassRunner& runner, const EffectBuffers& b) {
                                 int32_t(node_groups.x), int32_t(node_groups.y)),
                  Uniform::uint1(PF_LOC_VISC_FIRST, first_substep_ ? 1u : 0u)}});
     // The first residual, from the projected velocities (the fixed faces at their solid's velocity).
-    runner.run({gl::ProgramId::visc_stress_start, stat_, nodes_,
+    runner.run({gl::ProgramId::visc_stress_start, stat_, layout_.nodes(),
                 {cell_type, {PF_SLOT_VISC_P, &b.face_vel}, {PF_SLOT_VISC_SOLID_VEL, &solid_vel_}, sigma_cell, sigma_node},
                 {},
                 {nu, slip}});

@@ -66,11 +66,11 @@ private:
     pf_result make_round_buffers(uint32_t rounds, const Log& log, const char* fn);
     // Faces its per-face buffers hold: at most 3 per cell plus one layer per axis, bounded by the
     // nodes' count times 3.
-    uint64_t face_bound() const { return 3 * nodes_; }
+    uint64_t face_bound() const { return 3 * layout_.nodes(); }
     void project(PassRunner& runner, const EffectBuffers& b);
 
     float density_ = 1000.0f;  // kg/m^3
-    uint64_t cells_ = 0, nodes_ = 0;
+    GridLayout layout_{};  // the grid (its cells and corner nodes)
     const gl::Api* gl_ = nullptr;  // set by init
     bool first_substep_ = true;
     uint32_t recent_ = kUnknownIterations;    // most iterations of a substep's solve in the newest readback

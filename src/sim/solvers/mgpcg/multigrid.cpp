@@ -16,9 +16,9 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
     for (;;) {
         Level level;
         level.dims = dims;
-        level.cells = uint32_t(GridLayout{dims}.cells());
+        const GridLayout layout{dims}, next = layout.coarsened();
+        level.cells = uint32_t(layout.cells());
         const bool fine = levels_.empty();
-        const glm::ivec3 next = GridLayout{dims}.coarsened().dims;
         // Axes of two or three cells coarsen to one and two like any other (the prolongation clamps
         // onto the level); only an axis of one cell stays as it is.
         const bool last = level.cells <= PF_MG_COARSE_CELLS || levels_.size() + 1 == PF_MG_MAX_LEVELS;
@@ -38,19 +38,18 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         // wherever it holds most of the work (a large grid; a CPU rasteriser, which has no launch
         // cost to save).
         level.fused = !fine && level.cells <= PF_MG_FUSED_CELLS;
-        const uint64_t next_cells = GridLayout{next}.cells();
         // The bottom of the V-cycle in one workgroup (mg_bottom.comp): the level above the coarsest.
-        level.bottom = !fine && !last && level.cells <= PF_MG_BOTTOM_CELLS && next_cells <= PF_MG_COARSE_CELLS;
+        level.bottom = !fine && !last && level.cells <= PF_MG_BOTTOM_CELLS && next.cells() <= PF_MG_COARSE_CELLS;
         const bool finer_unfused = !fine && !levels_.back().fused;
         if (fine) level.record = control.record(0);
         else if (!level.fused || finer_unfused) level.record = control.record(control.add_record(level.cells));
         if (!last && level.fused && (!level.bottom || control.pairs())) {
-            level.down = control.record(control.add_record(tiles(next, PF_MG_DOWN_TILE) * PF_WORKGROUP_SIZE));
-            if (!fine) level.up = control.record(control.add_record(tiles(dims, PF_MG_UP_TILE) * PF_WORKGROUP_SIZE));
+            level.down = control.record(control.add_record(next.tiles(PF_MG_DOWN_TILE) * PF_WORKGROUP_SIZE));
+            if (!fine) level.up = control.record(control.add_record(layout.tiles(PF_MG_UP_TILE) * PF_WORKGROUP_SIZE));
         }
         levels_.push_back(std::move(level));
         if (last) break;
-        dims = next;
+        dims = next.dims;
     }
     if (levels_.back().cells > PF_MG_COARSE_CELLS)
         return "multigrid: the coarsest level has " + std::to_string(levels_.back().cells) + " cells (more than " +
@@ -92,8 +91,6 @@ void Multigrid::half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::
                 {SolveControl::dims_uniform(levels_[l].dims), Uniform::uint1(PF_LOC_SOLVER_COLOR, color),
                  Uniform::float1(PF_LOC_SOLVER_OMEGA, 1.0f)}});
 }
-
-uint64_t Multigrid::tiles(glm::ivec3 dims, int edge) { return GridLayout{dims}.tiles(edge); }
 
 Uniform Multigrid::coarse_dims(const Level& coarse) {
     return Uniform::ivec4(PF_LOC_SOLVER_COARSE_DIMS, coarse.dims.x, coarse.dims.y, coarse.dims.z, int(coarse.cells));

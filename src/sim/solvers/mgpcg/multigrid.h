@@ -70,8 +70,6 @@ private:
     // One colour of a Gauss-Seidel sweep on an unfused level l's buffer x.
     void half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::Buffer& x, uint32_t color);
     static Uniform coarse_dims(const Level& coarse);
-    // Tiles of edge `edge` covering a level of `dims` cells.
-    static uint64_t tiles(glm::ivec3 dims, int edge);
 
     const SolveControl* control_ = nullptr;
     std::vector<Level> levels_;
