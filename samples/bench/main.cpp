@@ -204,6 +204,13 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     t0 = pfs::now_ms();
     pfs::fill_scene(sim.get(), r.scene);
     effects = pfs::add_scene_effects(sim.get(), r.scene);
+    // Driven obstacles move as in pf_headless (floating ones stay where the scene puts them).
+    pfs::DrivenObstacles driven;
+    pfs::drive_scene_obstacles(r.scene, effects, driven);
+    auto step = [&](const char* what) {
+        pfs::check(driven.step(sim.get(), r.frame_dt), "driven obstacles");
+        pfs::check(pf_step(sim.get(), r.frame_dt), what);
+    };
     glFinish();
     r.fill_ms = pfs::now_ms() - t0;
 
@@ -215,7 +222,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
                 r.create_ms, r.fill_ms, opt.warmup);
     std::fflush(stdout);
 
-    for (uint32_t i = 0; i < opt.warmup; ++i) pfs::check(pf_step(sim.get(), r.frame_dt), "pf_step (warm-up)");
+    for (uint32_t i = 0; i < opt.warmup; ++i) step("pf_step (warm-up)");
     glFinish();
     pfs::check(pf_clear_flags(sim.get()), "pf_clear_flags");
     pfs::check(pf_get_stats(sim.get(), &st), "pf_get_stats");
@@ -261,7 +268,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     for (uint32_t i = 0; i < opt.steps; ++i) {
         glFinish();
         const double s0 = pfs::now_ms();
-        pfs::check(pf_step(sim.get(), r.frame_dt), "pf_step");
+        step("pf_step");
         glFinish();
         const double s1 = pfs::now_ms();
         pfs::check(pf_get_stats(sim.get(), &st), "pf_get_stats");
@@ -289,7 +296,7 @@ void bench_scene(const Options& opt, const std::string& arg, Result& r) {
     // GPU timings lag a few steps: keep stepping (unmeasured) until the last measured step's
     // timings are reported, or give up after a few.
     for (int i = 0; i < 8 && st.gpu_step < last; ++i) {
-        pfs::check(pf_step(sim.get(), r.frame_dt), "pf_step (drain)");
+        step("pf_step (drain)");
         glFinish();
         pfs::check(pf_get_stats(sim.get(), &st), "pf_get_stats");
         collect();

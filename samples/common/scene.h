@@ -28,7 +28,9 @@
 //   "obstacles": [ { "shape": "sphere", "position": [..], "rotation": [x,y,z,w],
 //                    "half_extents": [..], "radius": 0.1, "half_height": 0,
 //                    "float_density": 500 } ],   pf_obstacle; with float_density (kg/m^3) the
-//                                               samples float it as a rigid body (floating.h)
+//                                               samples float it as a rigid body (floating.h);
+//                  with "oscillation": {"amplitude": [x,y,z], "period": 2} they move it along
+//                  p0 + amplitude sin(2 pi t / period) (driven.h; not with float_density)
 //                  shape "box", "sphere", "capsule" or "sdf"; an "sdf" obstacle also takes
 //                  "file": "bowl.npy" (required; relative to the scene file's folder: a NumPy
 //                  .npy grid, sdf_file.h gives the format), "half_extents" (required: the box the
@@ -56,6 +58,7 @@
 
 #include <pf/pf.h>
 
+#include "driven.h"
 #include "sdf_file.h"
 #include "sdf_texture.h"
 
@@ -100,6 +103,7 @@ struct Scene {
     std::vector<pf_force_field> force_fields;
     std::vector<pf_obstacle> obstacles;
     std::vector<float> obstacle_float_density;  // per obstacle; 0: moved only by the app
+    std::vector<Oscillation> obstacle_oscillation;  // per obstacle; period 0: not driven
     // Per obstacle: the grid of an "sdf" one (its pf_obstacle's sdf_texture stays 0 until
     // add_scene_effects uploads the grid), null for the other shapes.
     std::vector<std::shared_ptr<const SdfGrid>> obstacle_sdf;
@@ -150,6 +154,9 @@ struct SceneEffectIds {
     std::vector<uint32_t> obstacle_textures;  // per obstacle: its sdf_texture as added (0: not an SDF)
     SdfTextures sdf_textures;                 // owns the textures named in obstacle_textures
 };
+
+/// The scene's driven obstacles (oscillation), registered with their ids.
+void drive_scene_obstacles(const Scene& scene, const SceneEffectIds& ids, DrivenObstacles& out);
 
 /// The scene's floating obstacles (float_density), registered with their ids.
 class FloatingBodies;

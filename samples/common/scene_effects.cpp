@@ -100,9 +100,26 @@ pf_force_field read_field(const ObjectReader& r) {
     return f;
 }
 
+// An obstacle's "oscillation": {"amplitude": [x, y, z] (m), "period": s}, which the samples move
+// it along (driven.h); none: not driven.
+Oscillation read_oscillation(const Parser& p, const json& obstacle, const std::string& obstacle_path) {
+    Oscillation m;
+    auto it = obstacle.find("oscillation");
+    if (it == obstacle.end()) return m;
+    const std::string path = Parser::join(obstacle_path, "oscillation");
+    const ObjectReader r{p, p.object(*it, path), path};
+    p.check_keys(r.obj, path, {"amplitude", "period"});
+    p.required(r.obj, path, "amplitude");
+    m.period = p.real(p.required(r.obj, path, "period"), r.at("period"), 1e-3, 1e6);
+    r.vec3("amplitude", m.amplitude);
+    for (float a : m.amplitude)
+        if (std::fabs(a) > 1e6f) p.fail(r.at("amplitude"), "must be within 1e6 m on every axis");
+    return m;
+}
+
 pf_obstacle read_obstacle(const ObjectReader& r) {
     r.p.check_keys(r.obj, r.path, {"shape", "position", "rotation", "half_extents", "radius", "half_height",
-                                   "float_density", "file", "sdf_scale"});
+                                   "float_density", "oscillation", "file", "sdf_scale"});
     pf_obstacle o = pf_default_obstacle();
     if (const json* j = r.find("shape")) o.shape = enum_value(r.p, *j, r.at("shape"), kObstacleShapes);
     r.vec3("position", o.position);
@@ -260,9 +277,13 @@ void parse_scene_effects(const json& root, const std::string& path, Scene& s) {
     read_list(p, root, "obstacles", PF_FEATURE_OBSTACLES, s, s.obstacles, read_obstacle);
     for (size_t i = 0; i < s.obstacles.size(); ++i) {
         const json& o = root.at("obstacles")[i];
+        const std::string path = Parser::join("/obstacles", i);
         auto it = o.find("float_density");
-        const std::string at = Parser::join(Parser::join("/obstacles", i), "float_density");
-        s.obstacle_float_density.push_back(it == o.end() ? 0.0f : p.real(*it, at, 0.0, 1e6, true));
+        s.obstacle_float_density.push_back(
+            it == o.end() ? 0.0f : p.real(*it, Parser::join(path, "float_density"), 0.0, 1e6, true));
+        s.obstacle_oscillation.push_back(read_oscillation(p, o, path));
+        if (s.obstacle_float_density.back() > 0.0f && s.obstacle_oscillation.back().period > 0.0f)
+            p.fail(Parser::join(path, "oscillation"), "cannot move an obstacle that floats (float_density)");
     }
     load_obstacle_sdfs(p, root, s);
     read_list(p, root, "emitters", PF_FEATURE_EMITTERS, s, s.emitters, read_emitter);
@@ -324,6 +345,15 @@ uint32_t parse_feature_list(const std::string& list, const char* what) {
         }
     }
     return bits;
+}
+
+void drive_scene_obstacles(const Scene& s, const SceneEffectIds& ids, DrivenObstacles& out) {
+    for (size_t i = 0; i < s.obstacles.size() && i < ids.obstacles.size(); ++i) {
+        if (i >= s.obstacle_oscillation.size() || s.obstacle_oscillation[i].period <= 0.0f) continue;
+        pf_obstacle added = s.obstacles[i];  // as added: with its SDF texture, if any
+        if (i < ids.obstacle_textures.size()) added.sdf_texture = ids.obstacle_textures[i];
+        out.add(ids.obstacles[i], added, s.obstacle_oscillation[i]);
+    }
 }
 
 void float_scene_obstacles(const Scene& s, const SceneEffectIds& ids, FloatingBodies& out) {

@@ -387,9 +387,11 @@ int run(int argc, char** argv) {
     t0 = pfs::now_ms();
     pfs::fill_scene(sim.get(), scene);
     pfs::FloatingBodies floating;
+    pfs::DrivenObstacles driven;
     effects = pfs::add_scene_effects(sim.get(), scene);
     pfs::float_scene_obstacles(scene, effects, floating);
-    // The obstacles as the library holds them (SDF ones with their textures); floating ones move.
+    pfs::drive_scene_obstacles(scene, effects, driven);
+    // The obstacles as the library holds them (SDF ones with their textures); floating and driven ones move.
     const std::vector<pf_obstacle> placed_obstacles = pfs::obstacles_as_added(scene, effects);
     glFinish();
     const double fill_ms = pfs::now_ms() - t0;
@@ -486,7 +488,8 @@ int run(int argc, char** argv) {
     };
 
     auto write_image = [&]() {
-        if (opt.draw_obstacles) world->set_obstacles(floating.poses(placed_obstacles, effects.obstacles));
+        if (opt.draw_obstacles)
+            world->set_obstacles(driven.poses(floating.poses(placed_obstacles, effects.obstacles), effects.obstacles));
         glFinish();
         const double r0 = pfs::now_ms();
         pfs::check(pfs::draw_frame(*world, sim.get(), camera, look), look.ssf ? "pf_render_ssf" : "pf_render_particles");
@@ -535,6 +538,7 @@ int run(int argc, char** argv) {
         glFinish();
         const double s0 = pfs::now_ms();
         pfs::check(floating.step(sim.get(), scene.frame_dt, scene.params.gravity), "floating obstacles");
+        pfs::check(driven.step(sim.get(), scene.frame_dt), "driven obstacles");
         pfs::check(pf_step(sim.get(), scene.frame_dt), "pf_step");
         glFinish();
         const double s1 = pfs::now_ms();

@@ -392,6 +392,7 @@ private:
     pfs::Scene scene_;
     pfs::SceneEffectIds effect_ids_;    // the library's ids of scene_'s objects
     pfs::FloatingBodies floating_;      // scene_'s floating obstacles
+    pfs::DrivenObstacles driven_;       // scene_'s driven obstacles (the drag does not hold them)
     std::string effects_error_;         // why the last effects edit was refused
     std::string scene_path_;
     std::vector<std::string> scene_files_;
@@ -453,6 +454,8 @@ void Viewer::load_scene(const std::string& path) {
     effects_error_.clear();
     floating_ = pfs::FloatingBodies{};
     pfs::float_scene_obstacles(scene_, effect_ids_, floating_);
+    driven_ = pfs::DrivenObstacles{};
+    pfs::drive_scene_obstacles(scene_, effect_ids_, driven_);
     // From here scene_.obstacles are the viewer's poses as the library holds them (SDF ones
     // with their textures, which pf_set_obstacle needs again).
     scene_.obstacles = pfs::obstacles_as_added(scene_, effect_ids_);
@@ -587,7 +590,7 @@ void Viewer::check_scripted_grab() const {
 pf_obstacle Viewer::obstacle_pose(size_t i) const { return obstacle_poses()[i]; }
 
 std::vector<pf_obstacle> Viewer::obstacle_poses() const {
-    return floating_.poses(scene_.obstacles, effect_ids_.obstacles);
+    return driven_.poses(floating_.poses(scene_.obstacles, effect_ids_.obstacles), effect_ids_.obstacles);
 }
 
 // One place moves an obstacle: the library's, then (if it took it) the viewer's copy (what the
@@ -801,6 +804,8 @@ bool Viewer::frame(uint64_t frame_index) {
         for (int i = 0; i < steps_per_frame_; ++i) {
             if (pf_result f = floating_.step(sim_.get(), scene_.frame_dt, params_.gravity); f != PF_OK)
                 last_error_ = log_.explain("floating obstacles", f);
+            if (pf_result f = driven_.step(sim_.get(), scene_.frame_dt); f != PF_OK)
+                last_error_ = log_.explain("driven obstacles", f);
             const pf_result r = pf_step(sim_.get(), scene_.frame_dt);
             if (r != PF_OK) {
                 last_error_ = std::string("pf_step: ") + pf_result_string(r);
