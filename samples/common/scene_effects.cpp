@@ -347,21 +347,24 @@ uint32_t parse_feature_list(const std::string& list, const char* what) {
     return bits;
 }
 
+// Obstacle i of the scene as added to the library: with its SDF texture, if any.
+static pf_obstacle added_obstacle(const Scene& s, const SceneEffectIds& ids, size_t i) {
+    pf_obstacle added = s.obstacles[i];
+    if (i < ids.obstacle_textures.size()) added.sdf_texture = ids.obstacle_textures[i];
+    return added;
+}
+
 void drive_scene_obstacles(const Scene& s, const SceneEffectIds& ids, DrivenObstacles& out) {
     for (size_t i = 0; i < s.obstacles.size() && i < ids.obstacles.size(); ++i) {
         if (i >= s.obstacle_oscillation.size() || s.obstacle_oscillation[i].period <= 0.0f) continue;
-        pf_obstacle added = s.obstacles[i];  // as added: with its SDF texture, if any
-        if (i < ids.obstacle_textures.size()) added.sdf_texture = ids.obstacle_textures[i];
-        out.add(ids.obstacles[i], added, s.obstacle_oscillation[i]);
+        out.add(ids.obstacles[i], added_obstacle(s, ids, i), s.obstacle_oscillation[i]);
     }
 }
 
 void float_scene_obstacles(const Scene& s, const SceneEffectIds& ids, FloatingBodies& out) {
     for (size_t i = 0; i < s.obstacles.size() && i < ids.obstacles.size(); ++i) {
         if (s.obstacle_float_density[i] <= 0.0f) continue;
-        pf_obstacle added = s.obstacles[i];  // as added: with its SDF texture, if any
-        if (i < ids.obstacle_textures.size()) added.sdf_texture = ids.obstacle_textures[i];
-        out.add(ids.obstacles[i], added, s.obstacle_float_density[i]);
+        out.add(ids.obstacles[i], added_obstacle(s, ids, i), s.obstacle_float_density[i]);
     }
 }
 

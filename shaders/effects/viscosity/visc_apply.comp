@@ -21,7 +21,6 @@ layout(std430, binding = PF_SLOT_VISC_PARTIALS) coherent buffer Partials { vec4 
 #include "effects/viscosity/viscosity_state.h"
 #include "effects/viscosity/visc_reduce.glsl"
 
-
 // (D^T sigma) on face (axis, f), a face with cells on both sides.
 float stress_divergence(int axis, ivec3 f) {
     ivec3 ea = ivec3(0);

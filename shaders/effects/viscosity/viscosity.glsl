@@ -58,6 +58,5 @@ float visc_edge_weight(int a, int b, ivec3 n) {
     return 0.25 * float(fluid + solid);
 }
 
-
 // Index of the stress of edge pair (a, b) in a node's vec4: xy 0, xz 1, yz 2.
 int visc_pair(int a, int b) { return a + b - 1; }
