@@ -148,9 +148,12 @@ TEST_F(SurfaceTension, SmallDropStaysRoundAndStill) {
 // cell, zero gravity, sigma 35 N/m: omega^2 = (sigma k^3 / rho) tanh(k h), a period of 0.403 s
 // (23 substeps a frame at half Brackbill's limit). Its energy is the particles' kinetic energy
 // plus the mode's surface energy; the reference is taken a quarter period in, once the lattice's
-// half-cell steps (area the mode's amplitude does not count) have rounded off. Measured on
-// llvmpipe over 3 periods (2026-12-05): period 2.85% short, 8.1% of the amplitude lost a period,
-// energy at most 0.074 of the wave's above its reference.
+// half-cell steps (area the mode's amplitude does not count) have rounded off. One jittered lattice
+// decides little (docs/effects.md, "Surface tension"): single lattices of one library ranged from
+// 17.7% short to 2.3% long and from 0 to 0.89 of the wave's energy gained (llvmpipe, 2026-12-06,
+// docs/notes/2026-12-06-lone-particle-flip.md). So the wave is the mean over eight lattices: their
+// mean amplitude is fitted and their mean energy checked. Bounds: period within 8%, under a quarter
+// of the amplitude lost a period, energy at most 0.1 of the wave's above its reference.
 TEST_F(SurfaceTension, CapillaryWaveHasTheTheoreticalFrequency) {
     pfs::StandingWave wave;
     wave.length = 0.16;
@@ -164,41 +167,43 @@ TEST_F(SurfaceTension, CapillaryWaveHasTheTheoreticalFrequency) {
     d.params.gravity[1] = 0.0f;
     d.params.max_substeps = 64;
     d.features = PF_FEATURE_SURFACE_TENSION;
-    SimPtr sim = create(d);
-    ASSERT_TRUE(sim);
-    ASSERT_EQ(set(sim.get(), float(wave.tension)), PF_OK);
-    const std::vector<float> pos = wave.lattice(17);
-    const std::vector<float> vel(pos.size(), 0.0f);
-    ASSERT_EQ(pf_add_particles(sim.get(), pos.data(), vel.data(), uint32_t(pos.size() / 3)), PF_OK);
     const auto energy = [&](const ParticleState& p) {
         return pfs::mechanical_energy_per_mass(wave, p.pos.data(), p.vel.data(), p.count()) +
                wave.surface_energy_per_mass(pfs::mode_amplitude(wave, p.pos.data(), p.count()));
     };
-    const ParticleState p0 = read_all(sim.get());
     const double e_wave = wave.wave_energy_per_mass();
-    std::vector<double> t{0.0}, a{pfs::mode_amplitude(wave, p0.pos.data(), p0.count())};
     const int frames = int(std::ceil(3.0 * wave.period() * 60.0)), reference_frame = int(std::ceil(wave.period() * 15.0));
-    double e_ref = 0, gain = 0;
-    for (int f = 1; f <= frames; ++f) {
-        ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
-        const ParticleState p = read_all(sim.get());
-        t.push_back(f / 60.0);
-        a.push_back(pfs::mode_amplitude(wave, p.pos.data(), p.count()));
-        const double e = energy(p);
-        if (f == reference_frame) e_ref = e;
-        if (f > reference_frame) gain = std::max(gain, (e - e_ref) / e_wave);
+    constexpr int kLattices = 8;
+    std::vector<double> t(size_t(frames) + 1), a(size_t(frames) + 1, 0.0), e(size_t(frames) + 1, 0.0);
+    for (int f = 0; f <= frames; ++f) t[size_t(f)] = f / 60.0;
+    for (uint32_t lattice = 1; lattice <= kLattices; ++lattice) {
+        SimPtr sim = create(d);
+        ASSERT_TRUE(sim);
+        ASSERT_EQ(set(sim.get(), float(wave.tension)), PF_OK);
+        const std::vector<float> pos = wave.lattice(lattice);
+        const std::vector<float> vel(pos.size(), 0.0f);
+        ASSERT_EQ(pf_add_particles(sim.get(), pos.data(), vel.data(), uint32_t(pos.size() / 3)), PF_OK);
+        for (int f = 0; f <= frames; ++f) {
+            if (f > 0) ASSERT_EQ(pf_step(sim.get(), 1.0f / 60.0f), PF_OK);
+            const ParticleState p = read_all(sim.get());
+            a[size_t(f)] += pfs::mode_amplitude(wave, p.pos.data(), p.count()) / kLattices;
+            e[size_t(f)] += energy(p) / kLattices;
+        }
+        const pf_stats st = settled_stats(sim.get());
+        EXPECT_FALSE(st.flags & PF_FLAG_SUBSTEPS_CLAMPED) << "lattice " << lattice;
     }
+    double gain = 0;
+    for (int f = reference_frame + 1; f <= frames; ++f)
+        gain = std::max(gain, (e[size_t(f)] - e[size_t(reference_frame)]) / e_wave);
     const pfs::WaveFit fit = pfs::fit_wave(t, a);
-    const pf_stats st = settled_stats(sim.get());
-    std::printf("capillary wave: a0 %.4f m, period %.4f s (theory %.4f, %+.2f%%), loss/period %.1f%% (%u extrema), "
-                "energy gain max %.3f of the wave's, substeps %u, flags 0x%x\n",
-                a[0], fit.period, wave.period(), 100.0 * (fit.period / wave.period() - 1.0), 100.0 * fit.loss_per_period,
-                fit.extrema, gain, st.substeps, st.flags);
+    std::printf("capillary wave, mean of %d lattices: a0 %.4f m, period %.4f s (theory %.4f, %+.2f%%), loss/period %.1f%% "
+                "(%u extrema), energy gain max %.3f of the wave's\n",
+                kLattices, a[0], fit.period, wave.period(), 100.0 * (fit.period / wave.period() - 1.0),
+                100.0 * fit.loss_per_period, fit.extrema, gain);
     EXPECT_GE(fit.extrema, 5u);
     EXPECT_NEAR(fit.period / wave.period(), 1.0, 0.08);
     EXPECT_LT(fit.loss_per_period, 0.25);
     EXPECT_LT(gain, 0.1);
-    EXPECT_FALSE(st.flags & PF_FLAG_SUBSTEPS_CLAMPED);
 }
 
 // The substeps follow the capillary limit: a tension whose half limit is shorter than the CFL
