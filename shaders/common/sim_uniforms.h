@@ -24,3 +24,7 @@ PF_UNIFORM(float, volume_correction)  /* pressure setup: fraction of a cell's ex
 PF_UNIFORM(uint, ghost_fluid)        /* 1: the free surface sits where the particles put it (PF_FREE_SURFACE_GHOST_FLUID) */
 PF_UNIFORM(float, drift_dt)           /* length of this pass's particle move, s: dt, or dt/2 for a leapfrog half move */
 PF_UNIFORM(float, correction_reach)   /* the volume correction's largest move, cells an axis */
+PF_UNIFORM(uint, p2g_float_sums)      /* 1: the P2G sums are floats, else fixed point (FLIP's G2P reads the weights) */
+PF_UNIFORM(uint, pad_1)               /* pads the block to a multiple of 16 bytes */
+PF_UNIFORM(uint, pad_2)
+PF_UNIFORM(uint, pad_3)

@@ -36,6 +36,8 @@
 #define PF_SLOT_RHS 3
 #define PF_SLOT_FACE_VALID 0
 #define PF_SLOT_FACE_VALID_OUT 1
+/* FLIP's G2P: the P2G sums (their weights tell how alone a particle is) */
+#define PF_SLOT_G2P_FACE_ACCUM 5
 /* storage blocks of the pressure-solver kernels (shaders/solvers/): they share slots 0..7 among
  * themselves; PF_SLOT_CELL_TYPE (6) and PF_SLOT_RHS (3) keep their meaning */
 #define PF_SLOT_SOLVER_STATE 7   /* scalars + indirect records (solvers/common/solver_state.h) */

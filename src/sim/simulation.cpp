@@ -349,6 +349,7 @@ void Simulation::upload_uniforms(float dt) {
     u.rest_particles = float(desc_.fill_particles_per_cell);
     u.volume_correction = desc_.params.volume_correction;
     u.correction_reach = VolumeCorrection::reach_cells(desc_.params, dt);
+    u.p2g_float_sums = p2g_.float_sums(desc_.params) ? 1u : 0u;
     uniforms_.upload(0, sizeof(SimUniforms), &u);
     if (gpu_count_) copy_count_to_uniforms();  // the kernels compare with the GPU's live count
 }
@@ -552,7 +553,10 @@ void Simulation::run_g2p() {
                                                                 : Bind{PF_SLOT_FACE_VEL_OLD, &face_vel_old_};
     Bindings binds{pos, vel, face_vel, last, status};
     if (ordered) binds.add({PF_SLOT_PARTICLE_ORDER, g2p_order_});
-    if (desc_.features & PF_FEATURE_OBSTACLES) {
+    // FLIP limits a lone particle's delta on extrapolated faces: the P2G weights, the faces' cells.
+    const bool flip = desc_.params.transfer != PF_TRANSFER_APIC && desc_.params.flip_ratio > 0.0f;
+    if (flip) binds.add({PF_SLOT_G2P_FACE_ACCUM, &face_accum_});
+    if (flip || (desc_.features & PF_FEATURE_OBSTACLES)) {
         // APIC's affine vectors hold PF_SLOT_CELL_TYPE there.
         const GLuint slot = desc_.params.transfer == PF_TRANSFER_APIC ? PF_SLOT_APIC_CELL_TYPE : PF_SLOT_CELL_TYPE;
         binds.add({slot, &cell_type_});

@@ -286,7 +286,7 @@ TEST_P(GpuVsReference, EveryPassOfOneSubstep) {
     if (apic)
         ref::g2p_apic(g, expect, vel, d.max_speed);
     else
-        ref::g2p(g, expect, vel, vel_old, d.params.flip_ratio, d.max_speed);
+        ref::g2p(g, expect, vel, vel_old, d.params.flip_ratio, d.max_speed, gpu_p2g.weight, type);
     ref::Particles moved = expect;
     if (pipeline.advection == PF_ADVECTION_EULER)
         ref::advect(g, moved, dt);

@@ -548,12 +548,57 @@ glm::dvec3 interpolate(const Grid& grid, const std::vector<double>& field, glm::
 }
 
 void g2p(const Grid& grid, Particles& particles, const std::vector<double>& vel,
-         const std::vector<double>& vel_old, double flip_ratio, double max_speed) {
-    std::vector<double> delta(vel.size());
-    for (size_t f = 0; f < vel.size(); ++f) delta[f] = vel[f] - vel_old[f];
+         const std::vector<double>& vel_old, double flip_ratio, double max_speed,
+         const std::vector<double>& weight, const std::vector<uint8_t>& type) {
+    // Faces the velocity update leaves to the extrapolation (cpu_reference.h: velocity_update).
+    std::vector<uint8_t> extrapolated(vel.size(), 0);
+    if (!weight.empty()) {
+        for (int c = 0; c < 3; ++c)
+            for_each_face(grid, c, [&](int i, int j, int k, int id) {
+                const glm::ivec3 f(i, j, k);
+                if (f[c] == 0 || f[c] == grid.cell_dims()[c]) return;
+                glm::ivec3 lo = f;
+                lo[c] -= 1;
+                const uint8_t a = type[size_t(grid.cell_index(lo.x, lo.y, lo.z))];
+                extrapolated[size_t(id)] = a != FLUID && a == type[size_t(grid.cell_index(i, j, k))];
+            });
+    }
     for (size_t p = 0; p < particles.pos.size(); ++p) {
         const glm::dvec3 pic = interpolate(grid, vel, particles.pos[p]);
-        const glm::dvec3 flip = particles.vel[p] + interpolate(grid, delta, particles.pos[p]);
+        const glm::dvec3 own = particles.vel[p];
+        const glm::dvec3 g = grid.to_grid(particles.pos[p]);
+        const glm::ivec3 cell = glm::clamp(glm::ivec3(glm::floor(g)), glm::ivec3(0), grid.cell_dims() - 1);
+        double alone = 0.0;
+        if (!weight.empty()) {
+            double others = 0.0;
+            for (int c = 0; c < 3; ++c) {
+                const Stencil st = stencil(grid, c, g);
+                for (int k = 0; k < 2; ++k) {
+                    glm::ivec3 f = cell;
+                    f[c] += k;
+                    const int id = grid.face_index(c, f.x, f.y, f.z);
+                    double own = 0.0;
+                    for (int m = 0; m < 8; ++m)
+                        if (st.index[m] == id) own = st.weight[m];
+                    others += weight[size_t(id)] - own;
+                }
+                if (others >= kCompany) break;  // as the GPU stops: 0 from here on
+            }
+            alone = std::clamp(1.0 - others / kCompany, 0.0, 1.0);
+        }
+        glm::dvec3 flip = own;
+        for (int c = 0; c < 3; ++c) {
+            const Stencil st = stencil(grid, c, g);
+            for (int m = 0; m < 8; ++m) {
+                const int f = st.index[m];
+                double change = vel[f] - vel_old[f];
+                if (alone > 0.0 && extrapolated[size_t(f)]) {
+                    const double to_grid = vel[f] - own[c];
+                    change += alone * (std::clamp(change, std::min(to_grid, 0.0), std::max(to_grid, 0.0)) - change);
+                }
+                flip[c] += st.weight[m] * change;
+            }
+        }
         glm::dvec3 v = (1.0 - flip_ratio) * pic + flip_ratio * flip;
         if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) v = glm::dvec3(0.0);
         const double speed = glm::length(v);

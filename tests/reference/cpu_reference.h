@@ -181,9 +181,14 @@ void extrapolate(const Grid& grid, VelocityUpdate& v, int layers);
 // §3: clamped trilinear interpolation of the three components of a face field.
 glm::dvec3 interpolate(const Grid& grid, const std::vector<double>& field, glm::dvec3 world_pos);
 
-// §4.9: v = (1-r)·I(u) + r·(v_p + I(u - u_old)); non-finite → 0; |v| > max_speed → scaled.
+// §4.9: v = (1-r)·I(u) + r·(v_p + I(u - u_old)); on a non-wall face between two AIR or two SOLID
+// cells of `type`, the FLIP value v_p + u - u_old moves towards its clamp between v_p and u by the
+// particle's solitude, 1 - (the P2G `weight` on its cell's six faces less its own)/kCompany, at
+// least 0 (neither when `weight` is empty); non-finite → 0; |v| > max_speed → scaled.
+constexpr double kCompany = 1.0;  // sim/g2p.comp
 void g2p(const Grid& grid, Particles& particles, const std::vector<double>& vel,
-         const std::vector<double>& vel_old, double flip_ratio, double max_speed);
+         const std::vector<double>& vel_old, double flip_ratio, double max_speed,
+         const std::vector<double>& weight = {}, const std::vector<uint8_t>& type = {});
 
 // §3 with APIC: the gradient (1/s) of component c's interpolant at world_pos, Σ u_i ∇w_i; 0
 // along an axis where the stencil clamp holds (g - off_c outside [0, N_c - 1]).
