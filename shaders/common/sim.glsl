@@ -69,6 +69,10 @@ int accum_word(int face, int k) { return 2 * face + k; }
 // Domain walls are the boundary faces of each lattice (free-slip: normal velocity 0).
 bool face_is_wall(int axis, ivec3 f) { return f[axis] == 0 || f[axis] == sim.grid[axis]; }
 
+// An interior face between cells of kinds a and b that sim/velocity_update.comp leaves without a
+// velocity (two AIR or two SOLID cells): the extrapolation fills it.
+bool face_left_to_extrapolation(uint a, uint b) { return a == b && a != PF_CELL_FLUID; }
+
 vec3 grid_coord(vec3 world) { return (world - sim.origin.xyz) / sim.dx; }
 
 // World positions of cell c's lowest corner, of its centre, and of the centre of face f of

@@ -58,11 +58,10 @@ float solitude(vec3 g) {
     return min(1.0 - others / kCompany, 1.0);
 }
 
-// A face sim/velocity_update.comp gave no velocity (two AIR or two SOLID cells; domain walls have one).
+// A face sim/velocity_update.comp gave no velocity (domain walls have one).
 bool extrapolated_face(int axis, ivec3 f) {
-    if (face_is_wall(axis, f)) return false;
-    uint a = PF_CELL_KIND(cell_type[cell_index(face_cell_below(axis, f))]);
-    return a != PF_CELL_FLUID && a == PF_CELL_KIND(cell_type[cell_index(f)]);
+    return !face_is_wall(axis, f) && face_left_to_extrapolation(PF_CELL_KIND(cell_type[cell_index(face_cell_below(axis, f))]),
+                                                                PF_CELL_KIND(cell_type[cell_index(f)]));
 }
 
 // What the clamp changes in the FLIP delta of a particle at g with velocity v_own: per axis the

@@ -29,19 +29,17 @@ void main() {
     int b = cell_index(f);
     uint ta = PF_CELL_KIND(cell_type[a]);
     uint tb = PF_CELL_KIND(cell_type[b]);
-    if (ta == PF_CELL_SOLID || tb == PF_CELL_SOLID) {
-        bool inside = ta == tb;
-        if (inside) face_vel[id] = 0.0;
-        valid[id] = inside ? 0u : 1u;
-    } else if (ta == PF_CELL_FLUID || tb == PF_CELL_FLUID) {
+    if (face_left_to_extrapolation(ta, tb)) {
+        face_vel[id] = 0.0;
+        valid[id] = 0u;
+    } else if (ta == PF_CELL_SOLID || tb == PF_CELL_SOLID) {
+        valid[id] = 1u;
+    } else {  // a FLUID side
         float pa = ta == PF_CELL_FLUID ? pressure[a] : 0.0;
         float pb = tb == PF_CELL_FLUID ? pressure[b] : 0.0;
         float scale = sim.dt / (sim.density * sim.dx);
         float theta = ta == tb ? 1.0 : face_fraction[id];
         face_vel[id] -= scale * (pb - pa) / theta;
         valid[id] = 1u;
-    } else {
-        face_vel[id] = 0.0;
-        valid[id] = 0u;
     }
 }

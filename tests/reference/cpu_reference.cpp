@@ -469,6 +469,12 @@ std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uin
     return x;
 }
 
+namespace {
+// An interior face between cells of kinds a and b that velocity_update leaves without a velocity
+// (two AIR or two SOLID cells): the extrapolation fills it.
+bool left_to_extrapolation(uint8_t a, uint8_t b) { return a == b && a != FLUID; }
+}  // namespace
+
 VelocityUpdate velocity_update(const Grid& grid, const std::vector<uint8_t>& type,
                                const std::vector<double>& vel, const std::vector<double>& p,
                                double density, double dt, const std::vector<double>& theta) {
@@ -483,19 +489,16 @@ VelocityUpdate velocity_update(const Grid& grid, const std::vector<uint8_t>& typ
             glm::ivec3 lo(i, j, k);
             lo[c] -= 1;
             const int a = grid.cell_index(lo.x, lo.y, lo.z), b = grid.cell_index(i, j, k);
-            if (type[a] == SOLID || type[b] == SOLID) {
-                // A face of an obstacle keeps the obstacle's normal velocity (set before the
-                // projection); one inside it (two SOLID cells) is left to extrapolation.
-                const bool inside = type[a] == type[b];
-                if (inside) out.vel[id] = 0.0;
-                out.valid[id] = inside ? 0 : 1;
-            } else if (is_fluid(type, a) || is_fluid(type, b)) {
+            if (left_to_extrapolation(type[a], type[b])) {
+                out.vel[id] = 0.0;  // inside an obstacle or no fluid on either side
+            } else if (type[a] == SOLID || type[b] == SOLID) {
+                // A face of an obstacle keeps the obstacle's normal velocity (set before the projection).
+                out.valid[id] = 1;
+            } else {  // a FLUID side
                 const double pa = is_fluid(type, a) ? p[a] : 0.0;
                 const double pb = is_fluid(type, b) ? p[b] : 0.0;
                 out.vel[id] -= scale * (pb - pa) * link(type, theta, a, b, id);
                 out.valid[id] = 1;
-            } else {
-                out.vel[id] = 0.0; // no fluid on either side: filled by extrapolation
             }
         });
     return out;
@@ -555,12 +558,11 @@ void g2p(const Grid& grid, Particles& particles, const std::vector<double>& vel,
     if (!weight.empty()) {
         for (int c = 0; c < 3; ++c)
             for_each_face(grid, c, [&](int i, int j, int k, int id) {
-                const glm::ivec3 f(i, j, k);
-                if (f[c] == 0 || f[c] == grid.cell_dims()[c]) return;
-                glm::ivec3 lo = f;
+                if (grid.is_wall_face(c, i, j, k)) return;
+                glm::ivec3 lo(i, j, k);
                 lo[c] -= 1;
-                const uint8_t a = type[size_t(grid.cell_index(lo.x, lo.y, lo.z))];
-                extrapolated[size_t(id)] = a != FLUID && a == type[size_t(grid.cell_index(i, j, k))];
+                extrapolated[size_t(id)] = left_to_extrapolation(type[size_t(grid.cell_index(lo.x, lo.y, lo.z))],
+                                                                 type[size_t(grid.cell_index(i, j, k))]);
             });
     }
     for (size_t p = 0; p < particles.pos.size(); ++p) {
