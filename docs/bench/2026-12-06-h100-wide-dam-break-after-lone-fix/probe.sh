@@ -4,7 +4,8 @@
 source scripts/device_env.sh
 scene=docs/bench/2026-12-06-h100-large-world-scenes/dam_break_10m_wide.json
 for preset in fast balanced; do
+  limit=150; [ $preset = balanced ] && limit=200
   PROBE_PRESET=$preset PROBE_FROM=10 PROBE_EVERY=10 LD_LIBRARY_PATH=$PWD/build-dev/main:$LD_LIBRARY_PATH \
-    timeout 280 build-dev/lone_probe $scene 190 save 0 x > $OUT/probe_$preset.txt 2> $OUT/probe_${preset}_log.txt
+    timeout $limit build-dev/lone_probe $scene 190 save 0 x > $OUT/probe_$preset.txt 2> $OUT/probe_${preset}_log.txt
   echo "== $preset"; cut -c1-330 $OUT/probe_$preset.txt
 done
