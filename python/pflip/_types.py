@@ -53,6 +53,7 @@ class PressureSolver(enum.IntEnum):
     CG = 2
     PCG = 3
     MGPCG = 4
+    MGPCG_GALERKIN = 5
 
 
 class Transfer(enum.IntEnum):

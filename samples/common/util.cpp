@@ -173,7 +173,7 @@ uint32_t parse_u32(const std::string& text, const char* option, uint32_t lo, uin
 }
 
 namespace {
-const char* const kSolverNames[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
+const char* const kSolverNames[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg", "mgpcg_galerkin"};
 static_assert(sizeof(kSolverNames) / sizeof(kSolverNames[0]) == PF_PRESSURE_SOLVER_COUNT,
               "a command-line name for every pf_pressure_solver");
 }  // namespace

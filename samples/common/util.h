@@ -78,7 +78,7 @@ private:
 
 /// Strict decimal parsing of an integer setting (environment variables); throws Error naming `option`.
 uint32_t parse_u32(const std::string& text, const char* option, uint32_t lo, uint32_t hi);
-/// Pressure solver by name ("jacobi", "rbgs", "cg", "pcg", "mgpcg"); throws Error naming `what`.
+/// Pressure solver by name ("jacobi", "rbgs", "cg", "pcg", "mgpcg", "mgpcg_galerkin"); throws Error naming `what`.
 pf_pressure_solver parse_solver(const std::string& name, const char* what);
 /// The name parse_solver takes for `solver`.
 const char* solver_name(pf_pressure_solver solver);

@@ -294,7 +294,8 @@ const std::vector<ParamPreset>& param_presets() {
 }
 
 /// Display names of the enums the combos select (pfs::*_name gives the command-line names).
-const char* const kSolverLabels[] = {"Jacobi", "red-black GS / SOR", "CG", "PCG (Jacobi)", "MGPCG (multigrid)"};
+const char* const kSolverLabels[] = {"Jacobi", "red-black GS / SOR", "CG", "PCG (Jacobi)", "MGPCG (multigrid)",
+                                     "MGPCG (Galerkin multigrid)"};
 static_assert(sizeof(kSolverLabels) / sizeof(kSolverLabels[0]) == PF_PRESSURE_SOLVER_COUNT, "a label for every solver");
 const char* const kTransferLabels[PF_TRANSFER_COUNT] = {"PIC/FLIP", "APIC"};
 const char* const kAdvectionLabels[PF_ADVECTION_COUNT] = {"Euler", "RK2 (midpoint)", "RK3 (Ralston)", "Leapfrog", "RK2 + own velocity"};

@@ -67,6 +67,8 @@
 #define PF_SLOT_MG_COARSE_TYPE 2
 #define PF_SLOT_MG_COARSE_R 4
 #define PF_SLOT_MG_COARSE_E 5
+#define PF_SLOT_MG_STENCIL 0      /* a Galerkin level's stored operator (solvers/mgpcg/galerkin.glsl), in place of its e */
+#define PF_SLOT_MG_COARSE_STENCIL 1 /* the next coarser level's, as the setup makes it */
 /* storage blocks of the sorted-gather P2G (pf_p2g PF_P2G_SORTED_GATHER, transfer/sorted_gather/):
  * positions 0, velocities 1, face accumulators 4 and APIC affine vectors 6 as above; its own
  * buffers on the slots those kernels leave free (none binds face velocities or the status

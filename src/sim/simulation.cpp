@@ -198,7 +198,9 @@ uint32_t Simulation::live_count() const {
 pf_result Simulation::solvers_for(const pf_sim_params& params, const char* fn, SolversInUse* out) {
     SolversInUse s;
     const bool correction = params.volume_correction > 0.0f;
-    if (params.pressure_solver == PF_PRESSURE_SOLVER_MGPCG && (correction || pair_solver_)) {
+    const bool multigrid =
+        params.pressure_solver == PF_PRESSURE_SOLVER_MGPCG || params.pressure_solver == PF_PRESSURE_SOLVER_MGPCG_GALERKIN;
+    if (multigrid && (correction || pair_solvers_[params.pressure_solver])) {
         // One instance made for pairs solves both: the correction's problem and the projection's
         // as a pair (without separation; with it, the two in turn), and the projections the
         // correction does not go with (later substeps, effects). Its buffers are two solvers';
@@ -217,7 +219,7 @@ pf_result Simulation::solvers_for(const pf_sim_params& params, const char* fn, S
 }
 
 pf_result Simulation::solver_for(const pf_sim_params& params, const char* fn, PressureSolver** out, SolverRole role) {
-    std::unique_ptr<PressureSolver>& slot = role == SolverRole::pair         ? pair_solver_
+    std::unique_ptr<PressureSolver>& slot = role == SolverRole::pair         ? pair_solvers_[params.pressure_solver]
                                             : role == SolverRole::correction ? correction_solvers_[params.pressure_solver]
                                                                              : solvers_[params.pressure_solver];
     if (!slot) {
@@ -828,7 +830,7 @@ pf_result Simulation::set_one_cell_reduction_orbits_for_test(uint64_t orbits) {
     one_cell_reduction_orbits_ = orbits;
     for (auto* slots : {&solvers_, &correction_solvers_})
         for (std::unique_ptr<PressureSolver>& solver : *slots) solver.reset();
-    pair_solver_.reset();
+    for (auto& slot : pair_solvers_) slot.reset();
     return solvers_for(desc_.params, "set_one_cell_reduction_orbits_for_test", &solvers_in_use_);
 }
 

@@ -337,7 +337,7 @@ private:
     CoreStats stat_{};
     std::unique_ptr<PressureSolver> solvers_[PF_PRESSURE_SOLVER_COUNT];
     std::unique_ptr<PressureSolver> correction_solvers_[PF_PRESSURE_SOLVER_COUNT];
-    std::unique_ptr<PressureSolver> pair_solver_;  // SolverRole::pair (MGPCG)
+    std::unique_ptr<PressureSolver> pair_solvers_[PF_PRESSURE_SOLVER_COUNT];  // SolverRole::pair (the MGPCGs)
     SolversInUse solvers_in_use_;  // the ones params select (the correction's null while it is off)
     bool paired_correction_allowed_ = true;  // set_paired_correction_for_test
     bool correction_pending_ = false;  // this substep's correction waits to be solved with the projection

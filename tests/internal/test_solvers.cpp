@@ -553,6 +553,65 @@ TEST_P(SolverLadder, VcycleMatchesTheReference) {
     }
 }
 
+class GalerkinMultigrid : public Solvers {};
+
+// The V-cycle with Galerkin coarse levels against its double-precision reference
+// (reference/cpu_galerkin.cpp, whose coarse operators are explicit matrix products): from p = 0,
+// one MGPCG iteration gives alpha V(b). Three and four levels (the coarsest at least level 2),
+// flat grids across z and x, a grid of no even size, SOLID cells and the ghost-fluid surface term.
+TEST_P(GalerkinMultigrid, VcycleMatchesTheReference) {
+    struct Case {
+        const char* name;
+        Problem pb;
+    };
+    std::vector<Case> cases{{"three_levels", bubbly_tank({21, 14, 11}, 3)},
+                            {"four_levels", bubbly_tank({40, 30, 20}, 4)},
+                            {"flat", bubbly_tank({96, 64, 1}, 6)},
+                            {"flat_across_x", bubbly_tank({1, 64, 96}, 6)},
+                            {"solid_and_ghost_fluid", bubbly_tank({40, 30, 20}, 7)}};
+    Problem& last = cases.back().pb;
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> m(0, 19 * 64);  // 1/theta - 1 = m/64, exact in the type word
+    last.theta.assign(size_t(last.grid.faces()), 1.0);
+    for (double& t : last.theta) t = 1.0 / (1.0 + m(rng) / 64.0);
+    for (int k = 0; k < 20; ++k)
+        for (int j = 0; j < 12; ++j)
+            for (int i = 0; i < 40; ++i)
+                if ((i / 5 + j / 3 + k / 4) % 5 == 0) last.type[size_t(last.grid.cell_index(i, j, k))] = ref::SOLID;
+    for (size_t c = 0; c < last.type.size(); ++c)
+        if (last.type[c] != ref::FLUID) last.rhs[c] = 0.0;
+    ref::GalerkinCycle cycle;
+    cycle.coarse_cells = PF_MG_COARSE_CELLS;
+    cycle.max_levels = PF_MG_MAX_LEVELS;
+    cycle.coarse_pairs = PF_MG_GALERKIN_COARSE_PAIRS;
+    cycle.omega = PF_MG_GALERKIN_OMEGA;
+    cycle.alpha = PF_MG_GALERKIN_ALPHA;
+    for (const Case& tc : cases) {
+        const Problem& pb = tc.pb;
+        const Solved s = solve_with(GetParam().solver, pb, 1e-9f, 1);
+        ASSERT_EQ(s.p.size(), pb.rhs.size()) << tc.name;
+        EXPECT_EQ(s.iterations, 1u) << tc.name;
+        std::vector<double> b(pb.rhs.size()), extra;
+        for (size_t c = 0; c < b.size(); ++c) b[c] = double(float(pb.rhs[c]));
+        if (!pb.theta.empty()) extra = ref::surface_extra_diagonal(pb.grid, pb.type, pb.theta);
+        const std::vector<double> v = ref::galerkin_vcycle(pb.grid, pb.type, extra, b, cycle);
+        double pv = 0, vv = 0, largest = 0;
+        for (size_t c = 0; c < v.size(); ++c) {
+            pv += s.p[c] * v[c];
+            vv += v[c] * v[c];
+            largest = std::max(largest, std::abs(s.p[c]));
+        }
+        const double alpha = pv / vv;
+        double worst = 0;
+        for (size_t c = 0; c < v.size(); ++c) worst = std::max(worst, std::abs(s.p[c] - alpha * v[c]));
+        EXPECT_GT(alpha, 0.0) << tc.name;
+        EXPECT_LT(worst, 1e-4 * largest) << tc.name;
+        char ratio[32];
+        std::snprintf(ratio, sizeof ratio, "%.2e", worst / largest);
+        RecordProperty(std::string("worst_") + tc.name, ratio);
+    }
+}
+
 // Mirror symmetry: every reduction adds mirror orbits in a fixed order, so a solver whose cell
 // updates are mirror-exact (Jacobi; CG and PCG, whose scalars come from those reductions) stops
 // after the same iteration and returns the bit-exact mirror image of the solution — the
@@ -607,9 +666,13 @@ INSTANTIATE_TEST_SUITE_P(MirrorExact, MirrorExactSolvers,
 INSTANTIATE_TEST_SUITE_P(Mgpcg, SolverLadder, ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_MGPCG, "mgpcg"}),
                          [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
 
+INSTANTIATE_TEST_SUITE_P(Mgpcg, GalerkinMultigrid,
+                         ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_MGPCG_GALERKIN, "mgpcg_galerkin"}),
+                         [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
+
 // Every pf_pressure_solver value, 0 .. PF_PRESSURE_SOLVER_COUNT - 1: a new solver is run against
 // the reference as soon as its enum value exists (the static_assert asks for its test name).
-constexpr const char* kSolverTestNames[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
+constexpr const char* kSolverTestNames[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg", "mgpcg_galerkin"};
 static_assert(sizeof(kSolverTestNames) / sizeof(kSolverTestNames[0]) == PF_PRESSURE_SOLVER_COUNT,
               "name the new pressure solver's tests here");
 std::vector<SolverCase> every_solver() {
@@ -629,7 +692,8 @@ INSTANTIATE_TEST_SUITE_P(AllSolvers, Solvers, ::testing::ValuesIn(every_solver()
 // whichever stops first. Grids: the coarsest level alone (coarse solve), a bottom level that a
 // single solve runs in one workgroup and a pair through the fused passes, a coarse level above
 // PF_MG_FUSED_CELLS (the unfused passes; a 3-iteration cap keeps it short), a grid that is its
-// own coarsest level, the singular closed box, and a second problem with b = 0 (stops at once).
+// own coarsest level, the singular closed box, and a second problem with b = 0 (stops at once);
+// each with geometric and with Galerkin coarse levels.
 class PairSolve : public GpuTest {};
 
 TEST_F(PairSolve, EachProblemAsItsOwnSolve) {
@@ -645,11 +709,17 @@ TEST_F(PairSolve, EachProblemAsItsOwnSolve) {
                                   {"own_coarsest_level", bubbly_tank({12, 9, 8}, 5), 60},
                                   {"closed_box", closed_full_box({12, 10, 8}, 6), 60},
                                   {"second_zero", bubbly_tank({21, 14, 11}, 7), 60, true}};
-    for (const Case& tc : cases) {
+    for (pf_pressure_solver solver : {PF_PRESSURE_SOLVER_MGPCG, PF_PRESSURE_SOLVER_MGPCG_GALERKIN})
+    for (const Case& base : cases) {
+        // Galerkin levels take the same passes at every size: no unfused case of their own.
+        if (solver == PF_PRESSURE_SOLVER_MGPCG_GALERKIN && std::string(base.name) == "coarse_level_unfused") continue;
+        Case tc = base;
+        const std::string name = std::string(solver == PF_PRESSURE_SOLVER_MGPCG ? "" : "galerkin_") + base.name;
+        tc.name = name.c_str();
         const Problem& pb = tc.pb;
         pf_sim_desc d = test_desc(uint32_t(pb.grid.nx), uint32_t(pb.grid.ny), uint32_t(pb.grid.nz), 0.05f);
         d.max_particles = 1024;
-        d.params.pressure_solver = PF_PRESSURE_SOLVER_MGPCG;
+        d.params.pressure_solver = solver;
         d.params.pressure_tolerance = 1e-5f;
         d.params.pressure_iterations = tc.cap;
         d.params.separation = 0;

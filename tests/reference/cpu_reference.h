@@ -158,6 +158,23 @@ std::vector<double> multigrid_vcycle(const Grid& grid, const std::vector<uint8_t
                                      const std::vector<double>& extra_diagonal, const std::vector<double>& r,
                                      int coarse_cells, int max_levels, int coarse_sweeps);
 
+// The MGPCG V-cycle with Galerkin coarse levels (shaders/solvers/mgpcg/galerkin.glsl), in double,
+// with its operators built as explicit matrices: level 1 is s P^T A P with the trilinear P and
+// s = 4 / 2^(coarsened axes), deeper levels P^T A P with the aggregation P (a parent's value to its
+// children); a coarse cell is FLUID if a child is. Levels halve each axis (rounding up) until one
+// beyond level 1 has at most `coarse_cells` cells or there are `max_levels`. The fine level: red
+// and black Gauss-Seidel from zero, the correction, black and red; a coarse level: e = omega r /
+// diag, the correction scaled by alpha, one Jacobi step; the coarsest: Gauss-Seidel over the 8
+// parity colours forward then backward, `coarse_pairs` times, from zero. The fine level must not
+// be the coarsest itself.
+struct GalerkinCycle {
+    int coarse_cells = 0, max_levels = 0, coarse_pairs = 0;
+    double omega = 0.0, alpha = 0.0;
+};
+std::vector<double> galerkin_vcycle(const Grid& grid, const std::vector<uint8_t>& type,
+                                    const std::vector<double>& extra_diagonal, const std::vector<double>& r,
+                                    const GalerkinCycle& cycle);
+
 // Converged solve of the same system (conjugate gradients to ‖b - A p‖ <= 1e-12·‖b‖).
 std::vector<double> solve_pressure_exact(const Grid& grid, const std::vector<uint8_t>& type,
                                          const std::vector<double>& rhs, const std::vector<double>& theta = {});

@@ -103,7 +103,7 @@ TEST_P(Ladder, TwoMirroredCornersAgree) {
 }
 
 std::string combination_name(const ::testing::TestParamInfo<Combination>& info) {
-    static const char* solvers[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg"};
+    static const char* solvers[] = {"jacobi", "rbgs", "cg", "pcg", "mgpcg", "mgpcg_galerkin"};
     static const char* transfers[] = {"flip", "apic"};
     static const char* advections[] = {"euler", "rk2", "rk3", "leapfrog"};
     static const char* p2g[] = {"", "_float_atomic", "_sorted_gather"};  // fixed point: the names of old
@@ -114,7 +114,7 @@ std::string combination_name(const ::testing::TestParamInfo<Combination>& info) 
 INSTANTIATE_TEST_SUITE_P(
     Every, Ladder,
     ::testing::Combine(::testing::Values(PF_PRESSURE_SOLVER_JACOBI, PF_PRESSURE_SOLVER_RBGS, PF_PRESSURE_SOLVER_CG,
-                                         PF_PRESSURE_SOLVER_PCG, PF_PRESSURE_SOLVER_MGPCG),
+                                         PF_PRESSURE_SOLVER_PCG, PF_PRESSURE_SOLVER_MGPCG, PF_PRESSURE_SOLVER_MGPCG_GALERKIN),
                        ::testing::Values(PF_TRANSFER_PIC_FLIP, PF_TRANSFER_APIC),
                        ::testing::Values(PF_ADVECTION_EULER, PF_ADVECTION_RK2, PF_ADVECTION_RK3, PF_ADVECTION_LEAPFROG),
                        ::testing::Values(PF_P2G_FIXED_POINT)),

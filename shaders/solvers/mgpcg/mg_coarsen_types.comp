@@ -1,6 +1,7 @@
 // Multigrid setup, per coarse cell: its type from its (up to) 8 fine children. AIR if any
 // child is AIR (the free surface is kept: a Dirichlet cell never disappears), else FLUID if
-// any child is FLUID, else SOLID (McAdams et al. 2010, §3).
+// any child is FLUID, else SOLID (McAdams et al. 2010, §3). Galerkin levels (PF_MG_GALERKIN 1,
+// galerkin.glsl): FLUID if any child is FLUID, else AIR if one is, else SOLID.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;
@@ -21,5 +22,9 @@ void main() {
         air = air || t == PF_CELL_AIR;
         fluid = fluid || t == PF_CELL_FLUID;
     }
+#ifdef PF_MG_GALERKIN
+    coarse_type[c] = fluid ? PF_CELL_FLUID : (air ? PF_CELL_AIR : PF_CELL_SOLID);
+#else
     coarse_type[c] = air ? PF_CELL_AIR : (fluid ? PF_CELL_FLUID : PF_CELL_SOLID);
+#endif
 }

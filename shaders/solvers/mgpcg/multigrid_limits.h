@@ -11,4 +11,10 @@
 #define PF_MG_TILE_INVOCATIONS 1024 /* the workgroup of mg_down.comp and mg_up.comp, one per tile: its loops over the staged cells are what a pass waits on (docs/notes/2026-12-06-mg-tile-invocations.md) */
 #define PF_MG_BOTTOM_INVOCATIONS 1024 /* mg_bottom.comp's one workgroup (GL 4.3's least maximum); >= PF_MG_COARSE_CELLS */
 #define PF_MG_BOTTOM_CELLS 4096 /* the level above the coarsest that mg_bottom.comp takes (24 KiB of shared memory) */
+/* Galerkin coarse levels (galerkin.glsl): the damped Jacobi smoothing's weight, the aggregated
+ * correction's scale, and the coarsest level's forward-backward Gauss-Seidel pairs, as a
+ * prototype chose them (docs/notes/2026-12-06-galerkin-coarse-levels.md) */
+#define PF_MG_GALERKIN_OMEGA 0.6
+#define PF_MG_GALERKIN_ALPHA 1.5
+#define PF_MG_GALERKIN_COARSE_PAIRS 4
 #endif

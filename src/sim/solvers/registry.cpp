@@ -17,7 +17,10 @@ std::unique_ptr<PressureSolver> make_pressure_solver(pf_pressure_solver kind, bo
             return std::make_unique<ConjugateGradientSolver>(ConjugateGradientSolver::Preconditioner::jacobi, "pcg");
         case PF_PRESSURE_SOLVER_MGPCG:
             return std::make_unique<ConjugateGradientSolver>(ConjugateGradientSolver::Preconditioner::stored, "mgpcg",
-                                                             std::make_unique<Multigrid>(), pairs);
+                                                             std::make_unique<Multigrid>(Multigrid::Coarse::geometric), pairs);
+        case PF_PRESSURE_SOLVER_MGPCG_GALERKIN:
+            return std::make_unique<ConjugateGradientSolver>(ConjugateGradientSolver::Preconditioner::stored, "mgpcg_galerkin",
+                                                             std::make_unique<Multigrid>(Multigrid::Coarse::galerkin), pairs);
         default: return nullptr;
     }
 }

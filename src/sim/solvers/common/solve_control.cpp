@@ -55,6 +55,11 @@ gl::ProgramId SolveControl::paired(gl::ProgramId id) {
         case ProgramId::mg_prolong_smooth: return ProgramId::mg_prolong_smooth_pair;
         case ProgramId::mg_smooth_zstats: return ProgramId::mg_smooth_zstats_pair;
         case ProgramId::mg_coarse_solve: return ProgramId::mg_coarse_solve_pair;
+        case ProgramId::mg_galerkin_down_r2: return ProgramId::mg_galerkin_down_r2_pair;
+        case ProgramId::mg_galerkin_down_r1: return ProgramId::mg_galerkin_down_r1_pair;
+        case ProgramId::mg_galerkin_up_r2: return ProgramId::mg_galerkin_up_r2_pair;
+        case ProgramId::mg_galerkin_up_r1: return ProgramId::mg_galerkin_up_r1_pair;
+        case ProgramId::mg_galerkin_coarse: return ProgramId::mg_galerkin_coarse_pair;
         default: return id;
     }
 }

@@ -21,7 +21,10 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         const bool fine = levels_.empty();
         // Axes of two or three cells coarsen to one and two like any other (the prolongation clamps
         // onto the level); only an axis of one cell stays as it is.
-        const bool last = level.cells <= PF_MG_COARSE_CELLS || levels_.size() + 1 == PF_MG_MAX_LEVELS;
+        // Galerkin levels: the coarsest is at least level 2 (its 3^3 stencil is what mg_galerkin_coarse
+        // colours; level 1's 5^3 is not), unless the fine level is the coarsest or nothing coarsens.
+        const bool small = level.cells <= PF_MG_COARSE_CELLS && (!galerkin_ || levels_.size() != 1 || next.dims == dims);
+        const bool last = small || levels_.size() + 1 == PF_MG_MAX_LEVELS;
         const size_t bytes = size_t(level.cells) * (control.pairs() ? 8 : 4);  // a pair's: two values a cell
         if (fine) {
             start_ = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_start");
@@ -29,7 +32,9 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
             level.type = gl::Buffer(gl, size_t(level.cells) * 4, GL_DYNAMIC_COPY, "mg_type");
             level.r = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_r");
             level.out = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_out");
-            if (!last) level.e = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_e");
+            if (!last && !galerkin_) level.e = gl::Buffer(gl, bytes, GL_DYNAMIC_COPY, "mg_e");
+            if (galerkin_)
+                level.stencil = gl::Buffer(gl, size_t(level.cells) * (levels_.size() == 1 ? 125 : 27) * 4, GL_DYNAMIC_COPY, "mg_stencil");
         }
         // Indirect records, which convergence zeroes: mg_down's and mg_up's tiles on a fused level;
         // the level's cells where an unfused pass works on them (its own passes, the restriction
@@ -37,12 +42,13 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
         // The fine level never: its tiles' repeated halo work costs more than its launches save
         // wherever it holds most of the work (a large grid; a CPU rasteriser, which has no launch
         // cost to save).
-        level.fused = !fine && level.cells <= PF_MG_FUSED_CELLS;
+        level.fused = !fine && !galerkin_ && level.cells <= PF_MG_FUSED_CELLS;
         // The bottom of the V-cycle in one workgroup (mg_bottom.comp): the level above the coarsest.
-        level.bottom = !fine && !last && level.cells <= PF_MG_BOTTOM_CELLS && next.cells() <= PF_MG_COARSE_CELLS;
+        level.bottom = !fine && !galerkin_ && !last && level.cells <= PF_MG_BOTTOM_CELLS && next.cells() <= PF_MG_COARSE_CELLS;
         const bool finer_unfused = !fine && !levels_.back().fused;
         if (fine) level.record = control.record(0);
         else if (!level.fused || finer_unfused) level.record = control.record(control.add_record(level.cells));
+        if (galerkin_ && !fine && !last) level.down_cells = control.record(control.add_record(uint64_t(next.cells()) * 8));
         if (!last && level.fused && (!level.bottom || control.pairs())) {
             level.down = control.record(control.add_record(next.tiles(PF_MG_DOWN_TILE) * PF_WORKGROUP_SIZE));
             if (!fine) level.up = control.record(control.add_record(layout.tiles(PF_MG_UP_TILE) * PF_WORKGROUP_SIZE));
@@ -59,9 +65,23 @@ std::string Multigrid::init(const gl::Api& gl, PassRunner& runner, SolveControl&
     for (bool pair : {false, true}) {
         if (pair && !control.pairs()) break;
         pair_ = pair;
-        std::vector<ProgramId> programs{ProgramId::mg_coarsen_types, program(ProgramId::mg_smooth_from_zero),
+        std::vector<ProgramId> programs{galerkin_ ? ProgramId::mg_coarsen_types_galerkin : ProgramId::mg_coarsen_types,
+                                        program(ProgramId::mg_smooth_from_zero),
                                         program(ProgramId::mg_prolong_smooth), program(ProgramId::mg_smooth_zstats),
                                         program(ProgramId::cg_zstats)};
+        if (galerkin_) {
+            for (ProgramId id : {ProgramId::mg_galerkin_first, ProgramId::mg_galerkin_aggregate_r2,
+                                 ProgramId::mg_galerkin_aggregate_r1, program(ProgramId::mg_galerkin_down_r2),
+                                 program(ProgramId::mg_galerkin_down_r1), program(ProgramId::mg_galerkin_up_r2),
+                                 program(ProgramId::mg_galerkin_up_r1), program(ProgramId::mg_galerkin_coarse),
+                                 program(ProgramId::mg_smooth), program(ProgramId::mg_residual), program(ProgramId::mg_restrict),
+                                 program(ProgramId::mg_coarse_solve)})
+                programs.push_back(id);
+            for (ProgramId id : programs) {
+                if (std::string error = runner.prepare(id); !error.empty()) return error;
+            }
+            continue;
+        }
         bool fused = false, unfused = false, bottom_level = false;
         for (size_t l = 0; l + 1 < levels_.size(); ++l) {
             if (bottom(l)) bottom_level = true;
@@ -99,11 +119,51 @@ Uniform Multigrid::coarse_dims(const Level& coarse) {
 void Multigrid::begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_type) {
     fine_type_ = &cell_type;
     for (size_t l = 0; l + 1 < levels_.size(); ++l) {
-        runner.run({ProgramId::mg_coarsen_types, stat, levels_[l + 1].cells,
+        runner.run({galerkin_ ? ProgramId::mg_coarsen_types_galerkin : ProgramId::mg_coarsen_types, stat, levels_[l + 1].cells,
                     {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &levels_[l + 1].type}},
                     {},
                     {SolveControl::dims_uniform(levels_[l].dims), coarse_dims(levels_[l + 1])}});
     }
+    if (!galerkin_ || levels_.size() < 2) return;
+    // The operators, finest first: level 1 from the fine level, each deeper one from the one above.
+    runner.run({ProgramId::mg_galerkin_first, stat, levels_[1].cells * 125,
+                {{PF_SLOT_MG_TYPE, &type_of(0)}, {PF_SLOT_MG_COARSE_TYPE, &levels_[1].type},
+                 {PF_SLOT_MG_COARSE_STENCIL, &levels_[1].stencil}},
+                {},
+                {SolveControl::dims_uniform(levels_[0].dims), coarse_dims(levels_[1])}});
+    for (size_t l = 1; l + 1 < levels_.size(); ++l) {
+        runner.run({l == 1 ? ProgramId::mg_galerkin_aggregate_r2 : ProgramId::mg_galerkin_aggregate_r1, stat,
+                    levels_[l + 1].cells * 27,
+                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_STENCIL, &levels_[l].stencil},
+                     {PF_SLOT_MG_COARSE_STENCIL, &levels_[l + 1].stencil}},
+                    {},
+                    {SolveControl::dims_uniform(levels_[l].dims), coarse_dims(levels_[l + 1])}});
+    }
+}
+
+void Multigrid::galerkin_vcycle(PassRunner& runner, StatId stat, size_t l) {
+    const Level& level = levels_[l];
+    const Uniform dims = SolveControl::dims_uniform(level.dims);
+    if (coarsest(l)) {
+        runner.run({program(ProgramId::mg_galerkin_coarse), stat, PF_WORKGROUP_SIZE,
+                    {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_STENCIL, &level.stencil},
+                     {PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_SOLVER_STATE, &control_->state()}},
+                    {},
+                    {dims}});
+        return;
+    }
+    const Level& coarse = levels_[l + 1];
+    runner.run({program(l == 1 ? ProgramId::mg_galerkin_down_r2 : ProgramId::mg_galerkin_down_r1), stat, 0,
+                {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_STENCIL, &level.stencil},
+                 {PF_SLOT_MG_COARSE_R, &coarse.r}},
+                level.down_cells,
+                {dims, coarse_dims(coarse)}});
+    galerkin_vcycle(runner, stat, l + 1);
+    runner.run({program(l == 1 ? ProgramId::mg_galerkin_up_r2 : ProgramId::mg_galerkin_up_r1), stat, 0,
+                {{PF_SLOT_MG_TYPE, &type_of(l)}, {PF_SLOT_MG_R, &r_of(l)}, {PF_SLOT_MG_STENCIL, &level.stencil},
+                 {PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_E, &out_of(l + 1)}},
+                level.record,
+                {dims, coarse_dims(coarse)}});
 }
 
 void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_step) {
@@ -138,7 +198,7 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
                      {PF_SLOT_MG_TMP, &out_of(l)}},
                     level.record,
                     {dims}});
-        if (coarsest(l + 1)) {
+        if (coarsest(l + 1) || galerkin_) {
             runner.run({program(ProgramId::mg_restrict), stat, 0,
                         {{PF_SLOT_MG_TMP, &out_of(l)}, {PF_SLOT_MG_COARSE_TYPE, &coarse.type},
                          {PF_SLOT_MG_COARSE_R, &coarse.r}},
@@ -165,7 +225,8 @@ void Multigrid::vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_st
                     level.down,
                     {dims, coarse_dims(coarse)}});
     }
-    vcycle(runner, stat, l + 1, cg_step);
+    if (galerkin_) galerkin_vcycle(runner, stat, l + 1);
+    else vcycle(runner, stat, l + 1, cg_step);
     // The correction, then black and red: one pass on a fused level (mg_up.comp); on the fine
     // level the red half-sweep carries CG's sums.
     if (l > 0 && level.fused) {

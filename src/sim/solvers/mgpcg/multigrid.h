@@ -25,6 +25,11 @@
 // down, the coarsest level's sweeps and its way up in one workgroup (mg_bottom.comp): one
 // dispatch for three. A pair solve's V-cycle (two problems' values a cell, SolveControl) takes
 // the fused passes there instead: the bottom's shared memory would not hold two values a cell.
+//
+// With Galerkin coarse levels (shaders/solvers/mgpcg/galerkin.glsl) every level below the fine
+// one stores its operator, made once a solve from the finer one's (begin()), and takes one pass
+// down (Jacobi from zero, residual, aggregation: mg_galerkin_down.comp) and one up
+// (mg_galerkin_up.comp); the coarsest, at least level 2, takes mg_galerkin_coarse.comp.
 #pragma once
 #include <vector>
 
@@ -34,6 +39,10 @@ namespace pf {
 
 class Multigrid final : public StoredPreconditioner {
 public:
+    // How the coarse levels get their operator: rebuilt from coarsened cell types, or the Galerkin product.
+    enum class Coarse { geometric, galerkin };
+    explicit Multigrid(Coarse coarse) : galerkin_(coarse == Coarse::galerkin) {}
+
     std::string init(const gl::Api& gl, PassRunner& runner, SolveControl& control) override;
     void begin(PassRunner& runner, StatId stat, const gl::Buffer& cell_type) override;
     const gl::Buffer& first_sweep() const override { return start_; }
@@ -55,6 +64,8 @@ private:
         // after pre-smoothing, then the level's result (the coarsest level: only its result).
         // Level 0 borrows type, r and out (= z) from the solve; its e is start_.
         gl::Buffer type, r, e, out;
+        gl::Buffer stencil;     // a Galerkin level's operator (5^3 coefficients a cell on level 1, 3^3 deeper)
+        Indirect down_cells{};  // a Galerkin level's way down: 8 invocations per cell of the next level
     };
     // The buffers of level l for this cycle (level 0's come from the caller).
     const gl::Buffer& type_of(size_t l) const { return l == 0 ? *fine_type_ : levels_[l].type; }
@@ -67,6 +78,8 @@ private:
     // Kernel `id` for this cycle (a pair's permutation in a pair's).
     gl::ProgramId program(gl::ProgramId id) const { return control_->program(id, pair_); }
     void vcycle(PassRunner& runner, StatId stat, size_t l, uint32_t cg_step);
+    // A Galerkin level's part of the V-cycle (l >= 1): down, the coarser levels, up.
+    void galerkin_vcycle(PassRunner& runner, StatId stat, size_t l);
     // One colour of a Gauss-Seidel sweep on an unfused level l's buffer x.
     void half_sweep(PassRunner& runner, StatId stat, size_t l, const gl::Buffer& x, uint32_t color);
     static Uniform coarse_dims(const Level& coarse);
@@ -78,6 +91,7 @@ private:
     const gl::Buffer* fine_r_ = nullptr;
     const gl::Buffer* fine_z_ = nullptr;
     bool pair_ = false;  // this cycle's
+    const bool galerkin_;  // Galerkin coarse levels
 };
 
 }  // namespace pf
