@@ -441,11 +441,14 @@ TEST_F(SolverMapping, OneCellAnInvocationIsChosenByOrbits) {
     }
 }
 
+// Both multigrids (geometric and Galerkin coarse levels).
+class Multigrids : public Solvers {};
+
 // Multigrid's point: the iterations barely grow as the grid is refined (a twice finer grid
 // needs about twice the PCG iterations and four times the Jacobi sweeps).
-TEST_P(SolverLadder, MgpcgIterationsStayFlatAsTheGridDoubles) {
-    const Solved coarse = solve_with(PF_PRESSURE_SOLVER_MGPCG, bubbly_tank({16, 16, 16}, 4, 0.0), 1e-5f, 300);
-    const Solved fine = solve_with(PF_PRESSURE_SOLVER_MGPCG, bubbly_tank({32, 32, 32}, 4, 0.0), 1e-5f, 300);
+TEST_P(Multigrids, IterationsStayFlatAsTheGridDoubles) {
+    const Solved coarse = solve_with(GetParam().solver, bubbly_tank({16, 16, 16}, 4, 0.0), 1e-5f, 300);
+    const Solved fine = solve_with(GetParam().solver, bubbly_tank({32, 32, 32}, 4, 0.0), 1e-5f, 300);
     const Solved pcg_coarse = solve_with(PF_PRESSURE_SOLVER_PCG, bubbly_tank({16, 16, 16}, 4, 0.0), 1e-5f, 300);
     const Solved pcg_fine = solve_with(PF_PRESSURE_SOLVER_PCG, bubbly_tank({32, 32, 32}, 4, 0.0), 1e-5f, 300);
     RecordProperty("mgpcg_16", int(coarse.iterations));
@@ -463,11 +466,11 @@ TEST_P(SolverLadder, MgpcgIterationsStayFlatAsTheGridDoubles) {
 // ("the coarsest level has 3072 cells"). Each converges to the tolerance the CPU measures, in
 // a handful of iterations where PCG needs far more (measured 10, 11, 5 against 121, 114, 22).
 // The bound of 12 catches a wrong restriction scale: R = P^T / 2 on the flat grid took 16.
-TEST_P(SolverLadder, MgpcgCoarsensFlatAndThinGrids) {
+TEST_P(Multigrids, CoarsenFlatAndThinGrids) {
     const glm::ivec3 grids[] = {{64, 24, 2}, {96, 24, 1}, {200, 3, 3}};
     for (const glm::ivec3& n : grids) {
         const Problem pb = bubbly_tank(n, 31, 0.0);
-        const Solved mg = solve_with(PF_PRESSURE_SOLVER_MGPCG, pb, 1e-4f, 300);
+        const Solved mg = solve_with(GetParam().solver, pb, 1e-4f, 300);
         const Solved pcg = solve_with(PF_PRESSURE_SOLVER_PCG, pb, 1e-4f, 300);
         const std::string name = std::to_string(n.x) + "x" + std::to_string(n.y) + "x" + std::to_string(n.z);
         ASSERT_EQ(mg.p.size(), pb.rhs.size()) << name;
@@ -664,6 +667,11 @@ INSTANTIATE_TEST_SUITE_P(MirrorExact, MirrorExactSolvers,
                          [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
 
 INSTANTIATE_TEST_SUITE_P(Mgpcg, SolverLadder, ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_MGPCG, "mgpcg"}),
+                         [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
+
+INSTANTIATE_TEST_SUITE_P(Both, Multigrids,
+                         ::testing::Values(SolverCase{PF_PRESSURE_SOLVER_MGPCG, "mgpcg"},
+                                           SolverCase{PF_PRESSURE_SOLVER_MGPCG_GALERKIN, "mgpcg_galerkin"}),
                          [](const ::testing::TestParamInfo<SolverCase>& info) { return std::string(info.param.name); });
 
 INSTANTIATE_TEST_SUITE_P(Mgpcg, GalerkinMultigrid,

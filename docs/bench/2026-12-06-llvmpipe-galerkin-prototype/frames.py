@@ -1,5 +1,6 @@
 """Frame 45's particles of dam_break_1m (dump.py) loaded into new simulations, then FRAMES frames
-of a configuration with each MGPCG: pressure iterations (the most a frame) and projections.
+of a configuration with each MGPCG: pressure iterations (the most a frame), projections and
+dispatches a frame (pf_get_pass_stats; llvmpipe issues what any GL is given).
     python frames.py db1m_045.npz balanced|leapfrog FRAMES"""
 import sys, numpy as np, pflip
 d = np.load(sys.argv[1]); config = sys.argv[2]; frames = int(sys.argv[3])
@@ -16,5 +17,6 @@ for solver in (pflip.PressureSolver.MGPCG, pflip.PressureSolver.MGPCG_GALERKIN):
         for f in range(frames):
             sim.step(1 / 60)
             st = sim.stats()
-            its.append((st.solver_iterations, st.substeps))
-        print(config, solver.name, 'iterations (most a frame), projections:', its, 'mean', np.mean([i for i, _ in its]), flush=True)
+            its.append((st.solver_iterations, st.substeps, sum(ps.dispatches for ps in sim.pass_stats())))
+        print(config, solver.name, 'iterations (most a frame), projections, dispatches:', its, 'means',
+              np.mean([i[0] for i in its]), np.mean([i[2] for i in its]), flush=True)

@@ -1,11 +1,11 @@
-// Multigrid setup (PF_PRESSURE_SOLVER_MGPCG_GALERKIN), per coefficient of the stencils of a level below level 1:
-// A_coarse = P^T A P with the aggregation P (galerkin.glsl), from the finer level's stencils of
-// radius PF_MG_RADIUS. Invocation K * coarse cells + C computes entry (C, C + O_K), a 3^3
-// stencil: the sum of A(c, o) over the children c of C and the offsets o whose cell c + o has
-// the parent C + O_K. Summed in double: the entries are few-bit multiples of one power of two,
-// so the sum is exact in practice and the stencils stay symmetric and mirror-exact. Children
-// that are not FLUID have zero stencils (mg_galerkin_first.comp, this kernel), as have entries
-// toward them.
+// Multigrid setup (Galerkin levels), per coefficient of the stencils of a level
+// below level 1: A_coarse = P^T A P with the aggregation P (galerkin.glsl), from the finer level's
+// stencils of radius PF_MG_RADIUS. Invocation K * coarse cells + C computes entry (C, C + O_K), a
+// 3^3 stencil: the sum of A(c, o) over the children c of C and the offsets o whose cell c + o has
+// the parent C + O_K. Summed in double: the float entries span far fewer than double's 53 bits,
+// so the sum is exact in practice and the stencils stay symmetric and mirror-exact. Children that
+// are not FLUID have zero stencils (mg_galerkin_first.comp, this kernel), as have entries toward
+// them.
 #include "common/sim.glsl"
 #include "solvers/common/solver_state.h"
 layout(local_size_x = PF_WORKGROUP_SIZE) in;

@@ -1,4 +1,4 @@
-// Multigrid (PF_PRESSURE_SOLVER_MGPCG_GALERKIN), the coarsest level in one workgroup: e = 0, then symmetric
+// Multigrid (Galerkin levels), the coarsest level in one workgroup: e = 0, then symmetric
 // Gauss-Seidel sweeps with the level's stored 3^3 stencil (galerkin.glsl), its cells coloured by
 // the parity of each coordinate (8 colours: no two cells of a colour are neighbours), the
 // colours forward then backward, PF_MG_GALERKIN_COARSE_PAIRS times — palindromic, so the V-cycle stays

@@ -1,4 +1,4 @@
-// Multigrid (PF_PRESSURE_SOLVER_MGPCG_GALERKIN), a Galerkin level's way down in one pass: its pre-smoothing, one
+// Multigrid (Galerkin levels), a Galerkin level's way down in one pass: its pre-smoothing, one
 // damped Jacobi step from zero, e = omega r / diag (galerkin.glsl), the residual r - A e with the
 // level's stored stencil, and its restriction to the next level by aggregation (the sum over a
 // coarse cell's children). e is not stored: each term recomputes it from r and the neighbour's

@@ -1,4 +1,4 @@
-// Multigrid setup (PF_PRESSURE_SOLVER_MGPCG_GALERKIN), per coefficient of level 1's stencils: A1 = s P^T A P with
+// Multigrid setup (Galerkin levels), per coefficient of level 1's stencils: A1 = s P^T A P with
 // the fine operator A (poisson.glsl, ghost-fluid diagonal included), the trilinear P and R's
 // scale s (multigrid.glsl). Invocation k * cells + c computes entry (c, c + o_k):
 //   s * sum over FLUID fine f of P(f, c) (diag_f P(f, c') - sum over FLUID neighbours g P(g, c')),

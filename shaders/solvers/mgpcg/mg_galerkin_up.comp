@@ -1,4 +1,4 @@
-// Multigrid (PF_PRESSURE_SOLVER_MGPCG_GALERKIN), a Galerkin level's way up in one pass per cell: the coarse
+// Multigrid (Galerkin levels), a Galerkin level's way up in one pass per cell: the coarse
 // correction, e + alpha P e_coarse (P copies a parent's value to its children; galerkin.glsl), then
 // one damped Jacobi step with the level's stored stencil, out = v + omega (r - A v) / diag. The
 // pre-smoothed e = omega r / diag (mg_galerkin_down.comp) and v at each neighbour are recomputed
