@@ -176,9 +176,10 @@ typedef enum pf_pressure_solver {
     PF_PRESSURE_SOLVER_PCG = 3,      /**< conjugate gradients, Jacobi (diagonal) preconditioner */
     PF_PRESSURE_SOLVER_MGPCG = 4,    /**< conjugate gradients, multigrid V-cycle preconditioner (McAdams et al. 2010) */
     PF_PRESSURE_SOLVER_MGPCG_GALERKIN = 5, /**< MGPCG whose coarse levels are Galerkin products R A P of the fine
-                                          operator, so they see the free surface and the walls: about half the
-                                          iterations, for a setup each solve, wider coarse stencils and about 64
-                                          bytes more GPU memory a cell (docs/design.md §4.6) */
+                                          operator, so they see the free surface and the walls: a quarter to half
+                                          fewer iterations, but as built a longer frame (a setup each solve, wider
+                                          coarse stencils) and about 64 bytes more GPU memory a cell
+                                          (docs/notes/2026-12-06-galerkin-coarse-levels.md) */
     PF_PRESSURE_SOLVER_COUNT = 6,
     PF_PRESSURE_SOLVER_FORCE32 = 0x7fffffff
 } pf_pressure_solver;
