@@ -24,12 +24,6 @@ struct Level {
 
 const glm::ivec3 kFaces[6] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}, {0, 0, -1}, {0, 0, 1}};
 
-double prolong_weight(int f, int c, int nc) {
-    const int parent = f >> 1;
-    const int other = std::clamp((f & 1) == 0 ? parent - 1 : parent + 1, 0, nc - 1);
-    return (parent == c ? 0.75 : 0.0) + (other == c ? 0.25 : 0.0);
-}
-
 // P as rows of the fine level (FLUID rows only), columns of the coarse level's FLUID cells.
 Matrix prolongation(const Level& F, const Level& C, bool first) {
     Matrix P(size_t(F.cells()));

@@ -42,13 +42,6 @@ void sweep(const Level& L, const std::vector<double>& r, std::vector<double>& e,
     }
 }
 
-// Weight of coarse index c (of nc) in the prolongation onto fine index f, one axis.
-double prolong_weight(int f, int c, int nc) {
-    const int parent = f >> 1;
-    const int other = std::clamp((f & 1) == 0 ? parent - 1 : parent + 1, 0, nc - 1);
-    return (parent == c ? 0.75 : 0.0) + (other == c ? 0.25 : 0.0);
-}
-
 std::vector<double> cycle(const std::vector<Level>& levels, size_t l, const std::vector<double>& r, int coarse_sweeps) {
     const Level& L = levels[l];
     std::vector<double> e(size_t(L.cells()), 0.0);
@@ -105,6 +98,12 @@ std::vector<double> cycle(const std::vector<Level>& levels, size_t l, const std:
 }
 
 }  // namespace
+
+double prolong_weight(int f, int c, int nc) {
+    const int parent = f >> 1;
+    const int other = std::clamp((f & 1) == 0 ? parent - 1 : parent + 1, 0, nc - 1);
+    return (parent == c ? 0.75 : 0.0) + (other == c ? 0.25 : 0.0);
+}
 
 std::vector<double> multigrid_vcycle(const Grid& grid, const std::vector<uint8_t>& type,
                                      const std::vector<double>& extra_diagonal, const std::vector<double>& r,

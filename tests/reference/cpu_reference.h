@@ -157,6 +157,9 @@ std::vector<double> jacobi(const Grid& grid, const std::vector<uint8_t>& type,
 std::vector<double> multigrid_vcycle(const Grid& grid, const std::vector<uint8_t>& type,
                                      const std::vector<double>& extra_diagonal, const std::vector<double>& r,
                                      int coarse_cells, int max_levels, int coarse_sweeps);
+// The V-cycles' cell-centred trilinear prolongation, one axis: the weight of coarse index c (of
+// nc) at fine index f (3/4 for its parent, 1/4 for the parent's other neighbour, clamped).
+double prolong_weight(int f, int c, int nc);
 
 // The MGPCG V-cycle with Galerkin coarse levels (shaders/solvers/mgpcg/galerkin.glsl), in double,
 // with its operators built as explicit matrices: level 1 is s P^T A P with the trilinear P and
